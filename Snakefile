@@ -1,0 +1,24 @@
+# The reflectance workflow: rebuilds every figure of Blinn 1977, Cook & Torrance 1982, the
+# advanced-reflection lecture and the specular-highlight article from measured spectra.
+# Run: snakemake --cores 2   (README.md says more)
+
+from snakemake.utils import min_version, validate
+
+min_version("8.0")
+
+
+configfile: "config.yaml"
+
+
+validate(config, "workflow/schemas/config.schema.yaml")
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/spectra.smk"
+include: "workflow/rules/cook_torrance_1982.smk"
+
+
+rule all:
+    input:
+        TARGETS,
+    default_target: True

