@@ -10,10 +10,14 @@ min_version("8.0")
 configfile: "config.yaml"
 
 
+# common.smk checks config.yaml first, naming each bad key (config.yaml: colour.space: ...);
+# Snakemake's validate() then applies the same schema and fills in its defaults.
+include: "workflow/rules/common.smk"
+
+
 validate(config, "workflow/schemas/config.schema.yaml")
 
 
-include: "workflow/rules/common.smk"
 include: "workflow/rules/spectra.smk"
 include: "workflow/rules/cook_torrance_1982.smk"
 

@@ -102,12 +102,11 @@ def test_bad_config_stops_before_any_job(root, tmp_path, key, value, expected):
 
 
 def test_lint_reports_only_missing_environments(root):
-    proc = snakemake(root, "--lint", "--cores", "1", check=False)
+    """`snakemake --lint`: the only lint is the absence of per-rule conda/container envs
+    (README.md says how the Python environment is made instead)."""
+    proc = snakemake(root, "--lint", check=False)
     text = proc.stdout + proc.stderr
-    lints = [line for line in text.splitlines() if line.startswith("Lints for")]
-    complaints = [line.strip() for line in text.splitlines()
-                  if line.strip().startswith("*") and "conda" not in line.lower()
-                  and "container" not in line.lower() and "environment" not in line.lower()]
-    assert not complaints, text
-    assert proc.returncode in (0, 1), text
-    del lints
+    lints = [line.strip() for line in text.splitlines() if line.strip().startswith("* ")]
+    assert lints, text  # the environment lint is expected: the linter did run
+    others = [line for line in lints if "conda environment or container" not in line]
+    assert not others, text

@@ -3,10 +3,11 @@
 
 import re
 
-from reflectance.config import ConfigError, check_config
+from reflectance.config import ConfigError, check_config, validate_schema
 
 
 try:
+    validate_schema(config)
     check_config(config)
 except ConfigError as err:
     raise WorkflowError(str(err)) from None
