@@ -20,6 +20,9 @@ validate(config, "workflow/schemas/config.schema.yaml")
 
 include: "workflow/rules/spectra.smk"
 include: "workflow/rules/cook_torrance_1982.smk"
+include: "workflow/rules/blinn_1977.smk"
+include: "workflow/rules/lecture.smk"
+include: "workflow/rules/article.smk"
 
 
 rule all:

@@ -1,0 +1,1 @@
+# article: figures (rules added by the figure work)

@@ -1,0 +1,1 @@
+# blinn_1977: figures (rules added by the figure work)

@@ -1,0 +1,1 @@
+# lecture: figures (rules added by the figure work)
