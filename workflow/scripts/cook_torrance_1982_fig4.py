@@ -3,6 +3,8 @@
 
 from pathlib import Path
 
+import colour
+
 import pandas as pd
 
 from reflectance.colorimetry import illuminant_sd
@@ -27,7 +29,7 @@ with script_log(snakemake) as log:
 
     fig = new_figure(10, 4.2)
     ax_a, ax_b = fig.subplots(1, 2)
-    ax_a.plot(grid * scale, material.F0, color="#b3672b", label="interpolated (linear)")
+    ax_a.plot(grid * scale, material.F0, color="#b3672b", label="from n, k interpolated linearly")
     raw = read_spectrum_csv(snakemake.input.spectrum)
     raw = raw[(raw.wavelength_nm >= grid[0]) & (raw.wavelength_nm <= grid[-1])]
     if "n" in raw:
@@ -37,6 +39,10 @@ with script_log(snakemake) as log:
     ax_a.set(xlabel=f"wavelength ({unit})", ylabel="normal reflectance F0", ylim=(0, 1),
              title=f"(a) {material.name} mirror, normal incidence")
     ax_b.plot(grid * scale, light, color="0.3", label=f"CIE {colour_cfg['illuminant']}")
+    tabulated_end = colour.SDS_ILLUMINANTS[colour_cfg["illuminant"]].shape.end
+    if grid[-1] > tabulated_end:  # colour-science's table stops here; beyond it, held constant
+        ax_b.axvspan(tabulated_end * scale, grid[-1] * scale, color="0.92", zorder=0,
+                     label="beyond the tabulated SPD (held constant)")
     ax_b.plot(grid * scale, reflected, color="#b3672b", label=f"reflected by {material.name}")
     ax_b.set(xlabel=f"wavelength ({unit})", ylabel="relative spectral energy",
              title="(b) spectral energy distributions")
