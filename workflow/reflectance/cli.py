@@ -116,8 +116,232 @@ def _run_spectra(args):
     table[cols].to_csv(sys.stdout, index=False, lineterminator="\n")
 
 
+# -- reflectance brdf ---------------------------------------------------------------------------
+
+#: Command-line names of the models of :data:`reflectance.brdf.BRDF_METHODS` (which are accepted
+#: too, in any letter case).
+BRDF_ALIASES = {
+    "lambert": "Lambert", "phong": "Phong1975", "blinn-phong": "BlinnPhong1977",
+    "blinn-phong-normalised": "BlinnPhong_AkenineMoller2008",
+    "torrance-sparrow": "TorranceSparrow_Blinn1977", "cook-torrance": "CookTorrance1982",
+    "ward": "Ward1992", "heidrich-seidel": "HeidrichSeidel1998",
+}
+
+#: Per model: the parameter that --d (times the diffuse albedo) and --s set, and which roughness
+#: options it takes (option -> parameter, or a (parameter, converter) pair).
+_BRDF_OPTIONS = {
+    "Lambert": ("rho_d", None, {}),
+    "Phong1975": ("p_d", "p_s", {"c1": "c1", "beta": ("c1", "beta_to_c1_Blinn1977")}),
+    "BlinnPhong1977": ("p_d", "p_s", {"c1": "c1", "beta": ("c1", "beta_to_c1_Blinn1977")}),
+    "BlinnPhong_AkenineMoller2008": ("c_diff", "c_spec", {"c1": "m"}),
+    "TorranceSparrow_Blinn1977": ("p_d", "p_s", {"c3": "c3",
+                                                 "beta": ("c3", "beta_to_c3_Blinn1977")}),
+    "CookTorrance1982": ("R_d", "s", {"m": "m", "c3": "c3"}),
+    "Ward1992": ("rho_d", "rho_s", {"m": "alpha"}),
+    "HeidrichSeidel1998": ("k_d", "k_s", {"c1": "s"}),
+}
+
+_BRDF_EPILOG = """\
+Geometry: N = z; the light L lies in the x-z plane at --incidence degrees from N on the -x side.
+Each angle of --angles is the polar angle of the view direction V measured from N in the plane
+at --azimuth degrees from the plane of incidence (default 0: the plane of incidence itself),
+positive on the specular side (away from the light, where the mirror direction is +incidence)
+and negative on the light's side; |angle| <= 90.
+
+Columns: theta_out_deg; diffuse, specular, total: the BRDF f(L, V) in 1/sr (its parts and sum;
+for a spectral material the luminance-weighted value, sum f(lambda) W_Y(lambda) with the
+illuminant's tristimulus weights). With --material also X, Y, Z: the reflected radiance for a
+light of the illuminant's colour whose irradiance normal to its beam has Y = 1, i.e.
+XYZ = cos(incidence) sum_lambda f(lambda) W(lambda), so Y = total cos(incidence).
+
+Material: --material takes F per wavelength from the material's n, k (reflectance.fresnel,
+--fresnel method) and the diffuse albedo F0 (Cook & Torrance 1982 Fig. 7: R_d = F0/pi); --n
+(and --k) give one index for all wavelengths. The microfacet models (torrance-sparrow,
+cook-torrance) need one of them for their Fresnel term; the empirical ones use it for the
+diffuse colour only (their highlight is white, as Blinn 1977 prescribes).
+
+Weights: --s and --d set Cook & Torrance's s and d (s + d = 1; one given sets the other;
+default s = 1) and the other models' specular and diffuse weights (p_s, p_d; c_spec, c_diff;
+rho_s, rho_d; k_s, k_d; default s = 1, d = 0, lambert d = 1). Roughness: --m is the Beckmann rms
+slope (cook-torrance; Ward's alpha), --c3 Blinn's D3 eccentricity (torrance-sparrow, or
+cook-torrance with D3), --c1 an exponent (phong, blinn-phong, the lecture's m, Heidrich-Seidel's
+s), --beta Blinn's half-angle in degrees (phong, blinn-phong: c1; torrance-sparrow: c3).
+"""
+
+
+def _add_brdf(sub):
+    from .fresnel import FRESNEL_METHODS
+
+    names = ", ".join(BRDF_ALIASES)
+    p = sub.add_parser(
+        "brdf", help="reflected distribution of a BRDF model in a plane (CSV)",
+        description="The BRDF of MODEL for light at --incidence degrees, evaluated at the view "
+                    "angles --angles, as CSV: theta_out_deg, diffuse, specular, total and, with "
+                    "--material, X, Y, Z.",
+        epilog=_BRDF_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("model", metavar="MODEL",
+                   help=f"one of {names} (or a key of reflectance.brdf.BRDF_METHODS)")
+    p.add_argument("--incidence", type=float, required=True, metavar="DEG",
+                   help="angle of the light from the normal, 0 <= DEG < 90")
+    p.add_argument("--angles", type=float, nargs="+", required=True, metavar="DEG",
+                   help="view angles from the normal, -90..90, positive on the specular side")
+    p.add_argument("--azimuth", type=float, default=0.0, metavar="DEG",
+                   help="azimuth of the viewing plane from the plane of incidence (default 0)")
+    source = p.add_mutually_exclusive_group()
+    source.add_argument("--material", help="a material of spectra/ (spectral: X, Y, Z columns)")
+    source.add_argument("--n", type=float, help="refractive index (one for all wavelengths)")
+    p.add_argument("--k", type=float, default=0.0, help="extinction coefficient with --n")
+    rough = p.add_mutually_exclusive_group()
+    rough.add_argument("--m", type=float, help="rms slope (Beckmann; Ward's alpha)")
+    rough.add_argument("--c1", type=float, help="exponent (Phong, Blinn-Phong, ...)")
+    rough.add_argument("--c3", type=float, help="Blinn's D3 eccentricity")
+    rough.add_argument("--beta", type=float, metavar="DEG", help="Blinn's half-angle beta")
+    p.add_argument("--s", type=float, help="specular fraction / weight")
+    p.add_argument("--d", type=float, help="diffuse fraction / weight")
+    p.add_argument("--convention", choices=["paper", "physical"],
+                   help="'paper' (as printed) or 'physical' (normalised), for lambert and "
+                        "cook-torrance (default: the library's, paper for cook-torrance)")
+    p.add_argument("--fresnel", default="exact", choices=list(FRESNEL_METHODS),
+                   help="how F is computed from n, k (default exact)")
+    p.add_argument("--fibre-azimuth", type=float, default=0.0, metavar="DEG",
+                   help="Heidrich-Seidel fibre direction in the surface, from the plane of "
+                        "incidence (default 0: along it)")
+    p.add_argument("--illuminant", default="D65", help="a colour-science illuminant name")
+    p.add_argument("--observer", default="CIE 1931 2 Degree Standard Observer",
+                   help="a colour-science CMFS name")
+    _common(p)
+    p.set_defaults(run=_run_brdf)
+
+
+def _brdf_method(name):
+    from .brdf import BRDF_METHODS
+
+    by_lower = {k.lower(): k for k in BRDF_METHODS} | BRDF_ALIASES
+    try:
+        return by_lower[name.lower()]
+    except KeyError:
+        raise SystemExit(
+            f"reflectance: unknown BRDF model {name!r}; known: {', '.join(BRDF_ALIASES)} "
+            f"(or {', '.join(BRDF_METHODS)})") from None
+
+
+def _brdf_parameters(method, args, albedo):
+    """Model parameters from the options: (parameters, diffuse-only parameters, the weight that
+    multiplies the diffuse-only evaluation)."""
+    import numpy as np
+
+    from . import microfacet
+
+    diffuse_name, specular_name, roughness = _BRDF_OPTIONS[method]
+    parameters = {}
+    for option in ("m", "c1", "c3", "beta"):
+        value = getattr(args, option)
+        if value is None:
+            continue
+        if option not in roughness:
+            takes = ", ".join(f"--{o}" for o in roughness) or "no roughness option"
+            raise SystemExit(f"reflectance: --{option} does not apply to {method}; it takes {takes}")
+        target = roughness[option]
+        if isinstance(target, tuple):
+            target, convert = target
+            value = getattr(microfacet, convert)(np.radians(value))
+        if method == "CookTorrance1982" and option == "c3":
+            parameters["distribution"] = "TrowbridgeReitz1975"
+        if target == "alpha":
+            parameters["alpha_x"] = parameters["alpha_y"] = value
+        else:
+            parameters[target] = value
+    if method in ("CookTorrance1982", "TorranceSparrow_Blinn1977") and not parameters:
+        takes = " or ".join(f"--{o}" for o in roughness)
+        raise SystemExit(f"reflectance: {method} needs a roughness: {takes}")
+    if method == "CookTorrance1982":
+        s, d = args.s, args.d
+        if s is None and d is None:
+            s, d = 1.0, 0.0
+        elif s is None:
+            s = 1.0 - d
+        elif d is None:
+            d = 1.0 - s
+        parameters.update(s=s, d=d, R_d=albedo / np.pi)  # Cook & Torrance 1982 Fig. 7: R_d = F0/pi
+        return parameters, dict(parameters, s=0.0, d=1.0), d
+    if specular_name is None and args.s is not None:
+        raise SystemExit(f"reflectance: --s does not apply to {method}: it has no specular term")
+    d = args.d if args.d is not None else (1.0 if specular_name is None else 0.0)
+    parameters[diffuse_name] = d * albedo
+    if specular_name is not None:
+        parameters[specular_name] = 1.0 if args.s is None else args.s
+        return parameters, dict(parameters, **{specular_name: 0.0}), 1.0
+    return parameters, parameters, 1.0
+
+
+def _run_brdf(args):
+    import numpy as np
+    import pandas as pd
+
+    from .brdf import brdf
+    from .colorimetry import tristimulus_weights
+    from .fresnel import F0_from_nk
+
+    method = _brdf_method(args.model)
+    angles = np.asarray(args.angles, dtype=np.float64)
+    if not 0.0 <= args.incidence < 90.0:
+        raise SystemExit(f"reflectance: --incidence {args.incidence:g}: must be in [0, 90)")
+    if np.any(np.abs(angles) > 90.0):
+        raise SystemExit(f"reflectance: --angles {args.angles}: each must be in [-90, 90]")
+    has_fresnel = method in ("CookTorrance1982", "TorranceSparrow_Blinn1977")
+    if has_fresnel and args.material is None and args.n is None:
+        raise SystemExit(f"reflectance: {method} needs --material or --n for its Fresnel term")
+    if args.k != 0.0 and args.n is None:
+        raise SystemExit("reflectance: --k needs --n (a material's k comes with --material)")
+    if args.convention is not None and method not in ("Lambert", "CookTorrance1982"):
+        raise SystemExit(f"reflectance: --convention applies to Lambert and CookTorrance1982, "
+                         f"not {method}")
+    W = None
+    try:
+        if args.material is not None:
+            grid = _grid_and_colour(args)
+            material = _load(args, args.material, grid)
+            W = tristimulus_weights(grid, args.illuminant, args.observer)
+            n, k, albedo = material.n, material.k, material.F0
+        elif args.n is not None:
+            n, k = args.n, args.k
+            albedo = F0_from_nk(n, k)
+        else:
+            n = k = None
+            albedo = 1.0
+        parameters, diffuse_only, diffuse_weight = _brdf_parameters(method, args, albedo)
+        if args.convention is not None:
+            parameters["convention"] = diffuse_only["convention"] = args.convention
+        extra = {"fresnel_method": args.fresnel, "n": n, "k": k} if has_fresnel else {}
+        if method == "HeidrichSeidel1998":
+            phi = np.radians(args.fibre_azimuth)
+            extra["T"] = np.array([np.cos(phi), np.sin(phi), 0.0])
+        ti, to, phi = np.radians(args.incidence), np.radians(angles), np.radians(args.azimuth)
+        N = np.array([0.0, 0.0, 1.0])
+        L = np.array([-np.sin(ti), 0.0, np.cos(ti)])
+        V = np.stack([np.sin(to) * np.cos(phi), np.sin(to) * np.sin(phi), np.cos(to)], -1)
+        V = V[:, None, :]  # a trailing axis for spectral parameters (albedo, R_d)
+        total = brdf(L, V, N, method, **extra, **parameters)
+        diffuse = diffuse_weight * brdf(L, V, N, method, **extra, **diffuse_only)
+    except ValueError as err:
+        raise SystemExit(f"reflectance: {err}") from None
+    total = np.reshape(total, (angles.size, -1))  # (angle, wavelength) or (angle, 1)
+    diffuse = np.broadcast_to(np.reshape(diffuse, (angles.size, -1)), total.shape)
+    if W is not None:
+        # luminance-weighted BRDF: sum f W_Y (the white's W_Y sums to 1); XYZ for a light of
+        # irradiance Y = 1 normal to its beam
+        total, diffuse, XYZ = total @ W[:, 1], diffuse @ W[:, 1], np.cos(ti) * total @ W
+    else:
+        total, diffuse = total[:, 0], diffuse[:, 0]
+    table = {"theta_out_deg": angles, "diffuse": diffuse, "specular": total - diffuse,
+             "total": total}
+    if W is not None:
+        table.update(X=XYZ[:, 0], Y=XYZ[:, 1], Z=XYZ[:, 2])
+    pd.DataFrame(table).to_csv(sys.stdout, index=False, float_format="%.6g", lineterminator="\n")
+
+
 #: Sub-command name -> function that adds its parser.
-COMMANDS = {"colour": _add_colour, "spectra": _add_spectra}
+COMMANDS = {"colour": _add_colour, "spectra": _add_spectra, "brdf": _add_brdf}
 
 
 def build_parser():

@@ -63,3 +63,93 @@ rule ct82_fig5bc:
         "logs/cook_torrance_1982/fig5bc.log",
     script:
         "../scripts/cook_torrance_1982_fig5bc.py"
+
+
+# Cook & Torrance 1982: Figs. 1-3 and Table I; the errata of all four texts.
+
+CT82_ERRATA = config["figures"]["errata"]
+
+TARGETS += [
+    f"{CT82_OUT}/{name}"
+    for name in ("fig1.png", "fig1.pdf", "fig1.csv", "fig2.png", "fig2.csv", "fig3.png",
+                 "fig3.csv", "table1.png", "table1.pdf", "table1.csv")
+] + ["results/errata/errata.csv", "results/errata/errata.png", "results/errata/errata.pdf"]
+
+
+rule ct82_fig1:
+    input:
+        symbols=CT82["fig1"]["symbols"],
+    output:
+        png=report(f"{CT82_OUT}/fig1.png", caption="../report/ct82_fig1.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 1"),
+        pdf=f"{CT82_OUT}/fig1.pdf",
+        csv=f"{CT82_OUT}/fig1.csv",
+    params:
+        fig=CT82["fig1"],
+    log:
+        "logs/cook_torrance_1982/fig1.log",
+    script:
+        "../scripts/cook_torrance_1982_fig1.py"
+
+
+rule ct82_fig2:
+    output:
+        png=report(f"{CT82_OUT}/fig2.png", caption="../report/ct82_fig2.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 2"),
+        csv=f"{CT82_OUT}/fig2.csv",
+    params:
+        fig=CT82["fig2"],
+    log:
+        "logs/cook_torrance_1982/fig2.log",
+    script:
+        "../scripts/cook_torrance_1982_fig2.py"
+
+
+rule ct82_fig3:
+    output:
+        png=report(f"{CT82_OUT}/fig3.png", caption="../report/ct82_fig3.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 3"),
+        csv=f"{CT82_OUT}/fig3.csv",
+    params:
+        fig=CT82["fig3"],
+    log:
+        "logs/cook_torrance_1982/fig3.log",
+    script:
+        "../scripts/cook_torrance_1982_fig3.py"
+
+
+rule ct82_table1:
+    input:
+        spectra=[spectrum_csv(row["material"]) for row in CT82["table1"]["rows"]],
+        sources="spectra/sources.csv",
+    output:
+        png=report(f"{CT82_OUT}/table1.png", caption="../report/ct82_table1.rst",
+                   category="Cook & Torrance 1982", subcategory="Table I"),
+        pdf=f"{CT82_OUT}/table1.pdf",
+        csv=report(f"{CT82_OUT}/table1.csv", caption="../report/ct82_table1.rst",
+                   category="Cook & Torrance 1982", subcategory="Table I"),
+    params:
+        fig=CT82["table1"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/cook_torrance_1982/table1.log",
+    script:
+        "../scripts/cook_torrance_1982_table1.py"
+
+
+rule errata:
+    input:
+        rows=CT82_ERRATA["rows"],
+    output:
+        csv=report("results/errata/errata.csv", caption="../report/errata.rst",
+                   category="Errata", subcategory="All texts"),
+        png=report("results/errata/errata.png", caption="../report/errata.rst",
+                   category="Errata", subcategory="All texts"),
+        pdf="results/errata/errata.pdf",
+    params:
+        errata=CT82_ERRATA,
+    log:
+        "logs/errata/errata.log",
+    script:
+        "../scripts/errata.py"

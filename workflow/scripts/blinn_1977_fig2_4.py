@@ -1,0 +1,111 @@
+"""Blinn 1977, Figs. 2-4 for one case of Fig. 1: (2) the top view, L and E off the plane of N and H
+and their projections; (3) the escaping fraction 1 - m/l; (4) the law-of-sines construction with
+Blinn's angles a..f. Every point and number comes from the ray simulation of the groove."""
+
+import numpy as np
+import pandas as pd
+
+from reflectance.plotting import new_figure, savefig
+from reflectance.scripting import script_log
+from reflectance.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
+from reflectance.vgroove_plot import COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove
+
+# Per case: what is blocked, along which direction, Blinn's closed form, the simulated fraction.
+SPEC = {"b": ("masking", "E", "eye", "G_b", "G_masking_simulated", "escapes"),
+        "c": ("shadowing", "L", "light", "G_c", "G_shadowing_simulated", "is lit")}
+
+with script_log(snakemake) as log:
+    cfg = snakemake.params.fig
+    name = cfg["construction_case"]
+    case = cfg["cases"][name]
+    blocked, V, colour, G_name, sim_name, verb = SPEC[name]
+    sim, r = vgroove_case(case["light"], case["eye"], n_rays=cfg["n_rays"], n_keep=cfg["n_drawn_rays"])
+    if r["case"] != name:
+        raise ValueError(f"config.yaml: figures.blinn_1977.fig1_4.cases.{name} gives Blinn's case "
+                         f"{r['case']!r}, not {name!r}.")
+    g = groove_angles_Blinn1977(sim, blocked)
+    t, axis = sim.basis[0], sim.basis[1]
+    deg = {k: np.degrees(getattr(g, k)) for k in "abcdef"}
+    ratio_3d = r[f"N{V}"] / r["EH"]                     # (N.E)/(E.H) with E itself
+    V2 = g.direction
+    ratio_2d = V2[1] / (sim.H2 @ V2)                    # the same with its projection E'
+    text = {
+        "fig2": f"L\u00b7g = {r['L'] @ axis:+.4f}, E\u00b7g = {r['E'] @ axis:+.4f}: equal and opposite, "
+                f"so H lies in the N-H plane\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f};  with the "
+                f"projection {V}': {ratio_2d:.4f}",
+        "fig3": f"1 \u2212 m/l = 1 \u2212 {g.m_over_l_lengths:.4f} = {1 - g.m_over_l_lengths:.4f}\n"
+                f"simulated ({cfg['n_rays']:,} points on the facet): {r[sim_name]:.4f}\n"
+                f"closed form {G_name} = {r[G_name]:.4f}",
+        "fig4": f"m/l = sin f / sin b = sin {deg['f']:.2f}\u00b0 / sin {deg['b']:.2f}\u00b0 = "
+                f"{g.m_over_l_sines:.4f}\nsin b = {np.sin(g.b):.4f}, cos e = {np.cos(g.e):.4f};  "
+                f"c = {deg['c']:.2f}\u00b0 = 2d = 2 \u00d7 {deg['d']:.2f}\u00b0\n"
+                f"d + a = {deg['d']:.2f}\u00b0 + {deg['a']:.2f}\u00b0 = {deg['d'] + deg['a']:.2f}\u00b0",
+    }
+
+    fig = new_figure(16, 6.4)
+    ax2, ax3, ax4 = fig.subplots(1, 3)
+    # Fig. 2: looking down N. Axes: t (the direction H tilts to) and g (along the groove).
+    ax2.axvspan(-1, 0, color=COLOURS["facet"], alpha=0.18, lw=0)
+    ax2.axvspan(0, 1, color="0.9", lw=0)
+    for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
+        ax2.axvline(u, color="k", lw=1, ls=ls)
+    ax2.axhline(0, color="0.4", lw=0.8, ls="-.")
+    ax2.text(1.28, 0.04, "plane of N and H\n(edge-on)", ha="right", va="bottom", fontsize=9, color="0.3")
+    O = np.array([-0.5, 0.0])
+    for vec, label, c in ((r["L"], "L", COLOURS["light"]), (r["E"], "E", COLOURS["eye"]),
+                          (r["H"], "H", "k")):
+        top = np.array([vec @ t, vec @ axis])
+        draw_arrow(ax2, O, top, label, c)
+        if label != "H":
+            ax2.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
+            ax2.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
+            ax2.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=11,
+                     ha="center", va="bottom" if top[1] < 0 else "top")
+    for u, label in ((-1, "A"), (0, "B"), (1, "C")):
+        ax2.text(u, 1.06, label, ha="center", va="top", fontsize=11,
+                 bbox=dict(facecolor="white", edgecolor="none", pad=1))
+    ax2.set(xlim=(-1.3, 1.3), ylim=(-1.1, 1.1), aspect="equal", xticks=[], yticks=[],
+            xlabel="t: direction of H's tilt", ylabel="g: along the groove")
+    ax2.set_title("Fig. 2 \u2014 top view (seen along N)", fontsize=12)
+    # Fig. 3: the part of the facet whose light escapes.
+    draw_groove(ax3, sim, names=True)
+    draw_dimension(ax3, g.A, g.B, -sim.H2 * 0.13, "l")
+    draw_dimension(ax3, g.P, g.B, -sim.H2 * 0.3, "m")
+    ax3.set_title(f"Fig. 3 \u2014 light which {verb} is 1 \u2212 m/l", fontsize=12)
+    # Fig. 4: the triangle B, C, P and Blinn's angles.
+    draw_groove(ax4, sim, rays=False, vectors=False, names=True)
+    ax4.plot(*np.column_stack([g.P, g.C]), color=COLOURS[colour], lw=1.4)
+    ax4.plot(*np.column_stack([g.B, g.B + [0, -g.B[1]]]), color="0.4", ls="--", lw=0.8)
+    ax4.text(*(g.P - 0.09 * sim.H2), "P", ha="center", va="center", fontsize=11)
+    draw_arrow(ax4, g.P, 0.45 * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
+    draw_arrow(ax4, g.P, 0.45 * sim.H2, "H", "k")
+    draw_arrow(ax4, g.P, 0.55 * V2, f"{V}'", COLOURS[colour])
+    up = np.array([0.0, 1.0])
+    for vertex, u, v, radius, label in (
+            (g.P, up, sim.H2, 0.3, "a"), (g.P, sim.H2, V2, 0.22, "e"), (g.P, g.B - g.P, V2, 0.14, "b"),
+            (g.B, g.A - g.B, g.C - g.B, 0.08, "c"), (g.B, up, g.C - g.B, 0.22, "d"),
+            (g.C, g.B - g.C, g.P - g.C, 0.35, "f")):
+        draw_angle(ax4, vertex, u, v, radius, label)
+    side = np.array([np.sin(sim.alpha), -np.cos(sim.alpha)]) * 0.16  # outside BC
+    draw_dimension(ax4, g.B, g.C, side, "l")
+    draw_dimension(ax4, g.P, g.B, -sim.H2 * 0.16, "m")
+    ax4.set(xlim=(g.A[0] - 0.1, g.C[0] + 0.25), ylim=(g.B[1] - 0.4, 0.6))
+    ax4.set_title("Fig. 4 \u2014 measurement of m/l (law of sines)", fontsize=12)
+    for ax, key in ((ax2, "fig2"), (ax3, "fig3"), (ax4, "fig4")):
+        ax.text(0.5, -0.04 if key != "fig2" else -0.1, text[key], transform=ax.transAxes,
+                ha="center", va="top", fontsize=9.5, linespacing=1.5)
+    fig.suptitle(f"Blinn 1977, Figs. 2-4 \u2014 case {name} of Fig. 1 (L: \u03b8 = "
+                 f"{case['light']['theta_deg']:g}\u00b0, \u03c6 = {case['light']['phi_deg']:g}\u00b0; "
+                 f"E: \u03b8 = {case['eye']['theta_deg']:g}\u00b0, \u03c6 = {case['eye']['phi_deg']:g}\u00b0)",
+                 fontsize=13)
+    fig.subplots_adjust(left=0.03, right=0.99, top=0.88, bottom=0.2, wspace=0.08)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    row = {"case": name, "blocked": blocked, **{f"{k}_deg": v for k, v in deg.items()},
+           "m": g.m, "l": g.l, "m_over_l_lengths": g.m_over_l_lengths,
+           "m_over_l_sines": g.m_over_l_sines, G_name: r[G_name], "G_simulated": r[sim_name],
+           "L_dot_g": r["L"] @ axis, "E_dot_g": r["E"] @ axis, "ratio_3d": ratio_3d,
+           "ratio_projected": ratio_2d, **{f"printed_{k}": v.replace("\n", "; ") for k, v in text.items()}}
+    pd.DataFrame([row]).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
+                               lineterminator="\n")
+    log.info("m/l: lengths %.6f, law of sines %.6f, 1 - %s %.6f", g.m_over_l_lengths,
+             g.m_over_l_sines, G_name, 1 - r[G_name])

@@ -1,0 +1,54 @@
+"""Lecture (Russin, Module 3B), "BRDF" slide: the sample BRDFs of brdf_lobes_2d as 3-D lobe surfaces
+(pyvista, off-screen). Each surface point is V f(L, V) / max f over the outgoing hemisphere: the
+radius along every outgoing direction V is the BRDF itself (not f cos theta_o), scaled per lobe."""
+
+import numpy as np
+import pyvista as pv
+
+from reflectance.brdf import brdf
+from reflectance.plotting import save_plotter
+from reflectance.scripting import script_log
+
+# config key -> (reflectance.brdf method, panel title)
+MODELS = {
+    "diffuse": ("Lambert", "Diffuse (Lambert)"),
+    "phong": ("Phong1975", "Phong"),
+    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong (m+8)/(8 pi)"),
+    "cook_torrance": ("CookTorrance1982", "Cook-Torrance"),
+}
+
+with script_log(snakemake) as log:
+    cfg = snakemake.params.fig
+    theta_i = np.radians(cfg["incidence_deg"])
+    N = np.array([0.0, 0.0, 1.0])
+    L = np.array([-np.sin(theta_i), 0.0, np.cos(theta_i)])
+    mirror = np.array([np.sin(theta_i), 0.0, np.cos(theta_i)])
+    n_theta, n_phi = cfg["hemisphere_samples"]
+    theta, phi = np.meshgrid(np.linspace(0.0, np.pi / 2, n_theta), np.linspace(0.0, 2 * np.pi, n_phi),
+                             indexing="ij")
+    V = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], axis=-1)
+
+    pv.OFF_SCREEN = True  # plotting.off_screen_plotter has no subplot grid: the same, with shape
+    pl = pv.Plotter(off_screen=True, shape=(1, len(MODELS)), window_size=(1800, 560), border=False)
+    pl.set_background("white")
+    for i, (key, (method, title)) in enumerate(MODELS.items()):
+        f = brdf(L, V, N, method, **cfg["models"][key])
+        peak = float(f.max())
+        r = f / peak
+        lobe = pv.StructuredGrid(*(r * V[..., j] for j in range(3)))
+        lobe["f / max f"] = r.ravel(order="F")
+        pl.subplot(0, i)
+        pl.add_mesh(lobe, scalars="f / max f", cmap="viridis", clim=(0, 1), smooth_shading=True,
+                    show_scalar_bar=False)
+        pl.add_mesh(pv.Disc(inner=0.0, outer=1.15, normal=(0, 0, 1), c_res=96), color="#d9d9d9",
+                    opacity=0.5)
+        pl.add_mesh(pv.Arrow(start=1.45 * L, direction=-L, scale=1.3, tip_length=0.12,
+                             tip_radius=0.035, shaft_radius=0.012), color="#d98c00")
+        pl.add_mesh(pv.Line((0, 0, 0), 1.3 * mirror), color="#595959", line_width=2)
+        pl.add_text(f"{title}\nmax f = {peak:.3g} /sr", font_size=10, color="black",
+                    position="upper_edge")
+        pl.view_vector((0.2, -1.0, 0.45), viewup=(0, 0, 1))
+        pl.reset_camera(bounds=(-1.45, 1.45, -1.0, 1.0, 0.0, 1.2))
+        pl.camera.zoom(1.45)
+        log.info("%s: max f %.6g sr^-1", key, peak)
+    save_plotter(pl, snakemake.output.png)

@@ -1,0 +1,63 @@
+"""Lecture (Russin, Module 3B), "Fresnel reflectance" slide: F against incidence angle for dielectrics
+(exact equation with a real index) and metals (exact complex-index equation from measured n, k,
+plotted as the reflectance of the illuminant's luminance Y), with Schlick's approximation dashed."""
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from reflectance.colorimetry import tristimulus_weights
+from reflectance.fresnel import fresnel
+from reflectance.plotting import new_figure, savefig
+from reflectance.scripting import script_log
+from reflectance.spectra import load_material, wavelength_grid
+
+with script_log(snakemake) as log:
+    cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
+    grid = wavelength_grid(**snakemake.params.wavelengths)
+    # Y weights: Y = F @ W_Y is the luminance reflected, relative to the illuminant's (Y_white = 1)
+    W_Y = tristimulus_weights(grid, colour_cfg["illuminant"], colour_cfg["observer"])[:, 1]
+    angles = np.arange(0.0, 90.0 + 1e-9, cfg["angle_step_deg"])
+    c = np.clip(np.cos(np.radians(angles)), 0.0, 1.0)
+    spectra_dir = Path(snakemake.input.spectra[0]).parent
+
+    curves = {}  # (group, name, label) -> {method: F(angle)}
+    for name, d in cfg["dielectrics"].items():
+        curves[("dielectric", name, f"{name}, n = {d['n']:g}")] = {
+            method: fresnel(c, d["n"], 0.0, method=method) for method in ("exact", "schlick")}
+    for name in cfg["materials"]:
+        material = load_material(name, grid, spectra_dir=spectra_dir)
+        curves[("metal", name, name)] = {
+            method: fresnel(c[:, None], material.n, material.k, method=method) @ W_Y
+            for method in ("exact", "schlick")}
+
+    table = {"angle_deg": angles}
+    for (_, name, _), F in curves.items():
+        table[f"{name}_exact"], table[f"{name}_schlick"] = F["exact"], F["schlick"]
+    pd.DataFrame(table).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
+                               lineterminator="\n")
+
+    fig = new_figure(12, 5)
+    axes = dict(zip(("dielectric", "metal"), fig.subplots(1, 2)))
+    for (group, name, label), F in curves.items():
+        error = np.max(np.abs(F["schlick"] - F["exact"]))
+        (line,) = axes[group].plot(angles, F["exact"], lw=1.8,
+                                   label=f"{label} (max |Schlick - exact| = {error:.3f})")
+        axes[group].plot(angles, F["schlick"], color=line.get_color(), lw=1.2, ls="--")
+        log.info("%s: F(0) = %.5f, max |Schlick - exact| = %.5f at %.2f deg", name, F["exact"][0],
+                 error, angles[np.argmax(np.abs(F["schlick"] - F["exact"]))])
+    axes["dielectric"].set_title("(a) dielectrics: exact Fresnel (k = 0); dashed: Schlick 1994",
+                                 fontsize=10)
+    axes["metal"].set_title(f"(b) metals: exact Fresnel (measured n, k), Y under "
+                            f"{colour_cfg['illuminant']}; dashed: Schlick", fontsize=10)
+    for ax in axes.values():
+        ax.set(xlabel="incidence angle \u03b8 (degrees)", ylabel="reflectance F", xlim=(0, 90),
+               ylim=(0, 1.01), xticks=np.arange(0, 91, 15))
+        ax.grid(alpha=0.3)
+    for group, where in (("dielectric", "upper left"), ("metal", "lower left")):
+        axes[group].legend(frameon=False, fontsize=8, loc=where)
+    fig.suptitle("Lecture (Russin, Module 3B), \u201cFresnel reflectance\u201d: reflectance against "
+                 "incidence angle (unpolarised)", fontsize=11)
+    fig.tight_layout()
+    savefig(fig, snakemake.output.png, snakemake.output.pdf)
