@@ -276,42 +276,6 @@ def test_distributions_in_the_plane_of_incidence(config, tmp_path):
 
 # --- lecture: shadowing and masking -------------------------------------------------------------------
 
-def brute_force_visible(h, theta, k, samples=40):
-    """Visible fraction of segment k of the periodic unit-spaced polyline h from direction
-    (sin theta, cos theta): march each sample point's ray against every segment of three periods."""
-    n = h.size
-    x = np.arange(-n, 2 * n + 1)
-    y = h[x % n]
-    d = np.array([math.sin(theta), math.cos(theta)])
-    p0, p1 = np.stack([x[:-1], y[:-1]], 1).astype(float), np.stack([x[1:], y[1:]], 1).astype(float)
-    e = p1 - p0
-    seen = 0
-    for t in (np.arange(samples) + 0.5) / samples:
-        o = np.array([k + t, h[k] + t * (h[(k + 1) % n] - h[k])])
-        if d[1] - (h[(k + 1) % n] - h[k]) * d[0] <= 0:  # facing away: (1, slope) x d <= 0
-            continue
-        # ray o + s d (s > 0) against segments p0 + u e (0 <= u <= 1)
-        den = d[0] * e[:, 1] - d[1] * e[:, 0]
-        w = p0 - o
-        with np.errstate(divide="ignore", invalid="ignore"):
-            s = (w[:, 0] * e[:, 1] - w[:, 1] * e[:, 0]) / den
-            u = (w[:, 0] * d[1] - w[:, 1] * d[0]) / den
-        hit = (den != 0) & (s > 1e-9) & (u >= 0) & (u <= 1)
-        seen += not np.any(hit)
-    return seen / samples
-
-
-def test_visible_fraction_against_brute_force_rays(config, tmp_path):
-    fig = config["figures"]["lecture"]["shadowing_masking"] | {"n_samples": 4096, "angle_step_deg": 5}
-    ns = run_script("lecture_shadowing_masking", tmp_path,
-                    {"png": "s.png", "pdf": "s.pdf", "g1": "g1.csv", "by_slope": "b.csv"}, fig=fig)
-    h = ns["gaussian_profile"](64, 4.0, 0.8, 7)[0]
-    for theta in (math.radians(60), math.radians(-75), math.radians(30)):
-        fast = ns["visible_fraction"](h, theta)
-        for k in range(h.size):
-            assert fast[k] == pytest.approx(brute_force_visible(h, theta, k), abs=1.0 / 40 + 1e-9), (theta, k)
-
-
 def test_masking_G1_of_the_profile(config, tmp_path):
     fig = config["figures"]["lecture"]["shadowing_masking"] | {"n_samples": 16384, "angle_step_deg": 5}
     ns = run_script("lecture_shadowing_masking", tmp_path,

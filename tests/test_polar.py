@@ -7,7 +7,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from reflectance.fresnel import fresnel_dielectric_CookTorrance1982
-from reflectance.polar import intensity_in_plane_of_incidence, plane_of_incidence_vectors
+from reflectance.polar import (direction_from_angles, intensity_in_plane_of_incidence,
+                              plane_of_incidence_vectors)
 
 
 def fresnel_sin_tan(phi, n):
@@ -25,11 +26,30 @@ def torrance_sparrow_by_hand(ti, tr, p_d, p_s, n, c3):
     return p_d * NL + p_s * D * G * fresnel_sin_tan(np.arccos(EH), n) / NE
 
 
+def test_direction_from_angles():
+    assert direction_from_angles(0.0, 1.0) == pytest.approx([0.0, 0.0, 1.0])
+    for theta, phi in ((0.3, 2.0), (1.2, -0.7), (np.pi / 2, np.pi)):
+        v = direction_from_angles(theta, phi)
+        assert np.linalg.norm(v) == pytest.approx(1.0)
+        assert v[2] == pytest.approx(np.cos(theta))
+        assert np.arctan2(v[1], v[0]) == pytest.approx(np.arctan2(np.sin(phi), np.cos(phi)))
+
+
+def test_direction_from_angles_broadcasts():
+    theta, phi = np.linspace(0.1, 1.5, 4)[:, None], np.linspace(-3, 3, 5)
+    v = direction_from_angles(theta, phi)
+    assert v.shape == (4, 5, 3)
+    np.testing.assert_allclose(np.linalg.norm(v, axis=-1), 1.0, rtol=1e-15)
+    assert v[2, 3] == pytest.approx(direction_from_angles(theta[2, 0], phi[3]), abs=0)
+
+
 def test_vectors():
     L, E, N = plane_of_incidence_vectors(0.4, np.array([0.4, -0.1]))
     assert E.shape == (2, 3)
     H = (L + E[0]) / np.linalg.norm(L + E[0])
     assert H == pytest.approx(N)
+    # the documented convention: light on the -x side, positive view angles on the mirror (+x) side
+    assert L[0] < 0 and E[0, 0] > 0 > E[1, 0] and L[1] == E[0, 1] == 0
     with pytest.raises(ValueError, match="theta_i"):
         plane_of_incidence_vectors(np.pi / 2, 0.0)
 

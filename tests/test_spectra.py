@@ -259,6 +259,19 @@ def test_derived_n_is_the_k0_fit_of_F0(tmp_path):
     np.testing.assert_allclose(((m.n - 1) / (m.n + 1)) ** 2, [0.0, 0.04, 0.5], atol=1e-15)
 
 
+def test_mean_F0_over_a_range(tmp_path):
+    # A reflectance rising linearly from 0.1 at 400 nm to 0.5 at 600 nm: the mean over evenly spaced
+    # samples of a straight line is its midpoint value, with both ends of the range included.
+    write(tmp_path / "Ramp.csv", "wavelength_nm,reflectance\n400,0.1\n600,0.5\n")
+    m = load_material("Ramp", wavelength_grid(400, 600, 5), spectra_dir=tmp_path)
+    assert m.mean_F0((400, 600)) == pytest.approx(0.3, abs=1e-15)
+    assert m.mean_F0((450, 500)) == pytest.approx(0.1 + 0.4 * 75 / 200, abs=1e-15)  # 450..500 nm
+    assert m.mean_F0((500, 500)) == pytest.approx(0.3, abs=1e-15)  # one wavelength
+    assert isinstance(m.mean_F0((400, 600)), float)
+    with pytest.raises(ValueError, match=r"average_F0_range_nm \[601, 700\].*400-600 nm"):
+        m.mean_F0((601, 700))
+
+
 def test_every_committed_material_loads_on_its_range():
     for name in MATERIALS:
         lo, hi = PARTIAL_COVERAGE.get(name, EXPORT_RANGE_NM)

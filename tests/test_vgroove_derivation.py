@@ -6,10 +6,9 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from reflectance.shadowing import shadowing_VCavity_Blinn1977
+from reflectance.shadowing import shadowing_VCavity_Blinn1977, vcavity_terms_Blinn1977
 from reflectance.vgroove import simulate_vgroove
-from reflectance.vgroove_derivation import (direction_from_angles, groove_angles_Blinn1977,
-                                            vcavity_terms_Blinn1977, vgroove_case)
+from reflectance.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
 
 
 def vec(theta_deg, phi_deg):
@@ -21,15 +20,6 @@ def by_hand(L, E):
     """G_b, G_c of Blinn 1977 from unit vectors, N = z."""
     H = (L + E) / np.linalg.norm(L + E)
     return 2 * H[2] * E[2] / (E @ H), 2 * H[2] * L[2] / (E @ H)
-
-
-def test_direction_from_angles():
-    assert direction_from_angles(0.0, 1.0) == pytest.approx([0.0, 0.0, 1.0])
-    for theta, phi in ((0.3, 2.0), (1.2, -0.7), (np.pi / 2, np.pi)):
-        v = direction_from_angles(theta, phi)
-        assert np.linalg.norm(v) == pytest.approx(1.0)
-        assert v[2] == pytest.approx(np.cos(theta))
-        assert np.arctan2(v[1], v[0]) == pytest.approx(np.arctan2(np.sin(phi), np.cos(phi)))
 
 
 @given(st.floats(0.0, 89.0), st.floats(-180, 180), st.floats(0.0, 89.0), st.floats(-180, 180))

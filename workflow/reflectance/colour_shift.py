@@ -72,14 +72,7 @@ def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average
     reflectance over ``average_range_nm`` (k = 0); it interpolates between the colour at normal
     incidence (exact) and the light's colour at grazing incidence, where F = 1 at every wavelength.
     """
-    lo, hi = average_range_nm
-    inside = (material.wavelengths >= lo) & (material.wavelengths <= hi)
-    if not inside.any():
-        raise ValueError(
-            f"average_F0_range_nm {list(average_range_nm)} holds no wavelength of the grid "
-            f"{material.wavelengths[0]:g}-{material.wavelengths[-1]:g} nm"
-        )
-    F0_average = float(np.mean(material.F0[inside]))
+    F0_average = material.mean_F0(average_range_nm)
     n_average = n_from_F0_CookTorrance1982(F0_average)  # C&T 1982: n = (1 + sqrt F0)/(1 - sqrt F0)
     c = np.asarray(cos_theta, dtype=float)
     F_theta = fresnel_dielectric_CookTorrance1982(c, n_average)

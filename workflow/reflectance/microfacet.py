@@ -34,7 +34,8 @@ with ``D_p = pi D_phys``, equal to ``F D_phys G / ((N.L)(N.V))``: four times the
 References
 ----------
 - Blinn, J. F. (1977). Models of light reflection for computer synthesized pictures. Computer
-  Graphics (SIGGRAPH '77), 11(2), 192-198. (D1, D2, D3; beta; texture-modulated C3.)
+  Graphics (SIGGRAPH '77), 11(2), 192-198. (D1, D2, D3; beta and its inverse from c3;
+  texture-modulated C3.)
 - Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM
   Transactions on Graphics, 1(1), 7-24. (Gaussian and Beckmann D, weighted sum of D.)
 - Torrance, K. E., & Sparrow, E. M. (1967). Theory for off-specular reflection from roughened
@@ -65,6 +66,8 @@ __all__ = [
     "beta_to_c1_Blinn1977",
     "beta_to_c2_Blinn1977",
     "beta_to_c3_Blinn1977",
+    "C3_MAX_FOR_BETA",
+    "c3_to_beta_Blinn1977",
     "DISTRIBUTION_METHODS",
     "ROUGHNESS_PARAMETERS",
     "distribution",
@@ -443,6 +446,56 @@ def beta_to_c3_Blinn1977(beta):
     beta = _check_beta(beta)
     c2 = np.cos(beta) ** 2
     return _out(np.sqrt((c2 - 1.0) / (c2 - np.sqrt(2.0))))  # Blinn 1977, c3(beta)
+
+
+C3_MAX_FOR_BETA = 2.0**-0.25
+"""Largest ``c3`` whose D3 still falls to one half before ``alpha = 90`` degrees (``c3^4 = 1/2``)."""
+
+
+def c3_to_beta_Blinn1977(c3):
+    """Half-value angle ``beta`` (radians) of Blinn's D3 with eccentricity ``c3``: the inverse of
+    :func:`beta_to_c3_Blinn1977`.
+
+    Blinn compares D1, D2 and D3 at equal ``beta`` but prints his material parameters as ``c3``
+    (Figs. 7a, 7b), so comparing Phong with Torrance-Sparrow at equal ``beta`` needs ``beta`` from
+    ``c3``. Solving ``c3^2 = (cos^2 beta - 1) / (cos^2 beta - sqrt 2)`` for ``cos^2 beta`` gives
+    ``beta = arccos(sqrt((1 - sqrt(2) c3^2) / (1 - c3^2)))``. D3 at ``alpha = 90`` degrees is
+    ``c3^4``, so ``beta`` exists only while ``c3^4 < 1/2``, i.e. ``c3 < 2^(-1/4)``.
+
+    Parameters
+    ----------
+    c3 : array_like
+        Eccentricity, ``0 < c3 < 2^(-1/4)`` (about 0.8409, :data:`C3_MAX_FOR_BETA`).
+
+    Returns
+    -------
+    numpy.ndarray or numpy.float64
+        ``beta`` in radians, in ``(0, pi/2)``.
+
+    Raises
+    ------
+    ValueError
+        If ``c3`` is outside ``(0, 2^(-1/4))``: for larger ``c3``, D3 never falls to one half.
+
+    References
+    ----------
+    - Blinn 1977, "Facet distribution functions", c3(beta).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> print(f"{np.degrees(c3_to_beta_Blinn1977(0.35)):.4f}")  # Blinn Fig. 7b, MgO
+    13.9141
+    """
+    c3 = np.asarray(c3, dtype=np.float64)
+    if np.any(~((c3 > 0) & (c3 < C3_MAX_FOR_BETA))):
+        raise ValueError(
+            f"'c3' must lie in (0, 2^(-1/4) = {C3_MAX_FOR_BETA:.6f}) for D3 to fall to one half, "
+            f"got {c3!r}."
+        )
+    c3_2 = c3 * c3
+    cos2_beta = (1.0 - np.sqrt(2.0) * c3_2) / (1.0 - c3_2)  # Blinn 1977, c3(beta) solved for cos^2 beta
+    return _out(np.arccos(np.sqrt(np.clip(cos2_beta, 0.0, 1.0))))
 
 
 # --- mixture and dispatcher -----------------------------------------------------------------------

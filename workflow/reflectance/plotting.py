@@ -46,12 +46,17 @@ def savefig(fig, *paths, dpi=150):
         plt.close(fig)
 
 
-def off_screen_plotter(width, height):
-    """A pyvista plotter that renders off-screen (EGL on a machine without a display)."""
+def off_screen_plotter(width, height, shape=(1, 1)):
+    """A pyvista plotter that renders off-screen (EGL on a machine without a display).
+
+    ``shape = (rows, columns)`` makes a grid of subplots (select one with ``plotter.subplot(i, j)``),
+    drawn without borders between them.
+    """
     import pyvista as pv
 
     pv.OFF_SCREEN = True
-    return pv.Plotter(off_screen=True, window_size=(int(width), int(height)))
+    return pv.Plotter(off_screen=True, window_size=(int(width), int(height)),
+                      shape=tuple(int(n) for n in shape), border=False)
 
 
 def save_plotter(plotter, path):

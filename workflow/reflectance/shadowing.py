@@ -8,8 +8,9 @@ Scalars in give numpy scalars out.
 - V-cavity (Torrance & Sparrow 1967, derived by Blinn 1977, printed again by Cook & Torrance
   1982 and the lecture; one formula, one function):
   ``G = min(1, G_b, G_c)``, ``G_b = 2 (N.H)(N.V) / (V.H)`` (masking of reflected light),
-  ``G_c = 2 (N.H)(N.L) / (V.H)`` (shadowing of incident light). :mod:`reflectance.vgroove` checks
-  it against a ray simulation of a symmetric V-groove.
+  ``G_c = 2 (N.H)(N.L) / (V.H)`` (shadowing of incident light), each on its own from
+  :func:`vcavity_terms_Blinn1977`. :mod:`reflectance.vgroove` checks them against a ray simulation
+  of a symmetric V-groove.
 - Blinn's division-free ordering of ``G / (N.E)`` (:func:`G_over_NE_Blinn1977`).
 - Smith's G for the Beckmann distribution (Walter et al. 2007), the modern option, exact (erf) or
   with Walter's rational approximation.
@@ -35,6 +36,7 @@ import numpy as np
 from scipy.special import erf
 
 __all__ = [
+    "vcavity_terms_Blinn1977",
     "shadowing_VCavity_Blinn1977",
     "G_over_NE_Blinn1977",
     "G1_Smith_Beckmann_Walter2007",
@@ -58,13 +60,52 @@ def _positive(x):
     return np.where(x > 0, x, 1.0)
 
 
+def vcavity_terms_Blinn1977(NL, NV, NH, VH):
+    """Blinn's ``G_b = 2 (N.H)(N.E) / (E.H)`` (masking) and ``G_c = 2 (N.H)(N.L) / (E.H)`` (shadowing).
+
+    Unclipped (they exceed 1 when nothing is blocked); :func:`shadowing_VCavity_Blinn1977` is
+    ``min(1, G_b, G_c)``. ``V.H`` must be > 0.
+
+    Parameters
+    ----------
+    NL, NV, NH, VH : array_like
+        ``N.L``, ``N.V`` (Blinn's ``N.E``), ``N.H`` and ``V.H`` (``E.H``).
+
+    Returns
+    -------
+    G_b, G_c : numpy.ndarray or numpy.float64
+
+    Raises
+    ------
+    ValueError
+        If any ``V.H`` is not > 0.
+
+    References
+    ----------
+    - Blinn 1977, Figs. 1-4, G_b and G_c.
+
+    Examples
+    --------
+    >>> G_b, G_c = vcavity_terms_Blinn1977(0.1, 0.9, 0.8, 0.5)
+    >>> print(f"{G_b:.2f} {G_c:.2f}")  # 2 .8 .9 / .5, 2 .8 .1 / .5
+    2.88 0.32
+    """
+    NL, NV, NH, VH = (np.asarray(x, dtype=np.float64) for x in (NL, NV, NH, VH))
+    if np.any(~(VH > 0)):
+        raise ValueError(f"'VH' (E.H) must be > 0, got {VH!r}.")
+    G_b = 2.0 * NH * NV / VH  # Blinn 1977, G_b = 2 (N.H)(N.E) / (E.H) (masking)
+    G_c = 2.0 * NH * NL / VH  # Blinn 1977, G_c = 2 (N.H)(N.L) / (E.H) (shadowing)
+    return _out(G_b), _out(G_c)
+
+
 def shadowing_VCavity_Blinn1977(NL, NV, NH, VH):
     """V-cavity geometrical attenuation factor ``G = min(1, G_b, G_c)``.
 
     ``G_b = 2 (N.H)(N.V) / (V.H)`` is the fraction of a fully lit facet whose reflected light
     escapes the groove (Blinn's case b, masking); ``G_c = 2 (N.H)(N.L) / (V.H)`` the fraction of
     the facet that is lit (case c, shadowing). Cook & Torrance 1982 print the same formula (with
-    ``V.H = L.H``), so there is one implementation under Blinn's name.
+    ``V.H = L.H``), so there is one implementation under Blinn's name; the two terms come from
+    :func:`vcavity_terms_Blinn1977`.
 
     Parameters
     ----------
@@ -89,8 +130,7 @@ def shadowing_VCavity_Blinn1977(NL, NV, NH, VH):
     """
     NL, NV, NH, VH = _cosines(NL, NV, NH, VH)
     valid = (NL > 0) & (NV > 0) & (NH > 0) & (VH > 0)
-    G_b = 2.0 * NH * NV / _positive(VH)  # Blinn 1977, G_b (masking)
-    G_c = 2.0 * NH * NL / _positive(VH)  # Blinn 1977, G_c (shadowing)
+    G_b, G_c = vcavity_terms_Blinn1977(NL, NV, NH, _positive(VH))
     G = np.minimum(1.0, np.minimum(G_b, G_c))  # Blinn 1977 / Cook & Torrance 1982, G = min{1, G_b, G_c}
     return _out(np.where(valid, G, 0.0))
 

@@ -518,6 +518,48 @@ class Material:
     k: np.ndarray
     F0: np.ndarray
 
+    def mean_F0(self, range_nm):
+        """Normal-incidence reflectance averaged over the grid wavelengths in ``range_nm``.
+
+        Cook & Torrance 1982 use one such average twice: the index ``n`` of their colour-shift
+        approximation (Fig. 5c, "the average normal reflectance") and the table of the nonmetals
+        of Fig. 7 (Table I).
+
+        Parameters
+        ----------
+        range_nm : sequence of 2 floats
+            ``(lo, hi)`` in nm, both ends included.
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        ValueError
+            If no wavelength of the grid lies in ``range_nm``.
+
+        References
+        ----------
+        - Cook & Torrance 1982, "Spectral composition of the reflected light" and Table I.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> m = Material("flat", "derived", np.array([400.0, 500.0, 600.0]), np.ones(3), np.zeros(3),
+        ...              np.array([0.1, 0.2, 0.6]))
+        >>> print(f"{m.mean_F0((400, 500)):.2f}")
+        0.15
+        """
+        lo, hi = range_nm
+        inside = (self.wavelengths >= lo) & (self.wavelengths <= hi)
+        if not inside.any():
+            raise ValueError(
+                f"average_F0_range_nm {list(range_nm)} holds no wavelength of the grid "
+                f"{self.wavelengths[0]:g}-{self.wavelengths[-1]:g} nm"
+            )
+        return float(np.mean(self.F0[inside]))
+
 
 def _known_materials(spectra_dir):
     spectra_dir = Path(spectra_dir)

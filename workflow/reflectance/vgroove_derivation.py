@@ -1,10 +1,9 @@
 """Blinn's derivation of G from the V-groove (Blinn 1977, Figs. 1-4), measured on a simulation.
 
-- :func:`direction_from_angles` and :func:`vgroove_case`: the light and eye directions of one case
-  of Fig. 1, the ray simulation of :func:`reflectance.vgroove.simulate_vgroove`, and the closed
-  forms ``G_b``, ``G_c`` and ``G = min(1, G_b, G_c)`` side by side.
-- :func:`vcavity_terms_Blinn1977`: ``G_b`` and ``G_c`` separately (Blinn's cases b and c);
-  :func:`reflectance.shadowing.shadowing_VCavity_Blinn1977` returns only their minimum with 1.
+- :func:`vgroove_case`: the light and eye directions of one case of Fig. 1, the ray simulation
+  of :func:`reflectance.vgroove.simulate_vgroove`, and the closed forms ``G_b``, ``G_c``
+  (:func:`reflectance.shadowing.vcavity_terms_Blinn1977`) and ``G = min(1, G_b, G_c)``
+  (:func:`reflectance.shadowing.shadowing_VCavity_Blinn1977`) side by side.
 - :func:`groove_angles_Blinn1977`: the law-of-sines construction of Fig. 4.
 
 Blinn derives ``G_b = 1 - m/l`` from the triangle formed by the bottom B of the groove, the top C
@@ -38,52 +37,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from reflectance.shadowing import shadowing_VCavity_Blinn1977
+from reflectance.polar import direction_from_angles
+from reflectance.shadowing import shadowing_VCavity_Blinn1977, vcavity_terms_Blinn1977
 from reflectance.vgroove import simulate_vgroove
 
-__all__ = [
-    "direction_from_angles",
-    "vcavity_terms_Blinn1977",
-    "vgroove_case",
-    "GrooveAngles",
-    "groove_angles_Blinn1977",
-]
-
-
-def direction_from_angles(theta, phi):
-    """Unit vector at angle ``theta`` from N = +z and azimuth ``phi`` from +x (radians).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> print(np.round(direction_from_angles(np.pi / 2, np.pi / 2), 12))
-    [0. 1. 0.]
-    """
-    theta, phi = float(theta), float(phi)
-    return np.array([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)])
-
-
-def vcavity_terms_Blinn1977(NL, NV, NH, VH):
-    """Blinn's ``G_b = 2 (N.H)(N.E) / (E.H)`` (masking) and ``G_c = 2 (N.H)(N.L) / (E.H)`` (shadowing).
-
-    Unclipped (they exceed 1 when nothing is blocked); ``G = min(1, G_b, G_c)``. ``V.H`` must be > 0.
-
-    References
-    ----------
-    - Blinn 1977, G_b and G_c.
-
-    Examples
-    --------
-    >>> G_b, G_c = vcavity_terms_Blinn1977(0.1, 0.9, 0.8, 0.5)
-    >>> print(f"{G_b:.2f} {G_c:.2f}")  # 2 .8 .9 / .5, 2 .8 .1 / .5
-    2.88 0.32
-    """
-    NL, NV, NH, VH = (np.asarray(x, dtype=np.float64) for x in (NL, NV, NH, VH))
-    if np.any(~(VH > 0)):
-        raise ValueError(f"'VH' (E.H) must be > 0, got {VH!r}.")
-    G_b = 2.0 * NH * NV / VH  # Blinn 1977, G_b = 2 (N.H)(N.E) / (E.H)
-    G_c = 2.0 * NH * NL / VH  # Blinn 1977, G_c = 2 (N.H)(N.L) / (E.H)
-    return (G_b[()] if G_b.ndim == 0 else G_b), (G_c[()] if G_c.ndim == 0 else G_c)
+__all__ = ["vgroove_case", "GrooveAngles", "groove_angles_Blinn1977"]
 
 
 def vgroove_case(light, eye, n_rays=100_000, n_keep=24):
@@ -127,7 +85,6 @@ def vgroove_case(light, eye, n_rays=100_000, n_keep=24):
         "alpha_deg": float(np.degrees(simulation.alpha)), "case": simulation.case,
     }
     return simulation, row
-
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""Drawing a simulated V-groove (Blinn 1977, Figs. 1, 3, 4) on a matplotlib axes.
+"""Drawing a simulated V-groove (Blinn 1977, Figs. 1-4) on a matplotlib axes.
 
 Everything drawn comes from a :class:`reflectance.vgroove.VGrooveSimulation`: the vertices, the
 facet normal H, the projected directions L' and E', the traced ray paths and the blocked lengths.
@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Arc, Polygon
 
-__all__ = ["COLOURS", "draw_groove", "draw_arrow", "draw_angle", "draw_dimension"]
+__all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle", "draw_dimension"]
 
 #: Colours (Okabe-Ito, readable by colour-blind readers) of the groove drawings.
 COLOURS = {"light": "#e69f00", "eye": "#0072b2", "masked": "#d55e00", "facet": "#009e73",
@@ -109,3 +109,41 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
     ax.set_xlim(-1.75 * h, 1.75 * h)
     ax.set_ylim(-depth - 0.45 * h, (ray_length + 0.15) * h)
     ax.axis("off")
+
+
+def draw_top_view(ax, sim, L, E, H):
+    """Blinn's Fig. 2: the groove seen along N, with L, E, H and the projections L', E'.
+
+    The axes are ``t`` (the direction H tilts to, across the groove) and ``g`` (along it), the first
+    two rows of ``sim.basis``; the groove's opening is drawn from ``t = -1`` (A) to ``1`` (C), the
+    vectors at unit length from the middle of the facet AB. L' and E' are the feet of L and E on
+    the plane of N and H (``g = 0``, seen edge-on).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    sim : reflectance.vgroove.VGrooveSimulation
+    L, E, H : numpy.ndarray
+        (3,) the unit vectors, in the frame of ``sim.basis``.
+    """
+    t, axis = sim.basis[0], sim.basis[1]
+    ax.axvspan(-1, 0, color=COLOURS["facet"], alpha=0.18, lw=0)
+    ax.axvspan(0, 1, color="0.9", lw=0)
+    for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
+        ax.axvline(u, color="k", lw=1, ls=ls)
+    ax.axhline(0, color="0.4", lw=0.8, ls="-.")
+    ax.text(1.28, 0.04, "plane of N and H\n(edge-on)", ha="right", va="bottom", fontsize=9, color="0.3")
+    O = np.array([-0.5, 0.0])
+    for vec, label, c in ((L, "L", COLOURS["light"]), (E, "E", COLOURS["eye"]), (H, "H", "k")):
+        top = np.array([vec @ t, vec @ axis])
+        draw_arrow(ax, O, top, label, c)
+        if label != "H":
+            ax.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
+            ax.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
+            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=11,
+                    ha="center", va="bottom" if top[1] < 0 else "top")
+    for u, label in ((-1, "A"), (0, "B"), (1, "C")):
+        ax.text(u, 1.06, label, ha="center", va="top", fontsize=11,
+                bbox=dict(facecolor="white", edgecolor="none", pad=1))
+    ax.set(xlim=(-1.3, 1.3), ylim=(-1.1, 1.1), aspect="equal", xticks=[], yticks=[],
+           xlabel="t: direction of H's tilt", ylabel="g: along the groove")

@@ -11,6 +11,7 @@ import pandas as pd
 from reflectance.brdf import brdf
 from reflectance.microfacet import distribution
 from reflectance.plotting import new_figure, savefig
+from reflectance.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
 
@@ -56,11 +57,9 @@ with script_log(snakemake) as log:
     u = np.linspace(-a, a, cfg["resolution"])
     P = np.stack([*np.meshgrid(u, u, indexing="xy"), np.zeros((u.size, u.size))], axis=-1)
     L_img, V_img = unit(np.asarray(cfg["light_position"]) - P), unit(np.asarray(cfg["eye_position"]) - P)
-    ti = np.radians(cfg["incidence_deg"])
-    L_dir = np.array([-np.sin(ti), 0.0, np.cos(ti)])
     # open interval: at the horizon Ward's 1/sqrt(N.V) diverges (and cos(90 deg) is 6e-17, not 0)
     theta_o = np.radians(np.arange(-90.0 + cfg["polar_step_deg"], 90.0 - 1e-9, cfg["polar_step_deg"]))
-    V_dir = np.stack([np.sin(theta_o), np.zeros_like(theta_o), np.cos(theta_o)], axis=-1)
+    L_dir, V_dir, _ = plane_of_incidence_vectors(np.radians(cfg["incidence_deg"]), theta_o)  # light at -x
 
     fig = new_figure(14, 8.8)
     grid = fig.add_gridspec(3, 4, height_ratios=[1, 1, 1.15], hspace=0.42, wspace=0.05, top=0.9,

@@ -8,7 +8,8 @@ import pandas as pd
 from reflectance.plotting import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
-from reflectance.vgroove_plot import COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove
+from reflectance.vgroove_plot import (COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove,
+                                      draw_top_view)
 
 # Per case: what is blocked, along which direction, Blinn's closed form, the simulated fraction.
 SPEC = {"b": ("masking", "E", "eye", "G_b", "G_masking_simulated", "escapes"),
@@ -24,7 +25,7 @@ with script_log(snakemake) as log:
         raise ValueError(f"config.yaml: figures.blinn_1977.fig1_4.cases.{name} gives Blinn's case "
                          f"{r['case']!r}, not {name!r}.")
     g = groove_angles_Blinn1977(sim, blocked)
-    t, axis = sim.basis[0], sim.basis[1]
+    axis = sim.basis[1]  # g, along the groove
     deg = {k: np.degrees(getattr(g, k)) for k in "abcdef"}
     ratio_3d = r[f"N{V}"] / r["EH"]                     # (N.E)/(E.H) with E itself
     V2 = g.direction
@@ -44,28 +45,7 @@ with script_log(snakemake) as log:
 
     fig = new_figure(16, 6.4)
     ax2, ax3, ax4 = fig.subplots(1, 3)
-    # Fig. 2: looking down N. Axes: t (the direction H tilts to) and g (along the groove).
-    ax2.axvspan(-1, 0, color=COLOURS["facet"], alpha=0.18, lw=0)
-    ax2.axvspan(0, 1, color="0.9", lw=0)
-    for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
-        ax2.axvline(u, color="k", lw=1, ls=ls)
-    ax2.axhline(0, color="0.4", lw=0.8, ls="-.")
-    ax2.text(1.28, 0.04, "plane of N and H\n(edge-on)", ha="right", va="bottom", fontsize=9, color="0.3")
-    O = np.array([-0.5, 0.0])
-    for vec, label, c in ((r["L"], "L", COLOURS["light"]), (r["E"], "E", COLOURS["eye"]),
-                          (r["H"], "H", "k")):
-        top = np.array([vec @ t, vec @ axis])
-        draw_arrow(ax2, O, top, label, c)
-        if label != "H":
-            ax2.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
-            ax2.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
-            ax2.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=11,
-                     ha="center", va="bottom" if top[1] < 0 else "top")
-    for u, label in ((-1, "A"), (0, "B"), (1, "C")):
-        ax2.text(u, 1.06, label, ha="center", va="top", fontsize=11,
-                 bbox=dict(facecolor="white", edgecolor="none", pad=1))
-    ax2.set(xlim=(-1.3, 1.3), ylim=(-1.1, 1.1), aspect="equal", xticks=[], yticks=[],
-            xlabel="t: direction of H's tilt", ylabel="g: along the groove")
+    draw_top_view(ax2, sim, r["L"], r["E"], r["H"])  # Fig. 2: looking down N
     ax2.set_title("Fig. 2 \u2014 top view (seen along N)", fontsize=12)
     # Fig. 3: the part of the facet whose light escapes.
     draw_groove(ax3, sim, names=True)

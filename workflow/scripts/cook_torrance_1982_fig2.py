@@ -7,15 +7,15 @@ import pyvista as pv
 from matplotlib import font_manager
 
 from reflectance.plotting import off_screen_plotter, save_plotter
+from reflectance.polar import direction_from_angles
 from reflectance.scripting import script_log
 
 FONT = font_manager.findfont("DejaVu Sans")  # has the Greek letters VTK's own fonts lack
 COLOURS = {"N": "black", "L": "#d98c00", "V": "#1f5fbf", "H": "#2a9d3a"}
 
 
-def direction(polar_deg, azimuth_deg):
-    t, p = np.radians(polar_deg), np.radians(azimuth_deg)
-    return np.array([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)])
+def direction(angles):
+    return direction_from_angles(np.radians(angles["polar_deg"]), np.radians(angles["azimuth_deg"]))
 
 
 def arc(a, b, radius, n=48):
@@ -28,8 +28,7 @@ def arc(a, b, radius, n=48):
 with script_log(snakemake) as log:
     fig = snakemake.params.fig
     vectors = {"N": np.array([0.0, 0.0, 1.0]),
-               "L": direction(fig["light"]["polar_deg"], fig["light"]["azimuth_deg"]),
-               "V": direction(fig["viewer"]["polar_deg"], fig["viewer"]["azimuth_deg"])}
+               "L": direction(fig["light"]), "V": direction(fig["viewer"])}
     half = vectors["V"] + vectors["L"]
     vectors["H"] = half / np.linalg.norm(half)  # C&T 1982: H = (V + L) / length(V + L)
     N, L, V, H = (vectors[k] for k in "NLVH")

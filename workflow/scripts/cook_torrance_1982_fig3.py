@@ -8,7 +8,8 @@ from scipy.integrate import simpson
 from matplotlib import font_manager
 
 from reflectance.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
-from reflectance.plotting import save_plotter
+from reflectance.plotting import off_screen_plotter, save_plotter
+from reflectance.polar import direction_from_angles
 from reflectance.scripting import script_log
 
 FONT = font_manager.findfont("DejaVu Sans")
@@ -28,16 +29,15 @@ with script_log(snakemake) as log:
     pd.DataFrame(columns).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
                                  lineterminator="\n")
 
-    pl = pv.Plotter(shape=(2, 2), off_screen=True, window_size=(1600, 1400), border=False)
+    pl = off_screen_plotter(1600, 1400, shape=(2, 2))
     pl.set_background("white")
     A, P = np.meshgrid(alpha, phi, indexing="ij")
     for i, (model, m, c, D) in enumerate(panels):
         letter = "abcd"[i]
         pl.subplot(i // 2, i % 2)
         radius = D[:, None] * m**2  # common scale per m: Beckmann's peak 1/m^2 at unit distance
-        x, y, z = (radius * np.sin(A) * np.cos(P), radius * np.sin(A) * np.sin(P),
-                   radius * np.cos(A))
-        surface = pv.StructuredGrid(x, y, z)
+        H = direction_from_angles(A, P)  # facet normals over the hemisphere
+        surface = pv.StructuredGrid(*(radius * H[..., j] for j in range(3)))
         surface["D"] = np.broadcast_to(D[:, None], A.shape).ravel(order="F")  # VTK point order
         pl.add_mesh(pv.Disc(inner=0, outer=1.0, c_res=96), color="#e4dfd3")
         pl.add_mesh(pv.Line((0, 0, 0), (0, 0, 1.15)), color="black", line_width=2)

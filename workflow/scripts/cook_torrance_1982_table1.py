@@ -22,15 +22,14 @@ with script_log(snakemake) as log:
     rows = []
     for entry in fig_cfg["rows"]:
         material = load_material(entry["material"], grid, Path(snakemake.input.sources).parent)
-        inside = (grid >= lo) & (grid <= hi)
+        F0_mean = material.mean_F0((lo, hi))
         XYZ = material.F0 @ W  # the colour of pi R_d = F0 (C&T 1982 Fig. 7: R_d = F0/pi)
         source = sources.loc[material.name]
         rows.append({
             "material": material.name, "s": entry["s"], "d": entry["d"], "m": entry["m"],
             "spectrum": "measured n, k" if material.kind == "measured" else "derived reflectance",
             "dataset": source["dataset"], "reference": source["reference"],
-            f"F0_mean_{lo:g}_{hi:g}nm": material.F0[inside].mean(),
-            "R_d_mean_per_sr": material.F0[inside].mean() / np.pi,
+            f"F0_mean_{lo:g}_{hi:g}nm": F0_mean, "R_d_mean_per_sr": F0_mean / np.pi,
             "X": XYZ[0], "Y": XYZ[1], "Z": XYZ[2],
             "x": XYZ[0] / XYZ.sum(), "y": XYZ[1] / XYZ.sum()})
     table = pd.DataFrame(rows)

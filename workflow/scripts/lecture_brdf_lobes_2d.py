@@ -9,6 +9,7 @@ from matplotlib.ticker import MaxNLocator
 
 from reflectance.brdf import brdf
 from reflectance.plotting import new_figure, savefig
+from reflectance.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
 # config key -> (reflectance.brdf method, panel title)
@@ -27,10 +28,8 @@ def parameters_text(params):
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     theta_i = np.radians(cfg["incidence_deg"])
-    N = np.array([0.0, 0.0, 1.0])
-    L = np.array([-np.sin(theta_i), 0.0, np.cos(theta_i)])  # light on the -x side
     theta_o = np.radians(np.arange(-90.0, 90.0 + 1e-9, cfg["polar_step_deg"]))
-    V = np.stack([np.sin(theta_o), np.zeros_like(theta_o), np.cos(theta_o)], axis=-1)
+    L, V, N = plane_of_incidence_vectors(theta_i, theta_o)  # light on the -x side (on the left)
 
     table = {"theta_o_deg": np.degrees(theta_o)}
     for key, (method, _) in MODELS.items():

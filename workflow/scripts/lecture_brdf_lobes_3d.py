@@ -6,7 +6,8 @@ import numpy as np
 import pyvista as pv
 
 from reflectance.brdf import brdf
-from reflectance.plotting import save_plotter
+from reflectance.plotting import off_screen_plotter, save_plotter
+from reflectance.polar import direction_from_angles, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
 # config key -> (reflectance.brdf method, panel title)
@@ -20,16 +21,13 @@ MODELS = {
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     theta_i = np.radians(cfg["incidence_deg"])
-    N = np.array([0.0, 0.0, 1.0])
-    L = np.array([-np.sin(theta_i), 0.0, np.cos(theta_i)])
-    mirror = np.array([np.sin(theta_i), 0.0, np.cos(theta_i)])
+    L, mirror, N = plane_of_incidence_vectors(theta_i, theta_i)  # light on the -x side
     n_theta, n_phi = cfg["hemisphere_samples"]
     theta, phi = np.meshgrid(np.linspace(0.0, np.pi / 2, n_theta), np.linspace(0.0, 2 * np.pi, n_phi),
                              indexing="ij")
-    V = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], axis=-1)
+    V = direction_from_angles(theta, phi)
 
-    pv.OFF_SCREEN = True  # plotting.off_screen_plotter has no subplot grid: the same, with shape
-    pl = pv.Plotter(off_screen=True, shape=(1, len(MODELS)), window_size=(1800, 560), border=False)
+    pl = off_screen_plotter(1800, 560, shape=(1, len(MODELS)))
     pl.set_background("white")
     for i, (key, (method, title)) in enumerate(MODELS.items()):
         f = brdf(L, V, N, method, **cfg["models"][key])

@@ -10,63 +10,9 @@ import pandas as pd
 from matplotlib.collections import LineCollection
 
 from reflectance.plotting import new_figure, savefig
+from reflectance.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
 from reflectance.shadowing import G1_Smith_Beckmann_Walter2007
-
-
-def gaussian_profile(n, correlation_length, rms_slope, seed):
-    """Periodic heights at unit spacing, autocorrelation ~ exp(-(dx/l)^2), scaled so that the rms
-    of the segment slopes is ``rms_slope``; returns (heights, slopes of segments [k, k+1])."""
-    f = np.fft.rfftfreq(n)  # the spectrum of exp(-(dx/l)^2) is ~ exp(-(pi f l)^2): filter by its root
-    white = np.fft.rfft(np.random.default_rng(seed).standard_normal(n))
-    h = np.fft.irfft(white * np.exp(-0.5 * (np.pi * f * correlation_length) ** 2), n)
-    p = np.roll(h, -1) - h
-    scale = rms_slope / np.sqrt(np.mean(p * p))
-    return h * scale, p * scale
-
-
-def visible_fraction(h, theta):
-    """Fraction of each segment [k, k+1] of the periodic polyline ``h`` seen from direction
-    (sin theta, cos theta), theta > 0 towards +x; 0 for segments facing away. A point is hidden iff
-    a later node has a larger g = h - x cot(theta); g is linear on segments, so it suffices to
-    compare with the running maximum of g over the nodes ahead (two periods)."""
-    if theta < 0:  # mirror x -> -x: node i <- node -i, segment k <- segment n - 1 - k
-        return visible_fraction(np.roll(h[::-1], 1), -theta)[::-1]
-    n, cot = h.size, np.cos(theta) / max(np.sin(theta), 1e-300)
-    if n * cot <= np.ptp(h):
-        raise ValueError(f"theta = {np.degrees(theta):.3g} deg is too grazing for a profile of "
-                         f"{n} samples (n_samples x cot(theta) must exceed the height range)")
-    x = np.arange(2 * n + 1)
-    g = h[x % n] - x * cot
-    ahead = np.maximum.accumulate(g[::-1])[::-1][1:n + 1]  # max of g over nodes k+1 .. 2n
-    g0, drop = g[:n], g[:n] - g[1:n + 1]  # drop > 0: the segment faces the direction
-    return np.where(drop > 0, np.clip((g0 - ahead) / np.where(drop > 0, drop, 1.0), 0, 1), 0.0)
-
-
-def masking_G1(h, p, theta):
-    """Visible / total projected length of the facets facing direction theta, and the visible
-    projected length over n cos(theta) (1 for any periodic profile: every ray hits it once)."""
-    proj = np.maximum(np.cos(theta) - p * np.sin(theta), 0.0)
-    seen = np.sum(visible_fraction(h, theta) * proj)
-    return seen / np.sum(proj), seen / (h.size * np.cos(theta))
-
-
-def crossings(xs, hs, s, s0):
-    """(x, h) where the polyline (xs, hs) crosses each ray s = s0 (s is constant along the rays)."""
-    a, b = s[:-1], s[1:]
-    t = (s0[:, None] - a) / np.where(b != a, b - a, 1.0)
-    ok = (b != a) & (t >= 0) & (t < 1)
-    return np.where(ok, xs[:-1] + t, np.nan), np.where(ok, hs[:-1] + t * (hs[1:] - hs[:-1]), np.nan)
-
-
-def blocker(xs, hs, x0, h0, tan, side):
-    """First crossing beyond (x0, h0) of the ray rising towards ``side`` (+1 right, -1 left) at
-    angle atan(tan) from the normal; NaN where the ray escapes."""
-    bx, bh = crossings(xs, hs, xs - side * hs * tan, x0 - side * h0 * tan)
-    bx = np.where(side * (bx - x0[:, None]) > 1e-9, bx, np.nan)
-    j = np.argmin(np.nan_to_num(side * bx, nan=np.inf), axis=1)
-    return bx[np.arange(x0.size), j], bh[np.arange(x0.size), j]
-
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
@@ -83,16 +29,11 @@ with script_log(snakemake) as log:
 
     # Shadowing (light at -theta_i) and masking (view at +theta_o), overall and by facet slope
     nb, edges = cfg["slope_bins"], np.linspace(-3 * sigma, 3 * sigma, cfg["slope_bins"] + 1)
-    b = np.digitize(p, edges) - 1
-    inside = (b >= 0) & (b < nb)
-    by = {"slope_lo": edges[:-1], "slope_hi": edges[1:], "count": np.bincount(b[inside], minlength=nb)}
-    vis, g1 = {}, {}
+    by, g1 = {"slope_lo": edges[:-1], "slope_hi": edges[1:]}, {}
     for name, a in (("light", -ti), ("view", to)):
-        proj, vis[name] = np.maximum(np.cos(a) - p * np.sin(a), 0.0), visible_fraction(h, a)
-        w = inside & (proj > 0)
-        total = np.bincount(b[w], proj[w], nb)
-        by[f"visible_{name}"] = np.bincount(b[w], (vis[name] * proj)[w], nb) / np.where(total > 0, total, np.nan)
-        g1[name] = (np.sum(vis[name] * proj) / np.sum(proj), G1_Smith_Beckmann_Walter2007(np.cos(a), m))
+        fraction, by["count"] = visible_fraction_by_slope(h, p, a, edges)
+        by[f"visible_{name}"] = fraction
+        g1[name] = (masking_G1(h, p, a)[0], G1_Smith_Beckmann_Walter2007(np.cos(a), m))
         by[f"smith_{name}"] = np.full(nb, g1[name][1])
         log.info("%s: G1 simulated %.5f, Smith %.5f", name, *g1[name])
     pd.DataFrame(by).to_csv(snakemake.output.by_slope, index=False, float_format="%.6g",
@@ -100,26 +41,14 @@ with script_log(snakemake) as log:
 
     # (a) a window of the profile: light rays to the first facet they meet, and on to the viewer
     w0, w1 = cfg["window"]
-    if not 0 <= w0 < w1 <= h.size:
-        raise ValueError(f"figures.lecture.shadowing_masking.window: need 0 <= first < last <= "
-                         f"n_samples ({h.size}), got {cfg['window']}")
-    margin = int(np.ceil(np.ptp(h) * max(np.tan(ti), np.tan(to)))) + 2
-    idx = np.arange(w0 - margin, w1 + margin + 1)
-    xs, hs, ps = idx.astype(float), h[idx % h.size], p[idx[:-1] % h.size]
-    lit, seen = vis["light"][idx[:-1] % h.size], vis["view"][idx[:-1] % h.size]
-    u0 = w0 + (np.arange(cfg["n_rays"]) + 0.5) * (w1 - w0) / cfg["n_rays"]
-    hx, hh = crossings(xs, hs, xs + hs * np.tan(ti), u0)  # light rays: x + h tan(theta_i) constant
-    k = np.nanargmax(hh, axis=1)  # coming down from above, the highest crossing is met first
-    hit_x, hit_h = hx[np.arange(u0.size), k], hh[np.arange(u0.size), k]
-    mask_x, mask_h = blocker(xs, hs, hit_x, hit_h, np.tan(to), +1)
-    faces = ps[np.floor(hit_x).astype(int) - idx[0]] < 1 / np.tan(to)
-    escaped = faces & np.isnan(mask_x)
+    try:
+        rays = trace_window(h, p, cfg["window"], -ti, to, cfg["n_rays"])
+    except ValueError as err:
+        raise ValueError(f"figures.lecture.shadowing_masking: {err}") from None
+    xs, hs, (hit_x, hit_h), (mask_x, mask_h) = rays.x, rays.h, rays.hit.T, rays.masked_at.T
+    hit_segment = np.floor(hit_x).astype(int) - int(xs[0])
     log.info("rays traced to the viewer agree with visible_fraction for %d of %d rays",
-             np.sum(escaped == (seen[np.floor(hit_x).astype(int) - idx[0]] > 0.5)), u0.size)
-    j = np.floor(u0).astype(int) - idx[0]
-    dark = (lit[j] < 0.5) & (ps[j] > -1 / np.tan(ti))  # shadowed facets that face the light
-    sx, sh = u0[dark], np.interp(u0[dark], xs, hs)
-    shadow_x, shadow_h = blocker(xs, hs, sx, sh, np.tan(ti), -1)
+             np.sum(rays.escaped == (rays.seen[hit_segment] > 0.5)), hit_x.size)
 
     fig = new_figure(13, 8.4)
     grid = fig.add_gridspec(2, 2, height_ratios=[1.25, 1], hspace=0.3, wspace=0.22, top=0.9,
@@ -129,18 +58,18 @@ with script_log(snakemake) as log:
     classes = {"lit and seen": "#e69f00", "lit, masked by another facet": "#d62728",
                "lit, facing away from the viewer": "#9ab0c8",
                "shadowed, or facing away from the light": "#3a3a3a"}
-    colour = np.where(lit > 0.5, np.where(seen > 0.5, "#e69f00", np.where(
-        ps >= 1 / np.tan(to), "#9ab0c8", "#d62728")), "#3a3a3a")
+    colour = np.where(rays.lit > 0.5, np.where(rays.seen > 0.5, "#e69f00", np.where(
+        rays.slope >= 1 / np.tan(to), "#9ab0c8", "#d62728")), "#3a3a3a")
     seg = np.stack([np.stack([xs[:-1], hs[:-1]], -1), np.stack([xs[1:], hs[1:]], -1)], 1)
     ax.add_collection(LineCollection(seg[keep], colors=colour[keep], linewidths=3.5, zorder=3))
-    for x, y, ok, face, bx, bh in zip(hit_x, hit_h, escaped, faces, mask_x, mask_h):
+    for x, y, ok, face, bx, bh in zip(hit_x, hit_h, rays.escaped, rays.faces_view, mask_x, mask_h):
         ax.plot([x - (top - y) * np.tan(ti), x], [top, y], color="#f0c040", lw=0.9)
         if ok:
             ax.plot([x, x + (top - y) * np.tan(to)], [y, top], color="#e69f00", lw=0.9, ls="--")
         elif face:
             ax.plot([x, bx], [y, bh], color="#d62728", lw=1.1, ls="--")
             ax.plot(bx, bh, "x", color="#d62728", ms=7, mew=2, zorder=4)
-    for x, y, bx, bh in zip(sx, sh, shadow_x, shadow_h):
+    for (x, y), (bx, bh) in zip(rays.shadowed, rays.occluder):
         ax.plot([x, bx], [y, bh], color="0.35", lw=1.1, ls=":")
         ax.plot(bx, bh, "x", color="0.2", ms=7, mew=2, zorder=4)
     for label, c in classes.items():
