@@ -274,7 +274,7 @@ def brdf_TorranceSparrow_Blinn1977(
         ``N.L``, ``N.E``, ``N.H``, ``E.H``.
     F : array_like or callable
         Fresnel reflectance at ``E.H`` (values, possibly spectral), or a function of ``E.H``.
-        Blinn's printed Fresnel lacks the factor 1/2 (Cook & Torrance 1982, p. 12); see
+        Blinn's printed Fresnel lacks the factor 1/2 (Cook & Torrance 1982, "Spectral composition"); see
         :mod:`reflectance.fresnel`.
     p_d, p_s : array_like
         Proportions of diffuse and specular reflection (Blinn Fig. 7a: 0.6, 0.4).

