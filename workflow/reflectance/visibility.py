@@ -848,13 +848,41 @@ def visibility(meshes, camera):
         m = candidates[:, j] >= 0
         if m.any():
             offer(retry[m], candidates[m, j])
+    # Last resort, still exact: a sample the raster covers whose ray meets none of the nearby
+    # primitives (its true triangle is smaller than a pixel and never reached the ID buffer) is
+    # tested against every primitive whose projected bounding box contains it.
+    lost = missed[best_key[missed] < 0]
+    if len(lost):
+        _search_projected_boxes(scene, view, eye, d, lost, cols, best_t, best_key, best_b1,
+                                best_b2)
     hit = best_key >= 0
     stats = {
         "raster_miss": len(missed) / N,
         "recovered": float(np.count_nonzero(hit[retry])) / N,
+        "searched": len(lost) / N,
         "dropped": float(np.count_nonzero(~hit[missed])) / N,
     }
     return _samples(scene, camera, eye, d, hit, best_t, best_key, best_b1, best_b2, stats)
+
+
+def _search_projected_boxes(scene, view, eye, d, samples, cols, best_t, best_key, best_b1,
+                            best_b2):
+    """Exact nearest hit of each sample's ray among the primitives whose screen-space bounding
+    box holds the sample (updates the ``best_*`` arrays in place)."""
+    x, y, _ = view.project(scene.P)
+    tx, ty = x[scene.T], y[scene.T]  # (3, n) corners of every triangle on the fine grid
+    x0, x1, y0, y1 = tx.min(axis=0), tx.max(axis=0), ty.min(axis=0), ty.max(axis=0)
+    for s in samples:
+        px, py = s % cols + 0.5, s // cols + 0.5
+        near = np.nonzero((x0 <= px) & (px <= x1) & (y0 <= py) & (py <= y1))[0]
+        keys = np.unique(scene.key[near])
+        if not len(keys):
+            continue
+        t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1), keys,
+                                       0.0, np.inf)
+        if h.any():
+            j = int(np.argmin(np.where(h, t, np.inf)))
+            best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
 
 
 def _samples(scene, camera, eye, d, hit, t, key, b1, b2, stats):
