@@ -23,6 +23,7 @@ include: "workflow/rules/cook_torrance_1982.smk"
 include: "workflow/rules/blinn_1977.smk"
 include: "workflow/rules/lecture.smk"
 include: "workflow/rules/article.smk"
+include: "workflow/rules/renders.smk"
 
 
 rule all:

@@ -1,0 +1,208 @@
+"""Tests of reflectance.scene: scene files, validation errors by key, resolution."""
+
+import copy
+
+import numpy as np
+import pytest
+import yaml
+
+from reflectance.geometry import analytic_spheres
+from reflectance.scene import SceneError, load_scene, scene_from_dict, validate_scene
+
+
+def minimal(**changes):
+    doc = {
+        "camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30, "width": 8,
+                   "height": 6},
+        "objects": [{"geometry": {"type": "sphere", "radius": 1.0},
+                     "material": {"name": "Cu", "m": 0.3}}],
+        "lights": [{"type": "directional", "direction": [0, -1, 1]}],
+    }
+    doc.update(changes)
+    return doc
+
+
+@pytest.fixture
+def spectra(root):
+    return root / "spectra"
+
+
+def errors_of(doc, spectra, **kwargs):
+    with pytest.raises(SceneError) as info:
+        scene_from_dict(doc, source="s.yaml", spectra_dir=spectra, **kwargs)
+    return str(info.value)
+
+
+def test_defaults_are_filled_in(spectra):
+    scene = scene_from_dict(minimal(), spectra_dir=spectra)
+    doc = scene.document
+    assert doc["spectral"] == "table" and doc["shadows"] is True
+    assert doc["wavelengths"] == {"start_nm": 360, "end_nm": 830, "step_nm": 5}
+    assert doc["camera"]["up"] == [0, 0, 1] and doc["camera"]["supersample"] == 1
+    assert doc["lights"][0] == {"type": "directional", "direction": [0, -1, 1],
+                                "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0}
+    assert doc["ambient"] == {"fraction": 0.0, "reference": "intensity"}
+    assert doc["display"]["gamut_clip"] == "dominant-wavelength"
+    m = doc["objects"][0]["material"]
+    assert (m["model"], m["convention"], m["fresnel"], m["shadowing"]) == (
+        "CookTorrance1982", "paper", "exact", "v-cavity")
+    material = scene.objects[0].material
+    assert (material.s, material.d) == (1.0, 0.0)
+    # diffuse albedo defaults to the F0 of `name` (C&T Fig. 7, R_d = F0/pi), from Cu.csv here
+    data = np.loadtxt(spectra / "Cu.csv", delimiter=",", skiprows=1)
+    N = (np.interp(scene.wavelengths, data[:, 0], data[:, 1])
+         + 1j * np.interp(scene.wavelengths, data[:, 0], data[:, 2]))
+    assert np.allclose(material.albedo, abs((N - 1) / (N + 1)) ** 2, rtol=1e-12)
+    assert len(scene.wavelengths) == 95 and scene.ambient.spectrum == "D65"
+    # the caller's document is not modified
+    assert "spectral" not in minimal()
+
+
+def test_schema_errors_name_each_key_and_the_file(spectra):
+    doc = minimal()
+    doc["camera"]["height"] = -2
+    doc["objects"][0]["geometry"]["colour"] = "red"
+    doc["objects"][0]["material"]["s"] = 1.5
+    doc["lights"][0]["type"] = "spot"
+    doc["bogus"] = 1
+    text = errors_of(doc, spectra)
+    for key in ("s.yaml: camera.height:", "s.yaml: objects[0].geometry: Additional properties",
+                "s.yaml: objects[0].material.s: 1.5", "s.yaml: lights[0].type:",
+                "s.yaml: (top level): Additional properties are not allowed ('bogus'"):
+        assert key in text, text
+
+
+def test_missing_required_keys(spectra):
+    assert "(top level): 'camera' is a required property" in errors_of(
+        {k: v for k, v in minimal().items() if k != "camera"}, spectra)
+    doc = minimal()
+    del doc["objects"][0]["geometry"]["radius"]
+    assert "objects[0].geometry: 'radius' is a required property" in errors_of(doc, spectra)
+
+
+@pytest.mark.parametrize("material, key, message", [
+    ({"name": "Unobtainium", "m": 0.3}, "objects[0].material.name", "known: Ag, Al, Au"),
+    ({"name": "Cu", "s": 0.7, "d": 0.7, "m": 0.3}, "objects[0].material.s", "s + d = 1"),
+    ({"name": "Cu"}, "objects[0].material", "needs 'm' (or 'lobes')"),
+    ({"name": "Cu", "lobes": [{"m": 0.4, "w": 0.4}, {"m": 0.2, "w": 0.5}]},
+     "objects[0].material.lobes", "sum to 1"),
+    ({"name": "Cu", "lobes": [{"c3": 0.4, "w": 1.0}]}, "objects[0].material.lobes[0]",
+     "needs 'm'"),
+    ({"name": "Cu", "lobes": [{"m": 0.4, "w": 1.0}], "shadowing": "smith"},
+     "objects[0].material.shadowing", "one Beckmann"),
+    ({"model": "Lambert", "s": 0.5}, "objects[0].material.s", "no specular part"),
+    ({"model": "Lambert"}, "objects[0].material", "needs 'diffuse_material', 'albedo'"),
+    ({"model": "CookTorrance1982", "m": 0.3}, "objects[0].material", "needs 'name'"),
+    ({"name": "Cu", "albedo": 0.5, "diffuse_material": "Au", "m": 0.3},
+     "objects[0].material.albedo", "not both"),
+    ({"name": "Cu", "distribution": "TrowbridgeReitz1975", "convention": "physical",
+      "roughness_texture": {"method": "sinusoid", "min": 0.2}},
+     "objects[0].material.convention", "only as printed"),
+    ({"name": "Cu", "m": 0.3, "roughness_texture": {"method": "spots", "min": 0.1,
+                                                    "parameters": {"period": 3}}},
+     "objects[0].material.roughness_texture.parameters", "unknown parameters ['period']"),
+    ({"name": "Cu", "m": 0.3, "roughness_texture": {"method": "marble", "min": 0.1}},
+     "objects[0].material.roughness_texture.method", "is not one of"),
+    ({"model": "BlinnPhong1977", "albedo": 0.5}, "objects[0].material", "needs the exponent"),
+    ({"name": "Cu", "m": 0.3, "emission": {"dominant_wavelength_nm": 640, "luminance": 1,
+                                           "white": "D99"}},
+     "objects[0].material.emission.white", "unknown illuminant 'D99'"),
+])
+def test_material_errors_name_the_key(material, key, message, spectra):
+    text = errors_of(minimal(objects=[{"geometry": {"type": "sphere", "radius": 1.0},
+                                       "material": material}]), spectra)
+    assert f"s.yaml: {key}: " in text and message in text, text
+
+
+def test_other_semantic_errors_name_the_key(spectra, tmp_path):
+    doc = minimal(lights=[{"type": "directional", "direction": [0, 0, 0], "spectrum": "D99"}],
+                  ambient={"fraction": 0.1, "spectrum": "XYZ"},
+                  display={"illuminant": "Q"})
+    doc["objects"].append({"geometry": {"type": "mesh", "path": "nothere.obj"},
+                           "material": {"model": "Lambert", "albedo": 0.5}})
+    doc["objects"].append({"geometry": {"type": "vase", "profile": [[0.5, 0], [0.6, 1],
+                                                                     [0.5, 2]],
+                                        "wall_thickness": 5.0},
+                           "material": {"model": "Lambert", "albedo": 0.5}})
+    doc["camera"]["look_at"] = [0, -5, 0]
+    text = errors_of(doc, spectra, base_dir=tmp_path)
+    for expected in ("s.yaml: camera: camera position and look_at must differ",
+                     "s.yaml: lights[0]: light direction must be a non-zero",
+                     "s.yaml: lights[0].spectrum: illuminant: unknown illuminant 'D99'",
+                     "s.yaml: ambient.spectrum: ", "s.yaml: display.illuminant: ",
+                     "s.yaml: objects[1].geometry: ", "mesh file not found",
+                     "s.yaml: objects[2].geometry: "):
+        assert expected in text, (expected, text)
+
+
+def test_wavelength_grid_outside_a_material_names_it(spectra):
+    doc = minimal(wavelengths={"start_nm": 300, "end_nm": 830, "step_nm": 5})
+    text = errors_of(doc, spectra)
+    assert "objects[0].material.name: " in text and "leaves the data range" in text
+
+
+def test_missing_spectra_folder_is_reported(tmp_path):
+    text = errors_of(minimal(), tmp_path / "none")
+    assert "spectra_dir: no such folder" in text
+
+
+def test_transform_places_the_object(spectra):
+    doc = minimal()
+    doc["objects"][0]["transform"] = {"offset": [1, 2, 3], "scale": 2.0,
+                                      "rotation_deg": [0, 0, 90]}
+    doc["objects"][0]["geometry"]["center"] = [1, 0, 0]
+    scene = scene_from_dict(doc, spectra_dir=spectra)
+    centres, radii = analytic_spheres(scene.mesh)
+    # x -> 2 Rz(90) x + offset: (1, 0, 0) -> (0, 2, 0) + (1, 2, 3)
+    assert np.allclose(centres[0], [1, 4, 3]) and np.allclose(radii, [2.0])
+
+
+def test_load_scene_reads_files_and_applies_overrides(root, tmp_path, spectra):
+    path = tmp_path / "scene.yaml"
+    path.write_text(yaml.safe_dump(minimal()))
+    scene = load_scene(path, spectra_dir=spectra, width=20, height=10, supersample=3,
+                       spectral="brute-force",
+                       wavelengths={"start_nm": 380, "end_nm": 780, "step_nm": 10})
+    cam = scene.camera
+    assert (cam.width, cam.height, cam.supersample) == (20, 10, 3)
+    assert scene.spectral == "brute-force" and len(scene.wavelengths) == 41
+    assert scene.source == str(path)
+    example = load_scene(root / "workflow" / "scenes" / "example_spheres.yaml",
+                         spectra_dir=spectra)
+    assert len(example.objects) == 4 and len(example.lights) == 2
+    with pytest.raises(SceneError, match="no such scene file"):
+        load_scene(tmp_path / "missing.yaml")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("camera: [unclosed")
+    with pytest.raises(SceneError, match="bad.yaml: not valid YAML"):
+        load_scene(bad)
+    bad.write_text("- just\n- a list\n")
+    with pytest.raises(SceneError, match="a scene must be a mapping"):
+        load_scene(bad)
+
+
+def test_validate_scene_leaves_its_input_alone():
+    doc = minimal()
+    before = copy.deepcopy(doc)
+    out = validate_scene(doc)
+    assert doc == before and out["spectral"] == "table"
+
+
+def test_parts_get_their_own_materials(spectra):
+    doc = minimal(objects=[{
+        "geometry": {"type": "vase", "profile": [[0.5, 0], [0.6, 0.5], [0.4, 1.0]],
+                     "n_theta": 32, "n_profile_samples": 16},
+        "material": {"name": "Cu", "m": 0.3},
+        "parts": {"inner": {"model": "Lambert", "albedo": 0.2}}}])
+    scene = scene_from_dict(doc, spectra_dir=spectra)
+    (code, material), = scene.objects[0].part_materials.items()
+    assert code == 2 and material.model == "Lambert"  # VASE_PARTS["inner"]
+    doc["objects"][0]["parts"] = {"lid": {"model": "Lambert", "albedo": 0.2}}
+    assert "objects[0].parts.lid: no part 'lid' in a vase; known: outer, rim" in errors_of(
+        doc, spectra)
+
+
+def test_watch_geometry_takes_the_builder_parameters(spectra):
+    doc = minimal(objects=[{"geometry": {"type": "watch", "parameters": {"dial": 3}},
+                            "material": {"name": "Au", "m": 0.2}}])
+    assert "objects[0].geometry: " in errors_of(doc, spectra)
