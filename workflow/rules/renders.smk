@@ -39,3 +39,241 @@ rule ct82_fig6:
         "logs/cook_torrance_1982/fig6_{reading}.log",
     script:
         "../scripts/cook_torrance_1982_fig6.py"
+
+
+# Rendered figures of Blinn 1977 (reflectance.blinn_scene): Fig. 7, Phong vs Torrance-Sparrow,
+# edge and front lit, once per reading of Phong's p_s; the same as a light sweep (GIF); Fig. 8,
+# shininess varying with two texture patterns.
+
+B77_RENDER = config["figures"]["blinn_1977"]
+B77_RENDER_OUT = "results/blinn_1977"
+B77_FIG7 = B77_RENDER["fig7"]
+B77_FIG7_READINGS = list(B77_FIG7["phong_specular_readings"])
+B77_FIG7_SPECTRA = [
+    f"{B77_RENDER_OUT}/fig7_spectra/{B77_FIG7['panels'][p]['label'].replace(' ', '_')}"
+    f"_n{B77_FIG7['panels'][p]['n']:g}.csv" for p in "ab"
+]  # Blinn's scalar index as a constant-index material (F of the Torrance-Sparrow model)
+B77_FIG7_STEMS = {
+    key: f"{B77_RENDER_OUT}/fig7{key[0]}{key[1:]}"
+    for p in "ab" for light in ("edge", "front")
+    for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in B77_FIG7_READINGS]
+}
+
+TARGETS += [f"{B77_RENDER_OUT}/fig7_{r}.png" for r in B77_FIG7_READINGS] + [
+    f"{B77_RENDER_OUT}/fig7.csv"] + [
+    f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values() for ext in ("exr", "png", "scene.yaml")]
+
+
+rule blinn77_fig7:
+    output:
+        figures=[report(f"{B77_RENDER_OUT}/fig7_{r}.png", caption="../report/blinn77_fig7.rst",
+                        category="Blinn 1977", subcategory="Fig. 7") for r in B77_FIG7_READINGS],
+        csv=report(f"{B77_RENDER_OUT}/fig7.csv", caption="../report/blinn77_fig7_table.rst",
+                   category="Blinn 1977", subcategory="Fig. 7"),
+        spectra=B77_FIG7_SPECTRA,
+        renders=[f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values()
+                 for ext in ("exr", "png", "scene.yaml")],
+    params:
+        fig=B77_FIG7,
+        stems=B77_FIG7_STEMS,
+        wavelengths=config["wavelengths"],
+    log:
+        "logs/blinn_1977/fig7.log",
+    script:
+        "../scripts/blinn_1977_fig7.py"
+
+
+B77_SWEEP = B77_RENDER["fig7_sweep"]
+B77_SWEEP_SPECTRUM = B77_FIG7_SPECTRA["ab".index(B77_SWEEP["panel"])]
+
+TARGETS += [f"{B77_RENDER_OUT}/fig7_sweep.{ext}" for ext in ("gif", "png", "csv")]
+
+
+rule blinn77_fig7_sweep:
+    input:
+        spectrum=B77_SWEEP_SPECTRUM,
+    output:
+        gif=report(f"{B77_RENDER_OUT}/fig7_sweep.gif", caption="../report/blinn77_fig7_sweep.rst",
+                   category="Blinn 1977", subcategory="Fig. 7"),
+        contact=report(f"{B77_RENDER_OUT}/fig7_sweep.png",
+                       caption="../report/blinn77_fig7_sweep_contact.rst",
+                       category="Blinn 1977", subcategory="Fig. 7"),
+        csv=f"{B77_RENDER_OUT}/fig7_sweep.csv",
+    params:
+        sweep=B77_SWEEP,
+        fig7=B77_FIG7,
+        spectra_dir=B77_SWEEP_SPECTRUM.rsplit("/", 1)[0],
+        index_material=B77_SWEEP_SPECTRUM.rsplit("/", 1)[1][: -len(".csv")],
+        wavelengths=config["wavelengths"],
+    log:
+        "logs/blinn_1977/fig7_sweep.log",
+    script:
+        "../scripts/blinn_1977_fig7_sweep.py"
+
+
+# Cook & Torrance 1982, Fig. 7 (the vases: six metals, Table I's six nonmetals and labelled extras,
+# each rendered alone under Fig. 6's lighting, shown with one exposure), once per reading of the
+# ambient term as for Fig. 6; Fig. 8 (the watch).
+
+CT82_FIG7 = CT82["fig7"]
+CT82_FIG7_VASES = (
+    [metal["material"] for metal in CT82_FIG7["metals"]]
+    + [row["material"] for row in CT82["table1"]["rows"]]
+    + [f"{extra['table1']}_{extra['diffuse_material']}" for extra in CT82_FIG7["extras"]]
+)
+CT82_FIG7_SPECTRA = sorted(
+    {spectrum_csv(m["material"]) for m in CT82_FIG7["metals"]}
+    | {spectrum_csv(row["material"]) for row in CT82["table1"]["rows"]}
+    | {spectrum_csv(e["diffuse_material"]) for e in CT82_FIG7["extras"]}
+)
+
+TARGETS += [
+    f"{CT82_OUT}/{name}"
+    for reading in CT82_FIG6_READINGS
+    for name in [f"fig7_{reading}.png", f"fig7_{reading}.csv"] + [
+        f"fig7_{reading}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")
+    ]
+]
+
+
+rule ct82_fig7:
+    input:
+        spectra=CT82_FIG7_SPECTRA,
+        sources="spectra/sources.csv",
+    output:
+        png=report(f"{CT82_OUT}/fig7_{{reading}}.png", caption="../report/ct82_fig7.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        csv=report(f"{CT82_OUT}/fig7_{{reading}}.csv", caption="../report/ct82_fig7_table.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        exrs=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.exr" for vase in CT82_FIG7_VASES],
+        scenes=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
+    wildcard_constraints:
+        reading=_one_of(CT82_FIG6_READINGS),
+    params:
+        fig=CT82_FIG7,
+        fig6=CT82_FIG6,
+        table1=CT82["table1"]["rows"],
+        reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/cook_torrance_1982/fig7_{reading}.log",
+    script:
+        "../scripts/cook_torrance_1982_fig7.py"
+
+
+CT82_FIG8 = CT82["fig8"]
+
+
+def _check_ct82_fig7_fig8():
+    """References the schema cannot check: Table I rows and Fig. 6 ambient readings by name."""
+    rows = [row["material"] for row in CT82["table1"]["rows"]]
+    named = [(f"fig7.extras[{i}].table1", e["table1"]) for i, e in enumerate(CT82_FIG7["extras"])]
+    named += [(f"fig8.parts.{part}.table1", spec["table1"])
+              for part, spec in CT82_FIG8["parts"].items() if "table1" in spec]
+    problems = [f"figures.cook_torrance_1982.{key}: {name!r} is not a row of table1; known: "
+                f"{', '.join(rows)}" for key, name in named if name not in rows]
+    if CT82_FIG8["ambient_reading"] not in CT82_FIG6_READINGS:
+        problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "
+                        f"{CT82_FIG8['ambient_reading']!r} is not a key of fig6.ambient_readings; "
+                        f"known: {', '.join(CT82_FIG6_READINGS)}")
+    if problems:
+        raise WorkflowError("invalid configuration:\n  config.yaml: "
+                            + "\n  config.yaml: ".join(problems))
+
+
+_check_ct82_fig7_fig8()
+CT82_FIG8_MATERIALS = {spec.get("material", spec.get("table1"))  # a Table I row names its material
+                       for spec in CT82_FIG8["parts"].values()}
+
+TARGETS += [f"{CT82_OUT}/fig8{suffix}" for suffix in
+            (".png", ".csv", ".exr", "_render.png", ".scene.yaml")]
+
+
+rule ct82_fig8:
+    input:
+        spectra=sorted(spectrum_csv(name) for name in CT82_FIG8_MATERIALS),
+    output:
+        png=report(f"{CT82_OUT}/fig8.png", caption="../report/ct82_fig8.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 8"),
+        csv=report(f"{CT82_OUT}/fig8.csv", caption="../report/ct82_fig8_table.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 8"),
+        exr=f"{CT82_OUT}/fig8.exr",
+        render_png=f"{CT82_OUT}/fig8_render.png",
+        scene=f"{CT82_OUT}/fig8.scene.yaml",
+    params:
+        fig=CT82_FIG8,
+        fig6=CT82_FIG6,
+        table1=CT82["table1"]["rows"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/cook_torrance_1982/fig8.log",
+    script:
+        "../scripts/cook_torrance_1982_fig8.py"
+
+
+B77_FIG8 = B77_RENDER["fig8"]
+
+TARGETS += [f"{B77_RENDER_OUT}/fig8.{ext}" for ext in ("png", "csv")] + [
+    f"{B77_RENDER_OUT}/fig8{part}.{ext}" for part in "ab" for ext in ("exr", "png", "scene.yaml")]
+
+
+rule blinn77_fig8:
+    input:
+        spectrum=B77_FIG7_SPECTRA["ab".index(B77_FIG8["panel"])],
+    output:
+        png=report(f"{B77_RENDER_OUT}/fig8.png", caption="../report/blinn77_fig8.rst",
+                   category="Blinn 1977", subcategory="Fig. 8"),
+        csv=report(f"{B77_RENDER_OUT}/fig8.csv", caption="../report/blinn77_fig8_table.rst",
+                   category="Blinn 1977", subcategory="Fig. 8"),
+        a_exr=f"{B77_RENDER_OUT}/fig8a.exr",
+        a_png=f"{B77_RENDER_OUT}/fig8a.png",
+        a_scene=f"{B77_RENDER_OUT}/fig8a.scene.yaml",
+        b_exr=f"{B77_RENDER_OUT}/fig8b.exr",
+        b_png=f"{B77_RENDER_OUT}/fig8b.png",
+        b_scene=f"{B77_RENDER_OUT}/fig8b.scene.yaml",
+    params:
+        fig=B77_FIG8,
+        fig7=B77_FIG7,
+        n=B77_FIG7["panels"][B77_FIG8["panel"]]["n"],
+        wavelengths=config["wavelengths"],
+    log:
+        "logs/blinn_1977/fig8.log",
+    script:
+        "../scripts/blinn_1977_fig8.py"
+
+
+# Rendered figure of the Wikipedia article "Specular highlight": its pair of spheres.
+
+ARTICLE_SPHERES = config["figures"]["article"]["spheres"]
+ARTICLE_SPHERES_OUT = "results/article"
+
+TARGETS += [f"{ARTICLE_SPHERES_OUT}/spheres.{ext}"
+            for ext in ("png", "csv", "exr", "scene.yaml")] + [
+    f"{ARTICLE_SPHERES_OUT}/spheres_render.png"]
+
+
+rule article_spheres:
+    input:
+        specular=spectrum_csv(ARTICLE_SPHERES["material"]),
+    output:
+        png=report(f"{ARTICLE_SPHERES_OUT}/spheres.png", caption="../report/article_spheres.rst",
+                   category="Article", subcategory="Pair of spheres"),
+        csv=report(f"{ARTICLE_SPHERES_OUT}/spheres.csv",
+                   caption="../report/article_spheres_table.rst",
+                   category="Article", subcategory="Pair of spheres"),
+        exr=f"{ARTICLE_SPHERES_OUT}/spheres.exr",
+        render=f"{ARTICLE_SPHERES_OUT}/spheres_render.png",
+        scene=f"{ARTICLE_SPHERES_OUT}/spheres.scene.yaml",
+        spectra=[f"{ARTICLE_SPHERES_OUT}/spheres_spectra/{ARTICLE_SPHERES['material']}.csv"] + [
+            f"{ARTICLE_SPHERES_OUT}/spheres_spectra/{s['name']}.csv"
+            for s in ARTICLE_SPHERES["spheres"]],
+    params:
+        fig=ARTICLE_SPHERES,
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/article/spheres.log",
+    script:
+        "../scripts/article_spheres.py"

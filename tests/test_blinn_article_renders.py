@@ -1,0 +1,323 @@
+"""Rendered figures of Blinn 1977 (Figs. 7, 8, the light sweep) and of the article (pair of spheres).
+
+The helpers of ``reflectance.blinn_scene`` are checked against Blinn's formulas written out here.
+Each figure script runs once, as Snakemake would run it, with the parameters of config.yaml at a
+small image size and outputs in a temporary directory; the images are then checked against what
+the paper's formulas say they must show (computed here, not taken from the scripts' tables).
+"""
+
+import copy
+import json
+import runpy
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from PIL import Image
+
+from reflectance.blinn_scene import (PHONG_SPECULAR_READINGS, light_direction, materials_Blinn1977,
+                                     write_constant_index_spectrum)
+from reflectance.imageio import read_exr
+from reflectance.spectra import load_material
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = yaml.safe_load((ROOT / "config.yaml").read_text())
+B77 = CONFIG["figures"]["blinn_1977"]
+WAVELENGTHS = CONFIG["wavelengths"]
+
+
+class Files(dict):
+    """Snakemake's input/output/params objects: items and attributes."""
+
+    __getattr__ = dict.__getitem__
+
+
+def run_script(name, tmp, params, output, input=None):
+    snakemake = Files(params=Files(params), output=Files(output), input=Files(input or {}),
+                      log=[str(tmp / f"{name}.log")], rule=name)
+    runpy.run_path(str(ROOT / "workflow" / "scripts" / name), init_globals={"snakemake": snakemake})
+
+
+def fresnel_sin_tan(phi, n):
+    """Blinn 1977's sin/tan Fresnel formula with its 1/2 (independent of the library's g, c form)."""
+    theta = np.arcsin(np.sin(phi) / n)
+    return 0.5 * (np.sin(phi - theta) ** 2 / np.sin(phi + theta) ** 2
+                  + np.tan(phi - theta) ** 2 / np.tan(phi + theta) ** 2)
+
+
+# --- reflectance.blinn_scene -------------------------------------------------------------------
+
+@pytest.mark.parametrize("n", [1.8, 200.0, 1.5])
+def test_constant_index_spectrum_gives_the_dielectric_fresnel(tmp_path, n):
+    from reflectance.fresnel import fresnel
+
+    write_constant_index_spectrum(tmp_path / "blinn.csv", n, [360.0, 830.0])
+    material = load_material("blinn", np.arange(360.0, 831.0, 5.0), tmp_path)
+    assert np.all(material.n == n) and np.all(material.k == 0)
+    np.testing.assert_allclose(material.F0, ((n - 1) / (n + 1)) ** 2, rtol=1e-12)
+    phi = np.radians([10.0, 45.0, 70.0, 85.0])
+    F = fresnel(np.cos(phi)[:, None], material.n, material.k, method="exact")
+    np.testing.assert_allclose(F, np.broadcast_to(fresnel_sin_tan(phi, n)[:, None], F.shape),
+                               rtol=1e-9)
+
+
+def test_constant_index_spectrum_rejects_bad_input(tmp_path):
+    with pytest.raises(ValueError, match="n must be"):
+        write_constant_index_spectrum(tmp_path / "x.csv", -1.0, [360, 830])
+    with pytest.raises(ValueError, match="wavelengths_nm"):
+        write_constant_index_spectrum(tmp_path / "x.csv", 1.5, [])
+
+
+@settings(max_examples=60, deadline=None)
+@given(angle=st.floats(0.0, 180.0), azimuth=st.floats(-360.0, 360.0),
+       eye=st.tuples(*[st.floats(-10, 10)] * 3).filter(lambda e: np.hypot(e[0], e[1]) > 0.5))
+def test_light_direction_makes_the_angle_with_the_eye(angle, azimuth, eye):
+    look_at = np.array([0.3, -0.2, 0.1])
+    L = light_direction(np.add(eye, look_at), look_at, (0, 0, 1), angle, azimuth)
+    E = np.asarray(eye) / np.linalg.norm(eye)
+    assert np.linalg.norm(L) == pytest.approx(1.0, abs=1e-12)
+    assert np.degrees(np.arccos(np.clip(L @ E, -1, 1))) == pytest.approx(angle, abs=1e-5)
+    if 1.0 < angle < 179.0:  # the azimuth: 90 degrees puts the light above the view axis
+        up = np.array([0.0, 0.0, 1.0]) - E[2] * E
+        right = np.cross(up, E)
+        measured = np.degrees(np.arctan2(L @ up / np.linalg.norm(up),
+                                         L @ right / np.linalg.norm(right)))
+        assert (measured - azimuth + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=1e-6)
+
+
+@pytest.mark.parametrize("c3", [0.2, 0.35, 0.5, 0.8])
+def test_phong_c1_halves_where_d3_halves(c3):
+    m = materials_Blinn1977(0.4, 0.6, c3, 200.0, "x")
+    cos_b = np.cos(np.radians(m["beta_deg"]))
+    assert (c3**2 / (cos_b**2 * (c3**2 - 1) + 1)) ** 2 == pytest.approx(0.5, rel=1e-9)  # Blinn D3
+    assert cos_b ** m["c1"] == pytest.approx(0.5, rel=1e-9)  # Blinn D1 = cos^c1
+    assert m["phong"]["c1"] == m["c1"] and m["torrance_sparrow"]["c3"] == c3
+
+
+def test_matched_phong_specular_is_p_s_times_normal_fresnel():
+    printed = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "x", "as_printed")
+    matched = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "x", "matched")
+    assert printed["phong"]["s"] == 0.667
+    assert matched["phong"]["s"] == pytest.approx(0.667 * (0.8 / 2.8) ** 2, rel=1e-12)
+    assert matched["torrance_sparrow"] == printed["torrance_sparrow"]
+    with pytest.raises(ValueError, match="known: " + ", ".join(PHONG_SPECULAR_READINGS)):
+        materials_Blinn1977(0.4, 0.6, 0.5, 200, "x", "printed")
+
+
+# --- Fig. 7 ---------------------------------------------------------------------------------------
+
+def _fig7_config():
+    fig = copy.deepcopy(B77["fig7"])
+    fig["camera"].update(width=192, height=128, supersample=1)
+    return fig
+
+
+@pytest.fixture(scope="module")
+def fig7(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("fig7")
+    fig = _fig7_config()
+    readings = fig["phong_specular_readings"]
+    stems = {key: str(tmp / f"fig7{key}")
+             for p in "ab" for light in ("edge", "front")
+             for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in readings]}
+    (tmp / "spectra").mkdir()
+    output = {"figures": [str(tmp / f"fig7_{r}.png") for r in readings], "csv": str(tmp / "fig7.csv"),
+              "spectra": [str(tmp / "spectra" / f"panel_{p}.csv") for p in "ab"]}
+    run_script("blinn_1977_fig7.py", tmp, {"fig": fig, "stems": stems, "wavelengths": WAVELENGTHS},
+               output)
+    Y = {key: read_exr(f"{stem}.exr")[0][..., 1] for key, stem in stems.items()}
+    return fig, Y, pd.read_csv(output["csv"]), tmp
+
+
+def test_fig7_writes_exr_png_and_a_scene_that_re_renders(fig7):
+    from reflectance.render import render
+    from reflectance.scene import load_scene
+
+    fig, Y, _, tmp = fig7
+    for key in Y:
+        assert (tmp / f"fig7{key}.png").stat().st_size > 0
+    scene = load_scene(tmp / "fig7b_torrance_sparrow_front.scene.yaml")
+    np.testing.assert_allclose(render(scene).XYZ[..., 1], Y["b_torrance_sparrow_front"],
+                               rtol=1e-6, atol=1e-7)  # the EXR holds float32
+
+
+def test_fig7_front_lit_models_agree_and_edge_lit_differ(fig7):
+    """Blinn: "both models essentially same" front lit; Torrance-Sparrow much brighter edge lit."""
+    _, Y, table, _ = fig7
+    for p in "ab":
+        ts_edge, ts_front = Y[f"{p}_torrance_sparrow_edge"], Y[f"{p}_torrance_sparrow_front"]
+        diff_front = np.abs(Y[f"{p}_phong_front_matched"] - ts_front).max()
+        diff_edge = np.abs(Y[f"{p}_phong_edge_matched"] - ts_edge).max()
+        assert diff_front < 0.1 * ts_front.max()
+        assert diff_edge > 0.25 and diff_edge > 5 * diff_front
+        assert ts_edge.max() > 1.5 * Y[f"{p}_phong_edge_matched"].max()
+        rows = table[(table.panel == p) & (table.phong_specular == "matched")].set_index("light")
+        assert rows.loc["front", "max_abs_difference"] == pytest.approx(diff_front, rel=1e-5)
+        assert rows.loc["edge", "max_abs_difference"] == pytest.approx(diff_edge, rel=1e-5)
+    # as printed, MgO's Phong highlight is p_s = 0.667 against T-S's p_s F0 = 0.054: not "same"
+    assert np.abs(Y["b_phong_front_as_printed"] - Y["b_torrance_sparrow_front"]).max() > 0.4
+
+
+@pytest.mark.parametrize("p", ["a", "b"])
+def test_fig7_front_lit_peak_is_blinns_intensity(fig7, p):
+    """At N = H, Blinn's i = p_a + p_d (N.L) + p_s s with N.L = E.H = cos(angle / 2): Phong s = 1,
+    Torrance-Sparrow s = D G F / (N.E) = F(E.H) / (E.H) (D = G = 1)."""
+    fig, Y, _, _ = fig7
+    q, c = fig["panels"][p], np.cos(np.radians(fig["lights"]["front"]["angle_deg"] / 2))
+    phong = fig["p_a"] + q["p_d"] * c + q["p_s"]
+    assert phong - 0.02 < Y[f"{p}_phong_front_as_printed"].max() < phong + 0.005
+    ts = fig["p_a"] + q["p_d"] * c + q["p_s"] * fresnel_sin_tan(np.arccos(c), q["n"]) / c
+    assert ts - 0.02 < Y[f"{p}_torrance_sparrow_front"].max() < ts + 0.01
+
+
+# --- the light sweep --------------------------------------------------------------------------
+
+def _run_sweep(tmp, n_frames=5):
+    fig7 = _fig7_config()
+    sweep = dict(B77["fig7_sweep"], n_frames=n_frames, size=64, supersample=1, contact_frames=4)
+    spectra = tmp / "spectra"
+    spectra.mkdir()
+    p = fig7["panels"][sweep["panel"]]
+    write_constant_index_spectrum(spectra / "index.csv", p["n"], [360, 830])
+    out = {"gif": str(tmp / "sweep.gif"), "contact": str(tmp / "sweep.png"), "csv": str(tmp / "sweep.csv")}
+    run_script("blinn_1977_fig7_sweep.py", tmp,
+               {"sweep": sweep, "fig7": fig7, "spectra_dir": str(spectra), "index_material": "index",
+                "wavelengths": WAVELENGTHS}, out)
+    return sweep, {k: Path(v) for k, v in out.items()}
+
+
+def test_sweep_gif_frames_and_determinism(tmp_path):
+    (tmp_path / "1").mkdir(), (tmp_path / "2").mkdir()
+    sweep, first = _run_sweep(tmp_path / "1")
+    _, second = _run_sweep(tmp_path / "2")
+    for key in first:
+        assert first[key].read_bytes() == second[key].read_bytes(), key
+    with Image.open(first["gif"]) as gif:
+        assert gif.n_frames == sweep["n_frames"] and gif.info["loop"] == 0
+        assert gif.info["duration"] == sweep["frame_ms"]
+        assert gif.size[0] == 2 * sweep["size"] + 4
+    table = pd.read_csv(first["csv"])
+    np.testing.assert_allclose(table.light_angle_deg, np.linspace(*sweep["angles_deg"], sweep["n_frames"]))
+    # front lit the models agree; toward the edge the Torrance-Sparrow highlight outgrows Phong's
+    assert table.max_abs_difference.iloc[0] < 0.05 < table.max_abs_difference.iloc[-1]
+    assert table.torrance_sparrow_max.iloc[-1] > 1.5 * table.phong_max.iloc[-1]
+
+
+# --- Fig. 8 ---------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def fig8(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("fig8")
+    fig7 = _fig7_config()
+    fig7["camera"].update(width=288, height=192)
+    fig = B77["fig8"]
+    write_constant_index_spectrum(tmp / "index.csv", fig7["panels"][fig["panel"]]["n"], [360, 830])
+    out = {"png": tmp / "fig8.png", "csv": tmp / "fig8.csv"}
+    out.update({f"{p}_{k}": tmp / f"fig8{p}.{ext}" for p in "ab"
+                for k, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
+    run_script("blinn_1977_fig8.py", tmp, {"fig": fig, "fig7": fig7, "wavelengths": WAVELENGTHS,
+                                           "n": fig7["panels"][fig["panel"]]["n"]},
+               {k: str(v) for k, v in out.items()}, {"spectrum": str(tmp / "index.csv")})
+    return fig, out
+
+
+@pytest.mark.parametrize("part", ["a", "b"])
+def test_fig8_texture_modulates_the_highlight(fig8, part):
+    """Blinn's D3 with C3 = C_min + (1 - C_min) t, normalised by C_min, against the untextured D3
+    of C_min: per sample the specular parts differ only by D, so their ratio is
+    [C_min C3 / (cos^2 a (C3^2 - 1) + 1)]^2 / [C_min^2 / (cos^2 a (C_min^2 - 1) + 1)]^2. The
+    texture lowers the peak (ratio (C_min / C3)^2 at a = 0) and widens the lobe (ratio > 1 far
+    from the highlight)."""
+    from reflectance.render import shade_samples, trace
+    from reflectance.scene import load_scene, scene_from_dict
+    from reflectance.texture import texture
+
+    fig, out = fig8
+    scene = load_scene(out[f"{part}_scene"])
+    document = yaml.safe_load(Path(out[f"{part}_scene"]).read_text())
+    material = document["objects"][0]["material"]
+    del material["roughness_texture"]
+    material["c3"] = c_min = fig["c_min"]
+    plain = scene_from_dict(document)
+    samples, shadowed, _ = trace(scene)
+    spec = {name: shade_samples(s, samples, shadowed, components=True)[1]["specular"][:, 1]
+            for name, s in (("texture", scene), ("plain", plain))}
+    lit = samples.hit & (spec["plain"] > 1e-6)
+    pattern = fig["patterns"][part]
+    c3 = c_min + (1 - c_min) * texture(samples.uv[lit, 0], samples.uv[lit, 1], pattern["method"],
+                                       **pattern["parameters"])
+    L = np.asarray(scene.lights[0].source.direction, dtype=float)
+    H = L / np.linalg.norm(L) + samples.view[lit]
+    H /= np.linalg.norm(H, axis=1, keepdims=True)
+    cos2 = np.einsum("ij,ij->i", samples.normal[lit], H) ** 2
+    expected = ((c_min * c3 / (cos2 * (c3**2 - 1) + 1)) / (c_min**2 / (cos2 * (c_min**2 - 1) + 1))) ** 2
+    ratio = spec["texture"][lit] / spec["plain"][lit]
+    np.testing.assert_allclose(ratio, expected, rtol=1e-6)
+    peak, far = cos2 > np.cos(np.radians(5.0)) ** 2, cos2 < np.cos(np.radians(30.0)) ** 2
+    assert peak.sum() > 20 and far.sum() > 20
+    assert ratio[peak].max() > 0.9 and ratio[peak].min() < 0.3  # shiny and dull in the highlight
+    assert ratio[far].max() > 5  # dull patches still reflect where the shiny lobe has fallen off
+
+
+def test_fig8_table_and_images(fig8):
+    fig, out = fig8
+    table = pd.read_csv(out["csv"])
+    assert list(table.method) == [fig["patterns"][p]["method"] for p in "ab"]
+    assert [json.loads(s) for s in table.parameters] == [fig["patterns"][p]["parameters"] for p in "ab"]
+    assert np.all(table.C3_min_on_map >= fig["c_min"] - 1e-12) and np.all(table.C3_max_on_map <= 1 + 1e-12)
+    for p in "ab":
+        XYZ, header = read_exr(out[f"{p}_exr"])
+        assert XYZ[..., 1].max() == pytest.approx(table.set_index("pattern").loc[p, "max_i"], rel=1e-5)
+
+
+# --- the article's pair of spheres ------------------------------------------------------------
+
+def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
+    import colour
+
+    from reflectance.spectra import read_spectrum_csv
+
+    fig = copy.deepcopy(CONFIG["figures"]["article"]["spheres"])
+    fig["camera"].update(width=160, height=100, supersample=1)
+    spectra = tmp_path / "spectra"
+    spectra.mkdir()
+    out = {"png": tmp_path / "spheres.png", "csv": tmp_path / "spheres.csv",
+           "exr": tmp_path / "spheres.exr", "render": tmp_path / "render.png",
+           "scene": tmp_path / "spheres.scene.yaml",
+           "spectra": [str(spectra / f"{fig['material']}.csv")]
+           + [str(spectra / f"{s['name']}.csv") for s in fig["spheres"]]}
+    run_script("article_spheres.py", tmp_path,
+               {"fig": fig, "wavelengths": WAVELENGTHS, "colour": CONFIG["colour"]},
+               {k: (v if isinstance(v, list) else str(v)) for k, v in out.items()},
+               {"specular": str(ROOT / "spectra" / f"{fig['material']}.csv")})
+    XYZ = read_exr(out["exr"])[0]
+    total = XYZ.sum(-1, keepdims=True)
+    xy = XYZ[..., :2] / np.where(total > 0, total, 1.0)
+    shape = colour.SpectralShape(360, 830, 5)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
+    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+
+    def xy_of(values):  # CIE 15:2004 tristimulus integration, by colour-science
+        sd = colour.SpectralDistribution(dict(zip(range(360, 835, 5), values)))
+        with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
+            return colour.XYZ_to_xy(colour.sd_to_XYZ(sd, cmfs, d65, shape=shape))
+
+    white = xy_of(np.ones(95))
+    width = XYZ.shape[1]
+    for k, s in enumerate(fig["spheres"]):  # spheres from left to right, one per image half
+        half = slice(k * width // 2, (k + 1) * width // 2)
+        Y, c = XYZ[:, half, 1], xy[:, half]
+        peak = np.unravel_index(np.argmax(Y), Y.shape)
+        table = read_spectrum_csv(spectra / f"{s['name']}.csv")
+        target = xy_of(np.interp(np.arange(360, 835, 5), table.wavelength_nm, table.reflectance))
+        body = (Y > 0) & (np.linalg.norm(c - white, axis=-1) > 0.5 * np.linalg.norm(target - white))
+        assert body.sum() > 100
+        # the highlight is close to white, much closer than the pigment's colour
+        assert np.linalg.norm(c[peak] - white) < 0.25 * np.linalg.norm(target - white)
+        # the body has the pigment's hue (angle around the white point)
+        hue = np.arctan2(*(c[body] - white).mean(0)[::-1])
+        assert np.degrees(abs(hue - np.arctan2(*(target - white)[::-1]))) < 8.0

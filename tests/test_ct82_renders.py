@@ -1,0 +1,240 @@
+"""Cook & Torrance 1982, Figs. 7 and 8 (rendered): each script runs once, as Snakemake would run
+it, with config.yaml's parameters at a small image size and outputs in a temporary directory; its
+tables and images are checked against config.yaml / Table I and against colour-science.
+"""
+
+import copy
+import runpy
+from pathlib import Path
+from types import SimpleNamespace
+
+import colour
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = yaml.safe_load((ROOT / "config.yaml").read_text())
+CT82 = CONFIG["figures"]["cook_torrance_1982"]
+TABLE1 = CT82["table1"]["rows"]
+SPECTRA = ROOT / "spectra"
+OBSERVER = "CIE 1931 2 Degree Standard Observer"
+VASES = ([m["material"] for m in CT82["fig7"]["metals"]] + [r["material"] for r in TABLE1]
+         + [f"{e['table1']}_{e['diffuse_material']}" for e in CT82["fig7"]["extras"]])
+
+
+def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
+    fig = copy.deepcopy(CT82["fig7"])
+    fig["vase_image"] = dict(zip(("width", "height", "supersample"), size))
+    out = SimpleNamespace(png=str(tmp / "fig7.png"), csv=str(tmp / "fig7.csv"),
+                          exrs=[str(tmp / f"{v}.exr") for v in VASES],
+                          scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES])
+    snakemake = SimpleNamespace(
+        input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")), output=out,
+        params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1,
+                               reference=CT82["fig6"]["ambient_readings"][reading],
+                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
+        log=[str(tmp / "fig7.log")], rule="ct82_fig7")
+    runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig7.py"),
+                   init_globals={"snakemake": snakemake})
+    return out
+
+
+def run_fig8(tmp, width=320, height=256, supersample=1):
+    fig = copy.deepcopy(CT82["fig8"])
+    fig["camera"].update(width=width, height=height, supersample=supersample)
+    out = SimpleNamespace(**{key: str(tmp / name) for key, name in (
+        ("png", "fig8.png"), ("csv", "fig8.csv"), ("exr", "fig8.exr"),
+        ("render_png", "fig8_render.png"), ("scene", "fig8.scene.yaml"))})
+    snakemake = SimpleNamespace(
+        input=SimpleNamespace(spectra=[str(SPECTRA / "Au.csv")]), output=out,
+        params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1,
+                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
+        log=[str(tmp / "fig8.log")], rule="ct82_fig8")
+    runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig8.py"),
+                   init_globals={"snakemake": snakemake})
+    return out
+
+
+@pytest.fixture(scope="module")
+def fig7(tmp_path_factory):
+    return run_fig7(tmp_path_factory.mktemp("ct82_fig7"))
+
+
+@pytest.fixture(scope="module")
+def fig8(tmp_path_factory):
+    return run_fig8(tmp_path_factory.mktemp("ct82_fig8"))
+
+
+def F0_colour_science(name):
+    """XYZ (D65 white Y = 1) of a material's normal reflectance, integrated by colour-science.
+
+    Measured materials: n, k interpolated linearly onto the 5 nm grid, F0 = ((n-1)^2 + k^2) /
+    ((n+1)^2 + k^2); derived ones: their reflectance.
+    """
+    grid = np.arange(CONFIG["wavelengths"]["start_nm"], CONFIG["wavelengths"]["end_nm"] + 1,
+                     CONFIG["wavelengths"]["step_nm"], dtype=float)
+    data = pd.read_csv(SPECTRA / f"{name}.csv")
+    if "n" in data:
+        n, k = (np.interp(grid, data.wavelength_nm, data[c]) for c in ("n", "k"))
+        F0 = ((n - 1) ** 2 + k ** 2) / ((n + 1) ** 2 + k ** 2)
+    else:
+        F0 = np.interp(grid, data.wavelength_nm, data.reflectance)
+    shape = colour.SpectralShape(grid[0], grid[-1], grid[1] - grid[0])
+    cmfs = colour.MSDS_CMFS[OBSERVER].copy().align(shape)  # the CMFs' own 1 nm values, sampled
+    D65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+    return colour.sd_to_XYZ(colour.SpectralDistribution(F0, grid), cmfs, D65,
+                            method="Integration") / 100
+
+
+def test_fig7_parameters_come_from_fig6b_and_table1(fig7):
+    table = pd.read_csv(fig7.csv, keep_default_na=False, na_values=[""])
+    assert list(table.vase) == VASES
+    b = CT82["fig6"]["panels"]["b"]
+    lobes = " ".join(f"{lobe['w']:g}x{lobe['m']:g}" for lobe in b["lobes"])
+    metals = table[table.group == "metal"]
+    assert list(metals.material) == [m["material"] for m in CT82["fig7"]["metals"]]
+    assert (metals.s == b["s"]).all() and (metals.d == b["d"]).all()
+    assert (metals.lobes == lobes).all() and metals.m.isna().all()
+    nonmetals = table[table.group == "nonmetal"].set_index("material")
+    assert list(nonmetals.index) == [r["material"] for r in TABLE1]
+    for row in TABLE1:
+        got = nonmetals.loc[row["material"]]
+        assert (got.s, got.d) == (row["s"], row["d"])
+        if row["m"] is None:  # "Not used": s = 0, a Lambertian d R_d
+            assert np.isnan(got.m) and got.model == "Lambert" and row["s"] == 0
+        else:
+            assert got.m == row["m"] and got.model == "CookTorrance1982"
+    extra = table[table.group == "extra"].iloc[0]
+    rust = next(r for r in TABLE1 if r["material"] == "Rust")
+    assert (extra.material, extra.diffuse_material) == ("Rust", "RustBody")
+    assert (extra.s, extra.d, extra.m) == (rust["s"], rust["d"], rust["m"])
+
+
+def test_fig7_diffuse_colour_is_F0_over_pi_by_colour_science(fig7):
+    table = pd.read_csv(fig7.csv).set_index("vase")
+    for vase, row in table.iterrows():
+        F0 = [row[f"F0_{c}"] for c in "XYZ"]
+        albedo = [row[f"albedo_{c}"] for c in "XYZ"]  # pi R_d
+        np.testing.assert_allclose(F0, F0_colour_science(row.material), rtol=5e-4)
+        np.testing.assert_allclose(albedo, F0_colour_science(row.diffuse_material), rtol=5e-4)
+        if row.group != "extra":  # "In every case ... R_d = F0/pi"
+            np.testing.assert_allclose(albedo, F0, rtol=1e-12)
+    # hematite's specular F0 is grey-blue (x, y below D65's 0.3127, 0.3290); its body colour is red
+    rust, body = F0_colour_science("Rust"), F0_colour_science("RustBody")
+    assert rust[0] / rust.sum() < 0.3127 and rust[1] / rust.sum() < 0.3290
+    assert body[0] / body.sum() > 0.35
+
+
+def test_fig7_one_exposure_for_the_whole_grid(fig7):
+    """The common scale puts the brightest colour of all vases at the display maximum."""
+    from reflectance.colorimetry import white_XYZ
+    from reflectance.imageio import read_exr
+
+    scale = pd.read_csv(fig7.csv).exposure_scale.unique()
+    assert len(scale) == 1
+    XYZ = np.concatenate([read_exr(path)[0].reshape(-1, 3) for path in fig7.exrs])
+    w = white_XYZ("D65", OBSERVER, np.arange(360, 831, 5.0))
+    sRGB = colour.RGB_COLOURSPACES["sRGB"].copy()
+    sRGB.use_derived_transformation_matrices(True)  # the primaries' matrix, not IEC's rounding
+    RGB = colour.XYZ_to_RGB(XYZ, sRGB, illuminant=w[:2] / w.sum(),
+                            chromatic_adaptation_transform="CAT02")
+    Y = RGB @ sRGB.matrix_RGB_to_XYZ[1]
+    assert scale[0] == pytest.approx(1 / RGB[np.argmax(Y)].max(), rel=1e-5)  # CSV: 6 digits
+
+
+def test_fig7_lunar_dust_is_cook_torrance_with_s_zero(fig7):
+    """m "Not used": the Lambert vase equals a Cook & Torrance vase with s = 0 and any m."""
+    from reflectance.imageio import read_exr
+    from reflectance.render import render
+    from reflectance.scene import scene_from_dict
+
+    document = yaml.safe_load(Path(fig7.scenes[VASES.index("LunarDust")]).read_text())
+    material = document["objects"][0]["material"]
+    material.update(model="CookTorrance1982", convention="paper", m=0.07)
+    XYZ = render(scene_from_dict(document)).XYZ
+    np.testing.assert_allclose(XYZ, read_exr(fig7.exrs[VASES.index("LunarDust")])[0],
+                               rtol=1e-6, atol=1e-12)
+
+
+
+
+def test_fig8_parts_and_materials_come_from_config(fig8):
+    table = pd.read_csv(fig8.csv).set_index("part")
+    parts = CT82["fig8"]["parts"]
+    for part, spec in parts.items():
+        if "table1" in spec:
+            spec = next(dict(r) for r in TABLE1 if r["material"] == spec["table1"])
+        assert table.loc[part, "material"] == spec["material"]
+        assert (table.loc[part, "s"], table.loc[part, "d"], table.loc[part, "m"]) == \
+            (spec["s"], spec["d"], spec["m"])
+    # "a rougher surface for the interior than for the border"; gold outer, steel inner band
+    assert table.loc["band_outer_interior", "m"] > table.loc["band_outer_border", "m"]
+    assert table.loc["band_outer_border", "material"] == "Au"
+    assert table.loc["band_inner", "material"] == "StainlessSteel"
+    assert (table.pixels > 0).all()  # every part is in view
+
+
+def led_pixels(scene_path):
+    """Pixels whose every sample sees an LED segment (the scene's own visibility)."""
+    from reflectance.scene import load_scene
+    from reflectance.visibility import visibility
+    from reflectance.watch import WATCH_PARTS
+
+    scene = load_scene(scene_path)
+    samples = visibility(scene.mesh, scene.camera)
+    part = np.where(samples.hit, scene.mesh.cell_data["part"][np.maximum(samples.triangle, 0)], -1)
+    return samples.to_pixels((part == WATCH_PARTS["led"]).astype(float)) == 1.0
+
+
+def test_fig8_led_pixels_show_dominant_wavelength_640(fig8):
+    """The displayed LED colour keeps the 640 nm dominant wavelength (colour-science's)."""
+    from PIL import Image
+
+    mask = led_pixels(fig8.scene)
+    assert mask.sum() > 50
+    encoded = np.asarray(Image.open(fig8.render_png), dtype=float)[mask] / 255
+    RGB = colour.cctf_decoding(encoded, function="sRGB")
+    sRGB = colour.RGB_COLOURSPACES["sRGB"]
+    XYZ = colour.RGB_to_XYZ(RGB, sRGB, illuminant=sRGB.whitepoint)
+    xy = colour.XYZ_to_xy(XYZ)
+    wl, _, _ = colour.dominant_wavelength(xy, sRGB.whitepoint, colour.MSDS_CMFS[OBSERVER])
+    target = CT82["fig8"]["led"]["dominant_wavelength_nm"]
+    assert np.all(np.abs(np.asarray(wl) - target) <= 3), np.unique(wl)
+    # and in the linear image the LED is the configured emission, Y = factor I d omega / pi
+    from reflectance.imageio import read_exr
+
+    light = CT82["fig8"]["light"]
+    Y = read_exr(fig8.exr)[0][mask][:, 1]
+    expected = CT82["fig8"]["led"]["luminance_factor"] * light["intensity"] * light["solid_angle"]
+    np.testing.assert_allclose(Y, expected / np.pi, rtol=1e-7)  # the EXR holds float32
+
+
+def test_fig8_scene_file_rerenders_the_exr(fig8):
+    """The scene YAML beside the image renders it again, bit for bit (in the EXR's float32)."""
+    from reflectance.imageio import read_exr
+    from reflectance.render import render
+    from reflectance.scene import load_scene
+
+    XYZ = read_exr(fig8.exr)[0]
+    assert XYZ.dtype == np.float32
+    np.testing.assert_array_equal(render(load_scene(fig8.scene)).XYZ.astype(np.float32), XYZ)
+
+
+def test_fig8_part_given_twice_is_rejected():
+    """A watch part is either a Table I row or explicit s, d, m (schema oneOf)."""
+    from reflectance.config import ConfigError, validate_schema
+
+    config = copy.deepcopy(CONFIG)
+    config["figures"]["cook_torrance_1982"]["fig8"]["parts"]["face"] = {"table1": "Obsidian",
+                                                                        "m": 0.2}
+    with pytest.raises(ConfigError, match="fig8.parts.face"):
+        validate_schema(config)
+
+
+def test_fig8_is_deterministic(fig8, tmp_path):
+    """The same config gives byte-identical files (EXR header, PNG, CSV, scene)."""
+    again = run_fig8(tmp_path)
+    for key in ("png", "csv", "exr", "render_png", "scene"):
+        assert Path(getattr(fig8, key)).read_bytes() == Path(getattr(again, key)).read_bytes(), key

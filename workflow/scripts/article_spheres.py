@@ -1,0 +1,79 @@
+"""Wikipedia, "Specular highlight": the image "Specular highlights on a pair of spheres", rendered.
+Two coloured plastic spheres (pigment reflectances recovered from Munsell notations; F of a
+measured clear coat, so the highlights are white) with the article's Cook-Torrance model, one
+directional light, a grey floor; C&T exposure (the brightest colour at the display maximum)."""
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import yaml
+
+from reflectance.colorimetry import tristimulus_weights
+from reflectance.io import atomic_write
+from reflectance.plotting import new_figure, savefig
+from reflectance.render import display_image, render, write_render
+from reflectance.scene import scene_from_dict
+from reflectance.scripting import script_log
+from reflectance.spectra import load_material, reflectance_from_munsell, wavelength_grid, write_spectrum_csv
+
+with script_log(snakemake) as log:
+    cfg, out, colour = snakemake.params.fig, snakemake.output, snakemake.params.colour
+    w = snakemake.params.wavelengths
+    grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
+    folder = Path(out.spectra[0]).parent  # this figure's materials: the clear coat and the pigments
+    with atomic_write(out.spectra[0]) as tmp:
+        shutil.copyfile(snakemake.input.specular, tmp)
+    for sphere, path in zip(cfg["spheres"], out.spectra[1:]):
+        write_spectrum_csv(reflectance_from_munsell(sphere["munsell"], cfg["recovery"]), path)
+    objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
+                                                 "radius": s["radius"]},
+                "material": {"name": cfg["material"], "diffuse_material": s["name"],
+                             "model": "CookTorrance1982", "distribution": cfg["distribution"],
+                             "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
+                             "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
+               for s in cfg["spheres"]]
+    objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
+                                                   "normal": [0, 0, 1], "size": [16, 16],
+                                                   "resolution": [32, 32]},
+                    "material": {"model": "Lambert", "convention": "physical",
+                                 "albedo": cfg["floor_albedo"]}})
+    doc = {"wavelengths": dict(w), "observer": colour["observer"], "spectra_dir": str(folder),
+           "camera": dict(cfg["camera"]), "objects": objects,
+           "lights": [{"type": "directional", **cfg["light"], "intensity": 1.0, "solid_angle": 1.0}],
+           "ambient": {"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
+           "display": {"space": colour["space"], "gamut_clip": colour["gamut_clip"],
+                       "png_bit_depth": colour["png_bit_depth"]}}
+    scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
+    with atomic_write(out.scene) as tmp:
+        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+    result = render(scene)
+    write_render(result, out.exr, out.render)
+    image, scale = display_image(result)
+    log.info("timings %s; exposure scale %.6g", result.timings, scale)
+
+    W = tristimulus_weights(grid, cfg["light"]["spectrum"], colour["observer"])
+    F0_Y = load_material(cfg["material"], grid, folder).F0 @ W[:, 1] / W[:, 1].sum()
+    rows = []
+    for s in cfg["spheres"]:
+        rho = load_material(s["name"], grid, folder).F0  # the pigment reflectance
+        X, Y, Z = rho @ W
+        rows.append({"sphere": s["name"], "munsell": s["munsell"], "recovery": cfg["recovery"],
+                     "albedo_Y": Y, "albedo_x": X / (X + Y + Z), "albedo_y": Y / (X + Y + Z),
+                     "clear_coat": cfg["material"], "clear_coat_F0_Y": F0_Y, "m": cfg["m"],
+                     "s": cfg["s"], "d": cfg["d"], "exposure_scale": scale})
+    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+
+    h, wd = (n / 100 for n in image.shape[:2])
+    fig = new_figure(wd + 0.2, h + 0.95)
+    ax = fig.add_axes((0.1 / (wd + 0.2), 0.1 / (h + 0.95), wd / (wd + 0.2), h / (h + 0.95)))
+    ax.imshow(image, interpolation="nearest")
+    ax.set_axis_off()
+    names = ", ".join(s["munsell"] for s in cfg["spheres"])
+    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: specular highlights on a pair of spheres\n"
+                 f"the article's Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}\n"
+                 f"clear coat F of {cfg['material']} over pigments Munsell {names}", fontsize=9,
+                 y=1 - 0.05 / (h + 0.95),
+                 va="top")
+    savefig(fig, out.png, dpi=100)

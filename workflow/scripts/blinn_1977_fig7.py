@@ -1,0 +1,105 @@
+"""Blinn 1977, Fig. 7: an object rendered with Phong's and the Torrance-Sparrow highlight, edge lit
+and front lit, (a) aluminium and (b) magnesium oxide with Blinn's measured parameters; Phong's c1
+from the beta of c3. Grey images whose Y is Blinn's intensity i = p_a + d p_d + s p_s (no exposure:
+i = 1 is display white). One figure per reading of Phong's p_s; a table of the differences."""
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import yaml
+
+from reflectance.blinn_scene import light_direction, materials_Blinn1977, write_constant_index_spectrum
+from reflectance.io import atomic_write
+from reflectance.plotting import new_figure, savefig
+from reflectance.render import display_image, render, write_render
+from reflectance.scene import scene_from_dict
+from reflectance.scripting import script_log
+from reflectance.spectra import wavelength_grid
+
+TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
+          "b": "Figure 7b  Simulation of magnesium oxide surface"}
+MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
+
+
+def scene_document(fig, material, light, wavelengths, spectra_dir):
+    """The scene (workflow/schemas/scene.schema.yaml) of one render."""
+    cam = fig["camera"]
+    L = light_direction(cam["position"], cam["look_at"], cam["up"], light["angle_deg"],
+                        light["azimuth_deg"])
+    return {"wavelengths": dict(wavelengths), "spectra_dir": str(spectra_dir), "camera": dict(cam),
+            "objects": [{"name": "object", "geometry": dict(fig["object"]), "material": material}],
+            "lights": [{"type": "directional", "direction": [float(x) for x in L],
+                        "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0}],
+            # Blinn's p_a: I_ia R_a with I_ia = p_a (a fraction of the light's intensity 1), R_a = 1
+            "ambient": {"fraction": fig["p_a"], "reference": "intensity"},
+            "display": {"expose": False, "gamut_clip": "dominant-wavelength"}}
+
+
+with script_log(snakemake) as log:
+    fig_cfg, stems, out = snakemake.params.fig, snakemake.params.stems, snakemake.output
+    w = snakemake.params.wavelengths
+    spectra_dir = Path(out.spectra[0]).parent
+    for path, panel in zip(out.spectra, ("a", "b")):
+        write_constant_index_spectrum(path, fig_cfg["panels"][panel]["n"],
+                                      wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"]))
+    images, Y, rows = {}, {}, []
+    for panel, path in zip(("a", "b"), out.spectra):
+        p = fig_cfg["panels"][panel]
+        for reading in fig_cfg["phong_specular_readings"]:
+            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], Path(path).stem, reading)
+            for light in ("edge", "front"):
+                for model in MODELS:
+                    key = (f"{panel}_torrance_sparrow_{light}" if model == "torrance_sparrow"
+                           else f"{panel}_phong_{light}_{reading}")
+                    if key in images:
+                        continue  # the Torrance-Sparrow renders do not depend on the reading
+                    doc = scene_document(fig_cfg, m[model], fig_cfg["lights"][light], w, spectra_dir)
+                    scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
+                    with atomic_write(f"{stems[key]}.scene.yaml") as tmp:
+                        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+                    result = render(scene)
+                    write_render(result, f"{stems[key]}.exr", f"{stems[key]}.png")
+                    images[key], Y[key] = display_image(result)[0], result.XYZ[..., 1]
+                    log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
+                ph, ts = Y[f"{panel}_phong_{light}_{reading}"], Y[f"{panel}_torrance_sparrow_{light}"]
+                diff, lit = np.abs(ph - ts), (ph > 0) | (ts > 0)
+                rows.append({"panel": panel, "label": p["label"], "phong_specular": reading,
+                             "light": light, **fig_cfg["lights"][light], "p_a": fig_cfg["p_a"],
+                             "p_s": p["p_s"], "p_d": p["p_d"], "n": p["n"], "c3": p["c3"],
+                             "beta_deg": m["beta_deg"], "c1": m["c1"], "phong_s": m["phong_s"],
+                             "phong_max": ph.max(), "torrance_sparrow_max": ts.max(),
+                             "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean()})
+    table = pd.DataFrame(rows)
+    table.to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+
+    h, wd = (n / 100 for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches at 100 dpi
+    gap, block, top, row_h = 0.05, 0.35, 0.7, h + 0.5  # row: title, image, difference line
+    W, H = 4 * wd + 3 * gap + block + 0.1, top + 2 * row_h + 0.05
+    for reading, png in zip(fig_cfg["phong_specular_readings"], out.figures):
+        fig = new_figure(W, H)
+        for k, panel in enumerate(("a", "b")):
+            x0 = 0.05 + k * (2 * wd + gap + block)
+            for j, light in enumerate(("edge", "front")):
+                y0 = H - top - (j + 1) * row_h + 0.3  # bottom of the image
+                for i, model in enumerate(MODELS):
+                    key = (f"{panel}_{model}_{light}" + (f"_{reading}" if model == "phong" else ""))
+                    ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
+                    ax.imshow(images[key], interpolation="nearest")
+                    ax.set_xticks([]), ax.set_yticks([])
+                    ax.set_title(f"{MODELS[model]}, {light} lit", fontsize=9, pad=3)
+                row = table[(table.panel == panel) & (table.phong_specular == reading)
+                            & (table.light == light)].iloc[0]
+                fig.text((x0 + wd + gap / 2) / W, (y0 - 0.06) / H,
+                         f"max |i_Phong \u2212 i_T-S| = {row.max_abs_difference:.3f}   (max i: Phong "
+                         f"{row.phong_max:.2f}, Torrance-Sparrow {row.torrance_sparrow_max:.2f})",
+                         ha="center", va="top", fontsize=8.5)
+            p = fig_cfg["panels"][panel]
+            fig.text((x0 + wd + gap / 2) / W, (H - 0.3) / H,
+                     f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
+                     f"c3 = {p['c3']:g} (\u03b2 = {row.beta_deg:.2f}\u00b0); Phong c1 = {row.c1:.2f}, "
+                     f"its p_s = {row.phong_s:.4g}", ha="center", va="top", fontsize=9.5)
+        fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 Phong's p_s {reading.replace('_', ' ')}; "
+                     f"p_a = {fig_cfg['p_a']:g}; intensity i = Y, i = 1 is white", fontsize=11,
+                     y=1 - 0.04 / H, va="top")
+        savefig(fig, png, dpi=100)

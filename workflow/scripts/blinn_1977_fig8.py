@@ -1,0 +1,84 @@
+"""Blinn 1977, Fig. 8: surface shininess varying with two texture patterns. The object of Fig. 7
+with Blinn's Torrance-Sparrow model, D3 with C3 = C_min + (1 - C_min) t(u, v) normalised by C_min
+(scene key roughness_texture), one oblique light; grey, i = 1 is white. Below each render, the
+C3 map over (u, v)."""
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import yaml
+
+from reflectance.blinn_scene import light_direction
+from reflectance.io import atomic_write
+from reflectance.microfacet import c3_texture_Blinn1977
+from reflectance.plotting import new_figure, savefig
+from reflectance.render import display_image, render, write_render
+from reflectance.scene import scene_from_dict
+from reflectance.scripting import script_log
+from reflectance.texture import texture
+
+with script_log(snakemake) as log:
+    cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output
+    cam = dict(fig7["camera"])
+    L = light_direction(cam["position"], cam["look_at"], cam["up"], cfg["light"]["angle_deg"],
+                        cfg["light"]["azimuth_deg"])
+    u, v = np.meshgrid(np.linspace(0, 1, 721), np.linspace(0, 1, 201))
+    images, maps, rows = {}, {}, []
+    for part in ("a", "b"):
+        pattern = cfg["patterns"][part]
+        material = {"name": Path(snakemake.input.spectrum).stem, "model": "TorranceSparrow_Blinn1977",
+                    "distribution": "TrowbridgeReitz1975", "convention": "paper", "fresnel": "exact",
+                    "s": cfg["p_s"], "d": cfg["p_d"], "albedo": 1.0,
+                    "roughness_texture": {"method": pattern["method"],
+                                          "parameters": dict(pattern["parameters"]),
+                                          "min": cfg["c_min"], "max": 1.0}}
+        doc = {"wavelengths": dict(snakemake.params.wavelengths),
+               "spectra_dir": str(Path(snakemake.input.spectrum).parent), "camera": cam,
+               "objects": [{"name": "object", "geometry": dict(fig7["object"]), "material": material}],
+               "lights": [{"type": "directional", "direction": [float(x) for x in L], "spectrum": "D65",
+                           "intensity": 1.0, "solid_angle": 1.0}],
+               "ambient": {"fraction": fig7["p_a"], "reference": "intensity"},
+               "display": {"expose": False}}
+        scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
+        with atomic_write(out[f"{part}_scene"]) as tmp:
+            Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+        result = render(scene)
+        write_render(result, out[f"{part}_exr"], out[f"{part}_png"])
+        images[part] = display_image(result)[0]
+        # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
+        maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),
+                                          cfg["c_min"])
+        Y = result.XYZ[..., 1]
+        rows.append({"pattern": part, "method": pattern["method"],
+                     "parameters": json.dumps(pattern["parameters"], sort_keys=True),
+                     "c_min": cfg["c_min"], "C3_min_on_map": maps[part].min(),
+                     "C3_max_on_map": maps[part].max(), "max_i": Y.max(), "mean_i": Y[Y > 0].mean()})
+        log.info("pattern %s: %s; timings %s", part, rows[-1], result.timings)
+    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+
+    h, w = (n / 100 for n in images["a"].shape[:2])  # inches at 100 dpi
+    mh, left, gap, top = w * 100 / 360, 0.45, 0.5, 0.95
+    W, H = left + 2 * w + gap + 0.15, top + h + mh + 0.85
+    fig = new_figure(W, H)
+    for k, part in enumerate(("a", "b")):
+        pattern, x = cfg["patterns"][part], left + k * (w + gap)
+        ax = fig.add_axes((x / W, (mh + 0.85) / H, w / W, h / H))
+        ax.imshow(images[part], interpolation="nearest")
+        ax.set_xticks([]), ax.set_yticks([])
+        ax.set_title(f"({part}) {pattern['method']}: " + ", ".join(
+            f"{key} {value:g}" for key, value in pattern["parameters"].items()), fontsize=9, pad=3)
+        ax = fig.add_axes((x / W, 0.4 / H, w / W, mh / H))
+        ax.imshow(maps[part], cmap="gray", vmin=0, vmax=1, origin="lower", extent=(0, 1, 0, 1),
+                  aspect="auto", interpolation="antialiased")
+        ax.set_xlabel("u (around the ring)", fontsize=8, labelpad=1)
+        ax.set_ylabel("v (tube)", fontsize=8, labelpad=1)
+        ax.tick_params(labelsize=7)
+        ax.set_title(f"C3(u, v): {cfg['c_min']:g} (black, shiny) to 1 (white, dull)", fontsize=8, pad=2)
+    fig.suptitle(f"Blinn 1977, Fig. 8 \u2014 surface shininess varying with two texture patterns\n"
+                 f"Torrance-Sparrow, D3 with C3 = C_min + (1 \u2212 C_min) t(u, v), C_min = {cfg['c_min']:g}\n"
+                 f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
+                 f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
+                 f"i = 1 is white", fontsize=9.5, y=1 - 0.05 / H, va="top")
+    savefig(fig, out.png, dpi=100)
