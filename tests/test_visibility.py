@@ -475,3 +475,21 @@ def test_sub_pixel_triangles_are_found_exactly():
         assert valid.any()
         assert np.isclose(t[valid].min(), np.linalg.norm(s.position[i] - eye), rtol=1e-6,
                           atol=1e-9)
+
+
+@pytest.mark.parametrize("height", [1.0, 0.05])
+def test_large_floor_under_the_camera_is_not_clipped_near_the_eye(height):
+    # two triangles 2000 units wide whose far corners are the only vertices ahead of the eye:
+    # the floor seen at the bottom of the image is far nearer than any of them
+    floor = plane((0, 0, 0), (0, 0, 1), (2000.0, 2000.0), (1, 1))
+    assert floor.n_cells == 2
+    cam = Camera((0, 0, height), (0, 5, 0), (0, 0, 1), 60.0, 48, 32)
+    s = visibility([(floor, 1)], cam)
+    eye, d = cam.rays()
+    t = -height / d[:, 2]  # the exact ray meets z = 0 at t > 0 iff it points down
+    with np.errstate(invalid="ignore"):
+        p = eye + t[:, None] * d
+    truth = (d[:, 2] < 0) & (np.abs(p[:, 0]) < 1000) & (np.abs(p[:, 1]) < 1000)
+    assert truth.mean() > 0.4  # the bottom half and more
+    np.testing.assert_array_equal(s.hit, truth)
+    np.testing.assert_allclose(s.depth[truth], t[truth], rtol=1e-9)
