@@ -1,6 +1,6 @@
 """Rendered figures of Blinn 1977 (Figs. 7, 8, the light sweep) and of the article (pair of spheres).
 
-The helpers of ``reflectance.blinn_scene`` are checked against Blinn's formulas written out here.
+The Blinn helpers of ``reflectance.scenes_from_config`` are checked against Blinn's formulas written out here.
 Each figure script runs once, as Snakemake would run it, with the parameters of config.yaml at a
 small image size and outputs in a temporary directory; the images are then checked against what
 the paper's formulas say they must show (computed here, not taken from the scripts' tables).
@@ -19,10 +19,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from PIL import Image
 
-from reflectance.blinn_scene import (PHONG_SPECULAR_READINGS, light_direction, materials_Blinn1977,
-                                     write_constant_index_spectrum)
 from reflectance.imageio import read_exr
-from reflectance.spectra import load_material
+from reflectance.scene import constant_index_material
+from reflectance.scenes_from_config import (PHONG_SPECULAR_READINGS, light_direction,
+                                            materials_Blinn1977)
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIG = yaml.safe_load((ROOT / "config.yaml").read_text())
@@ -49,27 +49,19 @@ def fresnel_sin_tan(phi, n):
                   + np.tan(phi - theta) ** 2 / np.tan(phi + theta) ** 2)
 
 
-# --- reflectance.blinn_scene -------------------------------------------------------------------
+# --- Blinn's helpers in reflectance.scenes_from_config ----------------------------------------
 
 @pytest.mark.parametrize("n", [1.8, 200.0, 1.5])
-def test_constant_index_spectrum_gives_the_dielectric_fresnel(tmp_path, n):
+def test_constant_index_material_gives_the_dielectric_fresnel(n):
     from reflectance.fresnel import fresnel
 
-    write_constant_index_spectrum(tmp_path / "blinn.csv", n, [360.0, 830.0])
-    material = load_material("blinn", np.arange(360.0, 831.0, 5.0), tmp_path)
+    material = constant_index_material(n, 0.0, np.arange(360.0, 831.0, 5.0))
     assert np.all(material.n == n) and np.all(material.k == 0)
     np.testing.assert_allclose(material.F0, ((n - 1) / (n + 1)) ** 2, rtol=1e-12)
     phi = np.radians([10.0, 45.0, 70.0, 85.0])
     F = fresnel(np.cos(phi)[:, None], material.n, material.k, method="exact")
     np.testing.assert_allclose(F, np.broadcast_to(fresnel_sin_tan(phi, n)[:, None], F.shape),
                                rtol=1e-9)
-
-
-def test_constant_index_spectrum_rejects_bad_input(tmp_path):
-    with pytest.raises(ValueError, match="n must be"):
-        write_constant_index_spectrum(tmp_path / "x.csv", -1.0, [360, 830])
-    with pytest.raises(ValueError, match="wavelengths_nm"):
-        write_constant_index_spectrum(tmp_path / "x.csv", 1.5, [])
 
 
 @settings(max_examples=60, deadline=None)
@@ -91,7 +83,7 @@ def test_light_direction_makes_the_angle_with_the_eye(angle, azimuth, eye):
 
 @pytest.mark.parametrize("c3", [0.2, 0.35, 0.5, 0.8])
 def test_phong_c1_halves_where_d3_halves(c3):
-    m = materials_Blinn1977(0.4, 0.6, c3, 200.0, "x")
+    m = materials_Blinn1977(0.4, 0.6, c3, 200.0)
     cos_b = np.cos(np.radians(m["beta_deg"]))
     assert (c3**2 / (cos_b**2 * (c3**2 - 1) + 1)) ** 2 == pytest.approx(0.5, rel=1e-9)  # Blinn D3
     assert cos_b ** m["c1"] == pytest.approx(0.5, rel=1e-9)  # Blinn D1 = cos^c1
@@ -99,13 +91,13 @@ def test_phong_c1_halves_where_d3_halves(c3):
 
 
 def test_matched_phong_specular_is_p_s_times_normal_fresnel():
-    printed = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "x", "as_printed")
-    matched = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "x", "matched")
+    printed = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "as_printed")
+    matched = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "matched")
     assert printed["phong"]["s"] == 0.667
     assert matched["phong"]["s"] == pytest.approx(0.667 * (0.8 / 2.8) ** 2, rel=1e-12)
     assert matched["torrance_sparrow"] == printed["torrance_sparrow"]
     with pytest.raises(ValueError, match="known: " + ", ".join(PHONG_SPECULAR_READINGS)):
-        materials_Blinn1977(0.4, 0.6, 0.5, 200, "x", "printed")
+        materials_Blinn1977(0.4, 0.6, 0.5, 200, "printed")
 
 
 # --- Fig. 7 ---------------------------------------------------------------------------------------
@@ -124,9 +116,7 @@ def fig7(tmp_path_factory):
     stems = {key: str(tmp / f"fig7{key}")
              for p in "ab" for light in ("edge", "front")
              for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in readings]}
-    (tmp / "spectra").mkdir()
-    output = {"figures": [str(tmp / f"fig7_{r}.png") for r in readings], "csv": str(tmp / "fig7.csv"),
-              "spectra": [str(tmp / "spectra" / f"panel_{p}.csv") for p in "ab"]}
+    output = {"figures": [str(tmp / f"fig7_{r}.png") for r in readings], "csv": str(tmp / "fig7.csv")}
     run_script("blinn_1977_fig7.py", tmp, {"fig": fig, "stems": stems, "wavelengths": WAVELENGTHS},
                output)
     Y = {key: read_exr(f"{stem}.exr")[0][..., 1] for key, stem in stems.items()}
@@ -179,14 +169,9 @@ def test_fig7_front_lit_peak_is_blinns_intensity(fig7, p):
 def _run_sweep(tmp, n_frames=5):
     fig7 = _fig7_config()
     sweep = dict(B77["fig7_sweep"], n_frames=n_frames, size=64, supersample=1, contact_frames=4)
-    spectra = tmp / "spectra"
-    spectra.mkdir()
-    p = fig7["panels"][sweep["panel"]]
-    write_constant_index_spectrum(spectra / "index.csv", p["n"], [360, 830])
     out = {"gif": str(tmp / "sweep.gif"), "contact": str(tmp / "sweep.png"), "csv": str(tmp / "sweep.csv")}
     run_script("blinn_1977_fig7_sweep.py", tmp,
-               {"sweep": sweep, "fig7": fig7, "spectra_dir": str(spectra), "index_material": "index",
-                "wavelengths": WAVELENGTHS}, out)
+               {"sweep": sweep, "fig7": fig7, "wavelengths": WAVELENGTHS}, out)
     return sweep, {k: Path(v) for k, v in out.items()}
 
 
@@ -215,13 +200,12 @@ def fig8(tmp_path_factory):
     fig7 = _fig7_config()
     fig7["camera"].update(width=288, height=192)
     fig = B77["fig8"]
-    write_constant_index_spectrum(tmp / "index.csv", fig7["panels"][fig["panel"]]["n"], [360, 830])
     out = {"png": tmp / "fig8.png", "csv": tmp / "fig8.csv"}
     out.update({f"{p}_{k}": tmp / f"fig8{p}.{ext}" for p in "ab"
                 for k, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
     run_script("blinn_1977_fig8.py", tmp, {"fig": fig, "fig7": fig7, "wavelengths": WAVELENGTHS,
                                            "n": fig7["panels"][fig["panel"]]["n"]},
-               {k: str(v) for k, v in out.items()}, {"spectrum": str(tmp / "index.csv")})
+               {k: str(v) for k, v in out.items()})
     return fig, out
 
 
@@ -283,17 +267,18 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
 
     fig = copy.deepcopy(CONFIG["figures"]["article"]["spheres"])
     fig["camera"].update(width=160, height=100, supersample=1)
-    spectra = tmp_path / "spectra"
-    spectra.mkdir()
+    spectra = ROOT / "spectra"
     out = {"png": tmp_path / "spheres.png", "csv": tmp_path / "spheres.csv",
            "exr": tmp_path / "spheres.exr", "render": tmp_path / "render.png",
-           "scene": tmp_path / "spheres.scene.yaml",
-           "spectra": [str(spectra / f"{fig['material']}.csv")]
-           + [str(spectra / f"{s['name']}.csv") for s in fig["spheres"]]}
+           "scene": tmp_path / "spheres.scene.yaml"}
+    pigments = {s["diffuse_material"]: CONFIG["materials"][s["diffuse_material"]]
+                for s in fig["spheres"]}
     run_script("article_spheres.py", tmp_path,
-               {"fig": fig, "wavelengths": WAVELENGTHS, "colour": CONFIG["colour"]},
-               {k: (v if isinstance(v, list) else str(v)) for k, v in out.items()},
-               {"specular": str(ROOT / "spectra" / f"{fig['material']}.csv")})
+               {"fig": fig, "pigments": pigments, "wavelengths": WAVELENGTHS,
+                "colour": CONFIG["colour"]},
+               {k: str(v) for k, v in out.items()},
+               {"spectra": [str(spectra / f"{fig['material']}.csv")]
+                + [str(spectra / f"{s['diffuse_material']}.csv") for s in fig["spheres"]]})
     XYZ = read_exr(out["exr"])[0]
     total = XYZ.sum(-1, keepdims=True)
     xy = XYZ[..., :2] / np.where(total > 0, total, 1.0)
@@ -312,7 +297,7 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         half = slice(k * width // 2, (k + 1) * width // 2)
         Y, c = XYZ[:, half, 1], xy[:, half]
         peak = np.unravel_index(np.argmax(Y), Y.shape)
-        table = read_spectrum_csv(spectra / f"{s['name']}.csv")
+        table = read_spectrum_csv(spectra / f"{s['diffuse_material']}.csv")
         target = xy_of(np.interp(np.arange(360, 835, 5), table.wavelength_nm, table.reflectance))
         body = (Y > 0) & (np.linalg.norm(c - white, axis=-1) > 0.5 * np.linalg.norm(target - white))
         assert body.sum() > 100

@@ -102,8 +102,8 @@ def test_fig7_parameters_come_from_fig6b_and_table1(fig7):
     for row in TABLE1:
         got = nonmetals.loc[row["material"]]
         assert (got.s, got.d) == (row["s"], row["d"])
-        if row["m"] is None:  # "Not used": s = 0, a Lambertian d R_d
-            assert np.isnan(got.m) and got.model == "Lambert" and row["s"] == 0
+        if row["m"] is None:  # "Not used": C&T with s = 0, R = d R_d
+            assert np.isnan(got.m) and got.model == "CookTorrance1982" and row["s"] == 0
         else:
             assert got.m == row["m"] and got.model == "CookTorrance1982"
     extra = table[table.group == "extra"].iloc[0]

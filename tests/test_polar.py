@@ -12,7 +12,11 @@ from reflectance.polar import (direction_from_angles, intensity_in_plane_of_inci
 
 
 def fresnel_sin_tan(phi, n):
-    """Blinn 1977's first Fresnel formula: 1/2 (sin^2(phi - theta)/sin^2(phi + theta) + tan^2/tan^2)."""
+    """Blinn 1977's first Fresnel formula: 1/2 (sin^2(phi - theta)/sin^2(phi + theta) + tan^2/tan^2).
+
+    At normal incidence (phi = 0) the form is 0/0; its limit is ((n - 1)/(n + 1))^2."""
+    if phi == 0:
+        return ((n - 1) / (n + 1)) ** 2
     theta = np.arcsin(np.sin(phi) / n)
     return 0.5 * (np.sin(phi - theta) ** 2 / np.sin(phi + theta) ** 2
                   + np.tan(phi - theta) ** 2 / np.tan(phi + theta) ** 2)

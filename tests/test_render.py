@@ -127,8 +127,9 @@ def test_supersampling_converges(spectra):
 
 
 def test_table_is_within_dE2000_001_of_brute_force_on_the_copper_vase(root, spectra):
-    scene = load_scene(root / "workflow" / "scenes" / "copper_vase.yaml", spectra_dir=spectra,
-                       width=48, height=64, supersample=2)
+    from reflectance.bench import load_bench_scene
+
+    scene = load_bench_scene(None, spectra_dir=spectra, width=48, height=64, supersample=2)
     table = render(scene, spectral="table").XYZ
     brute = render(scene, spectral="brute-force").XYZ
     # CIELAB of both on one scale (the brute-force image's peak luminance at L* = 100)

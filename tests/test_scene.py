@@ -3,6 +3,7 @@
 import copy
 
 import numpy as np
+import pandas as pd
 import pytest
 import yaml
 
@@ -206,3 +207,47 @@ def test_watch_geometry_takes_the_builder_parameters(spectra):
     doc = minimal(objects=[{"geometry": {"type": "watch", "parameters": {"dial": 3}},
                             "material": {"name": "Au", "m": 0.2}}])
     assert "objects[0].geometry: " in errors_of(doc, spectra)
+
+
+# --- constant complex index materials (scene key `index`) -------------------------------------
+
+@pytest.mark.parametrize("n, k", [(1.8, 0.0), (200.0, 0.0), (0.27, 3.4)])
+def test_index_material_equals_a_flat_spectrum_file(tmp_path, n, k):
+    """`index: {n, k}` gives the material that a CSV of the same n, k at every wavelength gives."""
+    from reflectance.spectra import write_spectrum_csv
+
+    write_spectrum_csv(pd.DataFrame({"wavelength_nm": [300.0, 900.0], "n": n, "k": k}),
+                       tmp_path / "flat.csv")
+    base = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30, "width": 8,
+                       "height": 8},
+            "lights": [{"type": "directional", "direction": [0, -1, 1]}]}
+    scenes = [scene_from_dict({**base, "spectra_dir": str(tmp_path), "objects": [
+        {"geometry": {"type": "sphere", "radius": 1}, "material": dict(material, s=0.5, m=0.2)}]})
+        for material in ({"name": "flat"}, {"index": {"n": n, "k": k}})]
+    a, b = (s.objects[0].material for s in scenes)
+    for key in ("n", "k", "albedo"):
+        np.testing.assert_array_equal(getattr(a, key), getattr(b, key))
+    assert np.all(b.n == n) and np.all(b.k == k)
+    # F0 = ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) at normal incidence (Fresnel)
+    np.testing.assert_allclose(b.albedo, ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2), rtol=1e-12)
+
+
+def test_index_and_name_together_are_an_error(spectra):
+    document = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30,
+                           "width": 8, "height": 8}, "lights": [],
+                "objects": [{"geometry": {"type": "sphere", "radius": 1},
+                             "material": {"name": "Cu", "index": {"n": 1.5}, "m": 0.2}}]}
+    with pytest.raises(SceneError, match="either 'name'.*or 'index'"):
+        scene_from_dict(document, spectra_dir=spectra)
+
+
+def test_cook_torrance_with_s_0_needs_no_m(spectra):
+    """Cook & Torrance 1982 Table I: m "not used" for a material with s = 0."""
+    document = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30,
+                           "width": 8, "height": 8}, "lights": [],
+                "objects": [{"geometry": {"type": "sphere", "radius": 1},
+                             "material": {"name": "Cu", "s": 0.0, "d": 1.0}}]}
+    assert scene_from_dict(document, spectra_dir=spectra).objects[0].material.roughness is None
+    document["objects"][0]["material"].update(s=0.5, d=0.5)
+    with pytest.raises(SceneError, match="needs 'm'"):
+        scene_from_dict(document, spectra_dir=spectra)

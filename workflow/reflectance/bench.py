@@ -1,7 +1,8 @@
 """Speed and memory of the renderer: ``reflectance bench``.
 
-For a scene (default: the copper vase of Cook & Torrance 1982, Fig. 6b,
-``workflow/scenes/copper_vase.yaml``) rendered square at several sizes with n x n supersampling,
+For a scene (default: the copper vase of Cook & Torrance 1982, Fig. 6b, built from config.yaml's
+``figures.cook_torrance_1982.fig6`` with the ``irradiance`` ambient reading, as the figure renders
+it: :func:`reflectance.scenes_from_config.fig6_scene_CookTorrance1982`) rendered square at several sizes with n x n supersampling,
 each size runs in its own Python process (so that its peak resident memory, ``ru_maxrss``, which
 includes VTK's, belongs to that size alone) and reports:
 
@@ -27,10 +28,10 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["DEFAULT_SCENE", "bench_size", "run_bench", "format_report"]
+__all__ = ["DEFAULT_SCENE", "load_bench_scene", "bench_size", "run_bench", "format_report"]
 
-DEFAULT_SCENE = Path(__file__).resolve().parents[1] / "scenes" / "copper_vase.yaml"
-"""The scene benchmarked by default (Cook & Torrance 1982, Fig. 6b)."""
+DEFAULT_SCENE = None
+"""The scene benchmarked by default: None, Cook & Torrance 1982 Fig. 6b from config.yaml."""
 
 DEFAULT_SPECTRA_DIR = Path(__file__).resolve().parents[2] / "spectra"
 
@@ -39,17 +40,38 @@ def _peak_MiB():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
 
 
+def load_bench_scene(scene_path=DEFAULT_SCENE, spectra_dir=None, width=None, height=None,
+                     supersample=None, spectral=None, wavelengths=None):
+    """The benchmarked scene: a scene file, or (None) Fig. 6b of config.yaml; with overrides as
+    :func:`reflectance.scene.load_scene` takes them."""
+    from reflectance.scene import load_scene, scene_from_dict
+    from reflectance.scenes_from_config import fig6_scene_CookTorrance1982
+
+    overrides = {"width": width, "height": height, "supersample": supersample,
+                 "spectral": spectral, "wavelengths": wavelengths}
+    if scene_path is not None:
+        return load_scene(scene_path, spectra_dir=spectra_dir, **overrides)
+    doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra_dir)
+    doc["camera"].update({k: v for k, v in overrides.items()
+                          if k in ("width", "height", "supersample") and v is not None})
+    if spectral is not None:
+        doc["spectral"] = spectral
+    if wavelengths is not None:
+        doc["wavelengths"] = dict(wavelengths)
+    return scene_from_dict(doc, source="config.yaml figures.cook_torrance_1982.fig6 panel b "
+                                       "(irradiance)")
+
+
 def bench_size(scene_path, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
                spectra_dir=None):
     """Measurements for one image size, in this process (see :func:`run_bench`)."""
     from reflectance.colorimetry import tristimulus_weights
     from reflectance.render import image_difference_CIEDE2000, shade_samples, trace
-    from reflectance.scene import load_scene
     from reflectance.shading import fresnel_XYZ_table
 
     t0 = time.perf_counter()
-    scene = load_scene(scene_path, spectra_dir=spectra_dir, width=size, height=size,
-                       supersample=supersample, spectral="table")
+    scene = load_bench_scene(scene_path, spectra_dir=spectra_dir, width=size, height=size,
+                             supersample=supersample, spectral="table")
     load_s = time.perf_counter() - t0
     times = {"visibility": [], "shadows": [], "shading": []}
     for _ in range(runs):
@@ -87,10 +109,10 @@ def bench_size(scene_path, size, supersample=2, runs=5, brute_force_runs=1, grid
     grid_rows = []
     for step in grids_nm:
         w = scene.document["wavelengths"]
-        other = load_scene(scene_path, spectra_dir=spectra_dir, width=size, height=size,
-                           supersample=supersample,
-                           wavelengths={"start_nm": w["start_nm"], "end_nm": w["end_nm"],
-                                        "step_nm": step})
+        other = load_bench_scene(scene_path, spectra_dir=spectra_dir, width=size, height=size,
+                                 supersample=supersample,
+                                 wavelengths={"start_nm": w["start_nm"], "end_nm": w["end_nm"],
+                                              "step_nm": step})
         row = {"step_nm": step, "wavelengths": len(other.wavelengths)}
         W = tristimulus_weights(other.wavelengths, other.lights[0].spectrum, other.observer)
         t1 = time.perf_counter()
@@ -115,7 +137,7 @@ def run_bench(scene_path=DEFAULT_SCENE, sizes=(256, 512, 1024), supersample=2, r
     spectra_dir = str(spectra_dir or DEFAULT_SPECTRA_DIR)
     results = []
     for size in sizes:
-        job = {"scene_path": str(scene_path), "size": int(size), "supersample": supersample,
+        job = {"scene_path": None if scene_path is None else str(scene_path), "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
                "grids_nm": list(grids_nm) if size == grid_size else [],
                "spectra_dir": spectra_dir}

@@ -401,7 +401,7 @@ def _add_bench(sub):
                     "second, peak resident memory, brute-force per-wavelength shading against "
                     "the per-angle table (speed ratio, CIEDE2000), and the shading time on 5 nm "
                     "and 1 nm wavelength grids.")
-    p.add_argument("--scene", help="scene file (default: workflow/scenes/copper_vase.yaml)")
+    p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=int, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels (default 256 512 1024)")
     p.add_argument("--supersample", type=int, default=2, help="n x n samples per pixel")

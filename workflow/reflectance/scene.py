@@ -12,6 +12,7 @@ built and spectra resolved onto the wavelength grid, ready for :func:`reflectanc
 from __future__ import annotations
 
 import copy
+import functools
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -20,13 +21,14 @@ import numpy as np
 import yaml
 
 from reflectance.colorimetry import cmfs, illuminant_sd
+from reflectance.fresnel import F0_from_nk
 from reflectance.geometry import (VASE_PARTS, compose, mesh_from_file, place, plane, sphere,
                                   superellipsoid_Barr1981, torus, vase)
 from reflectance.microfacet import ROUGHNESS_PARAMETERS
 from reflectance.shading import (SHADING_MODELS, Ambient, Light, RoughnessTexture,
                                  ShadingMaterial, emission_XYZ)
 from reflectance.texture import texture
-from reflectance.spectra import load_material, wavelength_grid
+from reflectance.spectra import Material, load_material, wavelength_grid
 from reflectance.visibility import Camera, as_light
 from reflectance.watch import WATCH_PARTS, watch
 
@@ -41,6 +43,8 @@ __all__ = [
     "validate_scene",
     "scene_from_dict",
     "load_scene",
+    "write_scene_file",
+    "constant_index_material",
 ]
 
 SCENE_SCHEMA_PATH = Path(__file__).resolve().parents[1] / "schemas" / "scene.schema.yaml"
@@ -74,17 +78,23 @@ def _with_defaults(validator_class):
     return validators.extend(validator_class, {"properties": properties})
 
 
-def validate_scene(document, source="<scene>"):
-    """A copy of ``document`` with the schema's defaults filled in; SceneError listing every
-    violation by key."""
+@functools.lru_cache(maxsize=1)
+def _validator():
+    """The schema's validator (that fills in defaults), read once per process."""
     import jsonschema
 
     schema = yaml.safe_load(SCENE_SCHEMA_PATH.read_text())
+    return _with_defaults(jsonschema.Draft202012Validator)(schema)
+
+
+def validate_scene(document, source="<scene>"):
+    """A copy of ``document`` with the schema's defaults filled in; SceneError listing every
+    violation by key."""
     if not isinstance(document, dict):
         raise SceneError(f"{source}: a scene must be a mapping of keys, got "
                          f"{type(document).__name__}")
     document = copy.deepcopy(document)
-    validator = _with_defaults(jsonschema.Draft202012Validator)(schema)
+    validator = _validator()
     errors = list(validator.iter_errors(document))
     if errors:
         # the deepest (most specific) errors first; if/then wrappers add nothing
@@ -208,6 +218,26 @@ def _spectral_material(check, path, name, grid, spectra_dir, cache):
     return cache[name]
 
 
+def index_label(index):
+    """The name of a constant-index material, e.g. ``"n = 1.8, k = 0"``."""
+    return f"n = {index['n']:g}, k = {index['k']:g}"
+
+
+def constant_index_material(n, k, grid):
+    """A :class:`reflectance.spectra.Material` of wavelength-independent index ``n + i k``.
+
+    What a material CSV with the same ``n, k`` at every wavelength gives (scene key ``index``:
+    e.g. Blinn 1977's scalar n = 200 for aluminium, 1.8 for magnesium oxide).
+    """
+    grid = np.asarray(grid, dtype=np.float64)
+    n_, k_ = np.full(grid.shape, float(n)), np.full(grid.shape, float(k))
+    for a in (grid, n_, k_):
+        a.setflags(write=False)
+    F0 = np.asarray(F0_from_nk(n_, k_), dtype=np.float64)
+    F0.setflags(write=False)
+    return Material(index_label({"n": n, "k": k}), "measured", grid, n_, k_, F0)
+
+
 def _material(check, path, m, grid, spectra_dir, cache, observer):
     """A ShadingMaterial from a validated material mapping (None if something is wrong)."""
     model = m["model"]
@@ -225,18 +255,26 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
         check.add(path + ["s"], "a Lambert material has no specular part: s must be 0")
     ok = True
 
+    # the specular material: a material of spectra/ (name) or a constant complex index (index)
+    specular = None
+    if "name" in m and "index" in m:
+        check.add(path, "give either 'name' (a material of spectra/) or 'index' (a constant "
+                        "n, k), not both")
+        ok = False
+    elif "index" in m:
+        specular = constant_index_material(m["index"]["n"], m["index"]["k"], grid)
+    elif "name" in m:
+        specular = _spectral_material(check, path + ["name"], m["name"], grid, spectra_dir,
+                                      cache)
+        ok &= specular is not None
     n = k = None
     if spec["fresnel"] and s > 0:
-        if "name" not in m:
+        if "name" not in m and "index" not in m:
             check.add(path, f"model {model} with s > 0 needs 'name' (the material whose n, k "
-                            "give F)")
+                            "give F) or 'index'")
             ok = False
-        else:
-            found = _spectral_material(check, path + ["name"], m["name"], grid, spectra_dir,
-                                       cache)
-            ok &= found is not None
-            if found is not None:
-                n, k = found.n, found.k
+        elif specular is not None:
+            n, k = specular.n, specular.k
 
     albedo = 0.0
     if "albedo" in m:
@@ -245,16 +283,18 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
             ok = False
         albedo = float(m["albedo"])
     else:
-        diffuse = m.get("diffuse_material", m.get("name"))
-        if diffuse is not None:
-            found = _spectral_material(check, path + ["diffuse_material" if "diffuse_material"
-                                                      in m else "name"],
-                                       diffuse, grid, spectra_dir, cache)
-            ok &= found is not None
-            if found is not None:
-                albedo = found.F0  # Cook & Torrance 1982, Fig. 7: R_d = F0 / pi
-        elif d > 0:
-            check.add(path, "a diffuse part (d > 0) needs 'diffuse_material', 'albedo' or 'name'")
+        if "diffuse_material" in m:
+            found = _spectral_material(check, path + ["diffuse_material"], m["diffuse_material"],
+                                       grid, spectra_dir, cache)
+        else:
+            found = specular  # the specular material's own F0 (name or index)
+        if found is not None:
+            albedo = found.F0  # Cook & Torrance 1982, Fig. 7: R_d = F0 / pi
+        elif "diffuse_material" in m:
+            ok = False
+        elif d > 0 and "name" not in m:
+            check.add(path, "a diffuse part (d > 0) needs 'diffuse_material', 'albedo', 'name' "
+                            "or 'index'")
             ok = False
 
     distribution, roughness, lobes, rough_texture = m["distribution"], None, None, None
@@ -280,7 +320,8 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
                                                         "distribution, not lobes")
                 ok = False
         elif "roughness_texture" not in m:
-            if key not in m:
+            # Cook & Torrance 1982, Table I: m "not used" where s = 0 (no specular part)
+            if key not in m and s > 0:
                 check.add(path, f"distribution {distribution} needs '{key}' (or 'lobes')")
                 ok = False
             roughness = m.get(key)
@@ -333,7 +374,8 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
                      n=n, k=k, fresnel=m["fresnel"], albedo=albedo, distribution=distribution,
                      roughness=roughness, lobes=lobes, texture=rough_texture,
                      shadowing=m["shadowing"], emission=emission,
-                     name=m.get("name", m.get("diffuse_material", "")))
+                     name=m.get("name", index_label(m["index"]) if "index" in m
+                                else m.get("diffuse_material", "")))
 
 
 def _geometry(check, path, g, transform, base):
@@ -479,3 +521,12 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
             document["wavelengths"] = dict(wavelengths)
     return scene_from_dict(document, source=str(path), base_dir=path.parent,
                            spectra_dir=spectra_dir)
+
+
+def write_scene_file(scene, path):
+    """Write the validated scene (defaults filled in) as YAML, atomically; ``reflectance render``
+    re-renders it."""
+    from reflectance.io import atomic_write
+
+    with atomic_write(path) as tmp:
+        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))

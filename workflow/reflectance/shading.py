@@ -172,6 +172,9 @@ class ShadingMaterial:
                              f"{', '.join(SHADOWING_NAMES)}")
         if SHADING_MODELS[self.model]["fresnel"] and self.s > 0 and self.n is None:
             raise ValueError(f"model {self.model} with s > 0 needs the specular material's n, k")
+        if (SHADING_MODELS[self.model]["roughness"] is True and self.s > 0
+                and self.roughness is None and self.lobes is None and self.texture is None):
+            raise ValueError(f"model {self.model} with s > 0 needs a roughness (or lobes)")
 
 
 @dataclass(frozen=True)
@@ -293,6 +296,9 @@ def _cmfs_wavelengths(observer=OBSERVER_DEFAULT):
 # --------------------------------------------------------------------------------------------
 
 def _cook_torrance(c, F, s, d, colour, material, dist):
+    if material.roughness is None and material.lobes is None and material.texture is None:
+        # Cook & Torrance 1982, Table I: m "not used" (s = 0): R = d R_d, the Lambertian R_d
+        return brdf_Lambert(c["NL"], c["NV"], rho_d=d * colour, convention="physical")
     return brdf_CookTorrance1982(
         c["NL"], c["NV"], c["NH"], c["VH"], F=F, s=s, d=d, R_d=colour / np.pi,  # R_d = F0/pi
         shadowing_method=SHADOWING_NAMES[material.shadowing], convention=material.convention,

@@ -41,7 +41,7 @@ rule ct82_fig6:
         "../scripts/cook_torrance_1982_fig6.py"
 
 
-# Rendered figures of Blinn 1977 (reflectance.blinn_scene): Fig. 7, Phong vs Torrance-Sparrow,
+# Rendered figures of Blinn 1977 (reflectance.scenes_from_config): Fig. 7, Phong vs Torrance-Sparrow,
 # edge and front lit, once per reading of Phong's p_s; the same as a light sweep (GIF); Fig. 8,
 # shininess varying with two texture patterns.
 
@@ -49,10 +49,6 @@ B77_RENDER = config["figures"]["blinn_1977"]
 B77_RENDER_OUT = "results/blinn_1977"
 B77_FIG7 = B77_RENDER["fig7"]
 B77_FIG7_READINGS = list(B77_FIG7["phong_specular_readings"])
-B77_FIG7_SPECTRA = [
-    f"{B77_RENDER_OUT}/fig7_spectra/{B77_FIG7['panels'][p]['label'].replace(' ', '_')}"
-    f"_n{B77_FIG7['panels'][p]['n']:g}.csv" for p in "ab"
-]  # Blinn's scalar index as a constant-index material (F of the Torrance-Sparrow model)
 B77_FIG7_STEMS = {
     key: f"{B77_RENDER_OUT}/fig7{key[0]}{key[1:]}"
     for p in "ab" for light in ("edge", "front")
@@ -70,7 +66,6 @@ rule blinn77_fig7:
                         category="Blinn 1977", subcategory="Fig. 7") for r in B77_FIG7_READINGS],
         csv=report(f"{B77_RENDER_OUT}/fig7.csv", caption="../report/blinn77_fig7_table.rst",
                    category="Blinn 1977", subcategory="Fig. 7"),
-        spectra=B77_FIG7_SPECTRA,
         renders=[f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values()
                  for ext in ("exr", "png", "scene.yaml")],
     params:
@@ -84,14 +79,11 @@ rule blinn77_fig7:
 
 
 B77_SWEEP = B77_RENDER["fig7_sweep"]
-B77_SWEEP_SPECTRUM = B77_FIG7_SPECTRA["ab".index(B77_SWEEP["panel"])]
 
 TARGETS += [f"{B77_RENDER_OUT}/fig7_sweep.{ext}" for ext in ("gif", "png", "csv")]
 
 
 rule blinn77_fig7_sweep:
-    input:
-        spectrum=B77_SWEEP_SPECTRUM,
     output:
         gif=report(f"{B77_RENDER_OUT}/fig7_sweep.gif", caption="../report/blinn77_fig7_sweep.rst",
                    category="Blinn 1977", subcategory="Fig. 7"),
@@ -102,8 +94,6 @@ rule blinn77_fig7_sweep:
     params:
         sweep=B77_SWEEP,
         fig7=B77_FIG7,
-        spectra_dir=B77_SWEEP_SPECTRUM.rsplit("/", 1)[0],
-        index_material=B77_SWEEP_SPECTRUM.rsplit("/", 1)[1][: -len(".csv")],
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7_sweep.log",
@@ -220,8 +210,6 @@ TARGETS += [f"{B77_RENDER_OUT}/fig8.{ext}" for ext in ("png", "csv")] + [
 
 
 rule blinn77_fig8:
-    input:
-        spectrum=B77_FIG7_SPECTRA["ab".index(B77_FIG8["panel"])],
     output:
         png=report(f"{B77_RENDER_OUT}/fig8.png", caption="../report/blinn77_fig8.rst",
                    category="Blinn 1977", subcategory="Fig. 8"),
@@ -256,7 +244,8 @@ TARGETS += [f"{ARTICLE_SPHERES_OUT}/spheres.{ext}"
 
 rule article_spheres:
     input:
-        specular=spectrum_csv(ARTICLE_SPHERES["material"]),
+        spectra=[spectrum_csv(ARTICLE_SPHERES["material"])]
+        + [spectrum_csv(s["diffuse_material"]) for s in ARTICLE_SPHERES["spheres"]],
     output:
         png=report(f"{ARTICLE_SPHERES_OUT}/spheres.png", caption="../report/article_spheres.rst",
                    category="Article", subcategory="Pair of spheres"),
@@ -266,11 +255,10 @@ rule article_spheres:
         exr=f"{ARTICLE_SPHERES_OUT}/spheres.exr",
         render=f"{ARTICLE_SPHERES_OUT}/spheres_render.png",
         scene=f"{ARTICLE_SPHERES_OUT}/spheres.scene.yaml",
-        spectra=[f"{ARTICLE_SPHERES_OUT}/spheres_spectra/{ARTICLE_SPHERES['material']}.csv"] + [
-            f"{ARTICLE_SPHERES_OUT}/spheres_spectra/{s['name']}.csv"
-            for s in ARTICLE_SPHERES["spheres"]],
     params:
         fig=ARTICLE_SPHERES,
+        pigments={s["diffuse_material"]: config["materials"][s["diffuse_material"]]
+                  for s in ARTICLE_SPHERES["spheres"]},
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     log:

@@ -3,33 +3,26 @@ Two coloured plastic spheres (pigment reflectances recovered from Munsell notati
 measured clear coat, so the highlights are white) with the article's Cook-Torrance model, one
 directional light, a grey floor; C&T exposure (the brightest colour at the display maximum)."""
 
-import shutil
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
-import yaml
 
 from reflectance.colorimetry import tristimulus_weights
-from reflectance.io import atomic_write
 from reflectance.plotting import new_figure, savefig
 from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict
+from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.scenes_from_config import display_from_colour, scene_document
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material, reflectance_from_munsell, wavelength_grid, write_spectrum_csv
+from reflectance.spectra import load_material, wavelength_grid
 
 with script_log(snakemake) as log:
     cfg, out, colour = snakemake.params.fig, snakemake.output, snakemake.params.colour
-    w = snakemake.params.wavelengths
+    pigments, w = snakemake.params.pigments, snakemake.params.wavelengths
     grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
-    folder = Path(out.spectra[0]).parent  # this figure's materials: the clear coat and the pigments
-    with atomic_write(out.spectra[0]) as tmp:
-        shutil.copyfile(snakemake.input.specular, tmp)
-    for sphere, path in zip(cfg["spheres"], out.spectra[1:]):
-        write_spectrum_csv(reflectance_from_munsell(sphere["munsell"], cfg["recovery"]), path)
+    folder = Path(snakemake.input.spectra[0]).parent  # spectra/: the clear coat and the pigments
     objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
                                                  "radius": s["radius"]},
-                "material": {"name": cfg["material"], "diffuse_material": s["name"],
+                "material": {"name": cfg["material"], "diffuse_material": s["diffuse_material"],
                              "model": "CookTorrance1982", "distribution": cfg["distribution"],
                              "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
                              "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
@@ -39,15 +32,13 @@ with script_log(snakemake) as log:
                                                    "resolution": [32, 32]},
                     "material": {"model": "Lambert", "convention": "physical",
                                  "albedo": cfg["floor_albedo"]}})
-    doc = {"wavelengths": dict(w), "observer": colour["observer"], "spectra_dir": str(folder),
-           "camera": dict(cfg["camera"]), "objects": objects,
-           "lights": [{"type": "directional", **cfg["light"], "intensity": 1.0, "solid_angle": 1.0}],
-           "ambient": {"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
-           "display": {"space": colour["space"], "gamut_clip": colour["gamut_clip"],
-                       "png_bit_depth": colour["png_bit_depth"]}}
+    doc = scene_document(cfg["camera"], objects,
+                         [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}], w, folder,
+                         observer=colour["observer"],
+                         ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
+                         display=display_from_colour(colour, illuminant=False))
     scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
-    with atomic_write(out.scene) as tmp:
-        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+    write_scene_file(scene, out.scene)
     result = render(scene)
     write_render(result, out.exr, out.render)
     image, scale = display_image(result)
@@ -57,9 +48,11 @@ with script_log(snakemake) as log:
     F0_Y = load_material(cfg["material"], grid, folder).F0 @ W[:, 1] / W[:, 1].sum()
     rows = []
     for s in cfg["spheres"]:
-        rho = load_material(s["name"], grid, folder).F0  # the pigment reflectance
+        rho = load_material(s["diffuse_material"], grid, folder).F0  # the pigment reflectance
         X, Y, Z = rho @ W
-        rows.append({"sphere": s["name"], "munsell": s["munsell"], "recovery": cfg["recovery"],
+        pigment = pigments[s["diffuse_material"]]
+        rows.append({"sphere": s["name"], "munsell": pigment["notation"],
+                     "recovery": pigment.get("recovery", "Meng 2015"),
                      "albedo_Y": Y, "albedo_x": X / (X + Y + Z), "albedo_y": Y / (X + Y + Z),
                      "clear_coat": cfg["material"], "clear_coat_F0_Y": F0_Y, "m": cfg["m"],
                      "s": cfg["s"], "d": cfg["d"], "exposure_scale": scale})
@@ -70,7 +63,7 @@ with script_log(snakemake) as log:
     ax = fig.add_axes((0.1 / (wd + 0.2), 0.1 / (h + 0.95), wd / (wd + 0.2), h / (h + 0.95)))
     ax.imshow(image, interpolation="nearest")
     ax.set_axis_off()
-    names = ", ".join(s["munsell"] for s in cfg["spheres"])
+    names = ", ".join(pigments[s["diffuse_material"]]["notation"] for s in cfg["spheres"])
     fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: specular highlights on a pair of spheres\n"
                  f"the article's Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}\n"
                  f"clear coat F of {cfg['material']} over pigments Munsell {names}", fontsize=9,

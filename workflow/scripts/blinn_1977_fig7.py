@@ -3,61 +3,37 @@ and front lit, (a) aluminium and (b) magnesium oxide with Blinn's measured param
 from the beta of c3. Grey images whose Y is Blinn's intensity i = p_a + d p_d + s p_s (no exposure:
 i = 1 is display white). One figure per reading of Phong's p_s; a table of the differences."""
 
-from pathlib import Path
-
 import numpy as np
 import pandas as pd
-import yaml
 
-from reflectance.blinn_scene import light_direction, materials_Blinn1977, write_constant_index_spectrum
-from reflectance.io import atomic_write
 from reflectance.plotting import new_figure, savefig
 from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict
+from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.scenes_from_config import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
-from reflectance.spectra import wavelength_grid
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
           "b": "Figure 7b  Simulation of magnesium oxide surface"}
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 
 
-def scene_document(fig, material, light, wavelengths, spectra_dir):
-    """The scene (workflow/schemas/scene.schema.yaml) of one render."""
-    cam = fig["camera"]
-    L = light_direction(cam["position"], cam["look_at"], cam["up"], light["angle_deg"],
-                        light["azimuth_deg"])
-    return {"wavelengths": dict(wavelengths), "spectra_dir": str(spectra_dir), "camera": dict(cam),
-            "objects": [{"name": "object", "geometry": dict(fig["object"]), "material": material}],
-            "lights": [{"type": "directional", "direction": [float(x) for x in L],
-                        "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0}],
-            # Blinn's p_a: I_ia R_a with I_ia = p_a (a fraction of the light's intensity 1), R_a = 1
-            "ambient": {"fraction": fig["p_a"], "reference": "intensity"},
-            "display": {"expose": False, "gamut_clip": "dominant-wavelength"}}
-
-
 with script_log(snakemake) as log:
     fig_cfg, stems, out = snakemake.params.fig, snakemake.params.stems, snakemake.output
     w = snakemake.params.wavelengths
-    spectra_dir = Path(out.spectra[0]).parent
-    for path, panel in zip(out.spectra, ("a", "b")):
-        write_constant_index_spectrum(path, fig_cfg["panels"][panel]["n"],
-                                      wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"]))
     images, Y, rows = {}, {}, []
-    for panel, path in zip(("a", "b"), out.spectra):
+    for panel in ("a", "b"):
         p = fig_cfg["panels"][panel]
         for reading in fig_cfg["phong_specular_readings"]:
-            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], Path(path).stem, reading)
+            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
             for light in ("edge", "front"):
                 for model in MODELS:
                     key = (f"{panel}_torrance_sparrow_{light}" if model == "torrance_sparrow"
                            else f"{panel}_phong_{light}_{reading}")
                     if key in images:
                         continue  # the Torrance-Sparrow renders do not depend on the reading
-                    doc = scene_document(fig_cfg, m[model], fig_cfg["lights"][light], w, spectra_dir)
+                    doc = blinn_scene_Blinn1977(fig_cfg, m[model], fig_cfg["lights"][light], w)
                     scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
-                    with atomic_write(f"{stems[key]}.scene.yaml") as tmp:
-                        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+                    write_scene_file(scene, f"{stems[key]}.scene.yaml")
                     result = render(scene)
                     write_render(result, f"{stems[key]}.exr", f"{stems[key]}.png")
                     images[key], Y[key] = display_image(result)[0], result.XYZ[..., 1]

@@ -9,11 +9,11 @@ import numpy as np
 import pandas as pd
 from PIL import Image, ImageDraw, ImageFont
 
-from reflectance.blinn_scene import light_direction, materials_Blinn1977
 from reflectance.io import atomic_write
 from reflectance.plotting import new_figure, savefig
 from reflectance.render import RenderResult, display_image, shade_samples
 from reflectance.scene import scene_from_dict
+from reflectance.scenes_from_config import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.visibility import shadow_masks, visibility
 
@@ -22,23 +22,15 @@ MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.sweep, snakemake.params.fig7, snakemake.output
     p = fig7["panels"][cfg["panel"]]
-    m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], snakemake.params.index_material,
-                            cfg["phong_specular"])
+    m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], cfg["phong_specular"])
     cam = dict(fig7["camera"])
     cam.update(width=cfg["size"], height=round(cfg["size"] * cam["height"] / cam["width"]),
                supersample=cfg["supersample"])
     angles = np.linspace(*cfg["angles_deg"], cfg["n_frames"])
-    lights = [{"type": "directional", "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0,
-               "direction": [float(x) for x in light_direction(
-                   cam["position"], cam["look_at"], cam["up"], a, cfg["azimuth_deg"])]}
-              for a in angles]
+    lights = [{"angle_deg": a, "azimuth_deg": cfg["azimuth_deg"]} for a in angles]
     scenes = {model: scene_from_dict(
-        {"wavelengths": dict(snakemake.params.wavelengths), "spectra_dir": snakemake.params.spectra_dir,
-         "camera": cam, "objects": [{"name": "object", "geometry": dict(fig7["object"]),
-                                     "material": m[model]}],
-         "lights": lights, "ambient": {"fraction": fig7["p_a"], "reference": "intensity"},
-         "display": {"expose": False}}, source=f"figures.blinn_1977.fig7_sweep ({model})")
-        for model in MODELS}
+        blinn_scene_Blinn1977(fig7, m[model], lights, snakemake.params.wavelengths, cam),
+        source=f"figures.blinn_1977.fig7_sweep ({model})") for model in MODELS}
     first = scenes["phong"]
     samples = visibility(first.mesh, first.camera)  # the same object and camera in every frame
     shadowed = shadow_masks(samples, first.mesh, [light.source for light in first.lights])

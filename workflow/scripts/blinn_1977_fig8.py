@@ -4,46 +4,34 @@ with Blinn's Torrance-Sparrow model, D3 with C3 = C_min + (1 - C_min) t(u, v) no
 C3 map over (u, v)."""
 
 import json
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import yaml
 
-from reflectance.blinn_scene import light_direction
-from reflectance.io import atomic_write
 from reflectance.microfacet import c3_texture_Blinn1977
 from reflectance.plotting import new_figure, savefig
 from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict
+from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.scenes_from_config import blinn_scene_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.texture import texture
 
 with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output
-    cam = dict(fig7["camera"])
-    L = light_direction(cam["position"], cam["look_at"], cam["up"], cfg["light"]["angle_deg"],
-                        cfg["light"]["azimuth_deg"])
     u, v = np.meshgrid(np.linspace(0, 1, 721), np.linspace(0, 1, 201))
     images, maps, rows = {}, {}, []
     for part in ("a", "b"):
         pattern = cfg["patterns"][part]
-        material = {"name": Path(snakemake.input.spectrum).stem, "model": "TorranceSparrow_Blinn1977",
+        material = {"index": {"n": float(snakemake.params.n), "k": 0.0},
+                    "model": "TorranceSparrow_Blinn1977",
                     "distribution": "TrowbridgeReitz1975", "convention": "paper", "fresnel": "exact",
                     "s": cfg["p_s"], "d": cfg["p_d"], "albedo": 1.0,
                     "roughness_texture": {"method": pattern["method"],
                                           "parameters": dict(pattern["parameters"]),
                                           "min": cfg["c_min"], "max": 1.0}}
-        doc = {"wavelengths": dict(snakemake.params.wavelengths),
-               "spectra_dir": str(Path(snakemake.input.spectrum).parent), "camera": cam,
-               "objects": [{"name": "object", "geometry": dict(fig7["object"]), "material": material}],
-               "lights": [{"type": "directional", "direction": [float(x) for x in L], "spectrum": "D65",
-                           "intensity": 1.0, "solid_angle": 1.0}],
-               "ambient": {"fraction": fig7["p_a"], "reference": "intensity"},
-               "display": {"expose": False}}
+        doc = blinn_scene_Blinn1977(fig7, material, cfg["light"], snakemake.params.wavelengths)
         scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
-        with atomic_write(out[f"{part}_scene"]) as tmp:
-            Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+        write_scene_file(scene, out[f"{part}_scene"])
         result = render(scene)
         write_render(result, out[f"{part}_exr"], out[f"{part}_png"])
         images[part] = display_image(result)[0]

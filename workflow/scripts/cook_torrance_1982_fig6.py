@@ -7,12 +7,11 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import yaml
 
-from reflectance.io import atomic_write
 from reflectance.plotting import new_figure, savefig
 from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict
+from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.scenes_from_config import panel_material, vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.shading import ambient_intensity
 
@@ -21,35 +20,18 @@ READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
             "irradiance": "ambient = {f} of the lights' irradiance: I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0"}
 
 
-def scene_document(fig, panel, reference, wavelengths, colour, spectra_dir):
-    """The scene (workflow/schemas/scene.schema.yaml) of one panel."""
-    material = {key: value for key, value in panel.items() if key != "material"}
-    material.update(name=panel["material"], distribution=fig["distribution"],
-                    convention=fig["convention"], fresnel=fig["fresnel"],
-                    shadowing=fig["shadowing"])
-    return {"wavelengths": dict(wavelengths), "observer": colour["observer"],
-            "spectra_dir": spectra_dir, "spectral": fig["spectral"], "camera": dict(fig["camera"]),
-            "objects": [{"name": "vase", "geometry": {"type": "vase", **fig["vase"]},
-                         "material": material}],
-            "lights": [{"type": "directional", **light} for light in fig["lights"]],
-            "ambient": {"fraction": fig["ambient_fraction"], "reference": reference},
-            "display": {"space": colour["space"], "gamut_clip": colour["gamut_clip"],
-                        "illuminant": colour["illuminant"],
-                        "png_bit_depth": colour["png_bit_depth"]}}
-
-
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     reference, out = snakemake.params.reference, snakemake.output
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
     rows, images = [], {}
     for part in ("a", "b"):
-        document = scene_document(fig_cfg, fig_cfg["panels"][part], reference,
-                                  snakemake.params.wavelengths, colour_cfg, spectra_dir)
+        document = vase_scene_CookTorrance1982(fig_cfg, panel_material(fig_cfg["panels"][part]),
+                                               reference, snakemake.params.wavelengths,
+                                               colour_cfg, spectra_dir)
         scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                  f"panel {part}")
-        with atomic_write(out[f"{part}_scene"]) as tmp:
-            Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+        write_scene_file(scene, out[f"{part}_scene"])
         result = render(scene, components=True)
         write_render(result, out[f"{part}_exr"], out[f"{part}_png"])
         images[part], scale = display_image(result)

@@ -7,14 +7,13 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import yaml
 
 from reflectance.colorimetry import tristimulus_weights
-from reflectance.display import XYZ_to_display, expose_CookTorrance1982
-from reflectance.io import atomic_write
-from reflectance.plotting import new_figure, savefig
+from reflectance.composite import common_exposure, covered_rows, image_grid
+from reflectance.plotting import savefig
 from reflectance.render import render, write_render
-from reflectance.scene import scene_from_dict
+from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.scenes_from_config import vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.spectra import list_materials, load_material
 
@@ -25,14 +24,10 @@ READINGS = {"intensity": "as printed, I_ia = {f} I_i",
 
 
 def nonmetal(row):
-    """A Table I row as a scene material (R_d = F0/pi of the same material: the scene default)."""
-    if row["m"] is None:  # Table I: m "Not used", which only s = 0 allows
-        if row["s"] != 0:
-            raise ValueError(f"config.yaml table1 {row['material']}: m is null but s = {row['s']}")
-        # s = 0 leaves d R_d: the Lambertian F0/pi (the 'physical' Lambert BRDF is albedo/pi)
-        return {"name": row["material"], "model": "Lambert", "convention": "physical",
-                "s": 0.0, "d": row["d"]}
-    return {"name": row["material"], "s": row["s"], "d": row["d"], "m": row["m"]}
+    """A Table I row as a scene material (R_d = F0/pi of the same material: the scene default);
+    Table I's m "Not used" (s = 0) leaves the key out."""
+    return {"name": row["material"], "s": row["s"], "d": row["d"],
+            **({} if row["m"] is None else {"m": row["m"]})}
 
 
 def vases(fig, fig6, table1):
@@ -51,22 +46,6 @@ def vases(fig, fig6, table1):
     return out
 
 
-def scene_document(fig6, material, reference, size, wavelengths, colour, spectra_dir):
-    """One vase alone, as Fig. 6 renders it (workflow/schemas/scene.schema.yaml)."""
-    material = {"distribution": fig6["distribution"], "convention": fig6["convention"],
-                "fresnel": fig6["fresnel"], "shadowing": fig6["shadowing"], **material}
-    return {"wavelengths": dict(wavelengths), "observer": colour["observer"],
-            "spectra_dir": spectra_dir, "spectral": fig6["spectral"],
-            "camera": {**fig6["camera"], **size},
-            "objects": [{"name": "vase", "geometry": {"type": "vase", **fig6["vase"]},
-                         "material": material}],
-            "lights": [{"type": "directional", **light} for light in fig6["lights"]],
-            "ambient": {"fraction": fig6["ambient_fraction"], "reference": reference},
-            "display": {"space": colour["space"], "gamut_clip": colour["gamut_clip"],
-                        "illuminant": colour["illuminant"],
-                        "png_bit_depth": colour["png_bit_depth"]}}
-
-
 def label(material, sources):
     """Material(s) and where their spectra come from."""
     name, diffuse = material["name"], material.get("diffuse_material", material["name"])
@@ -82,12 +61,11 @@ with script_log(snakemake) as log:
     sources = list_materials(spectra_dir).set_index("material")
     rows, images, groups, labels = [], [], [], []
     for k, (vase, group, material) in enumerate(vases(p.fig, p.fig6, p.table1)):
-        document = scene_document(p.fig6, material, reference, p.fig["vase_image"],
-                                  p.wavelengths, colour_cfg, spectra_dir)
+        document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
+                                               colour_cfg, spectra_dir, p.fig["vase_image"])
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
-        with atomic_write(out.scenes[k]) as tmp:
-            Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))
+        write_scene_file(scene, out.scenes[k])
         result = render(scene)
         write_render(result, out.exrs[k])
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
@@ -110,39 +88,27 @@ with script_log(snakemake) as log:
         images.append(result.XYZ), groups.append(group), labels.append(label(material, sources))
         log.info("%s: %s; timings %s", vase, rows[-1], result.timings)
 
-    # Cook & Torrance 1982: "all XYZ values in the scene are scaled equally": the grid is one scene
     display = dict(illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
                    wavelengths=scene.wavelengths)
-    _, scale = expose_CookTorrance1982(np.stack(images), colour_cfg["space"], **display)
+    scale = common_exposure(images, colour_cfg["space"], **display)  # the grid is one scene
     pd.DataFrame(rows).assign(exposure_scale=scale).to_csv(
         out.csv, index=False, float_format="%.6g", lineterminator="\n")
 
+    # metals in the first row, nonmetals in the second, extras in the last column
     n_cols = max(groups.count("metal"), groups.count("nonmetal")) + ("extra" in groups)
-    lit = np.flatnonzero(np.stack(images)[..., 1].max(axis=(0, 2)) > 0)  # rows any vase covers
-    crop = slice(max(lit[0] - 4, 0), lit[-1] + 5)
-    w, h = images[0].shape[1] / 100, (crop.stop - crop.start) / 100  # inches at dpi 100
-    head, foot, top = 0.25, 0.4, 0.45
-    fig_w, fig_h = n_cols * w * 1.04, top + 2 * (head + h + foot)
-    fig = new_figure(fig_w, fig_h, facecolor="black")
-    slots = {"metal": 0, "nonmetal": 0, "extra": n_cols - 1}  # extras in the last column
-    first = {group: groups.index(group) for group in slots if group in groups}
-    for i, (image, group, text) in enumerate(zip(images, groups, labels)):
+    slots, cells, headings = {"metal": 0, "nonmetal": 0, "extra": n_cols - 1}, [], []
+    for image, group, text in zip(images, groups, labels):
         row, col = int(group != "metal"), slots[group]
         slots[group] += 1
-        y0 = fig_h - top - row * (head + h + foot) - head
-        ax = fig.add_axes((col / n_cols + 0.02 / n_cols, (y0 - h) / fig_h, w / fig_w, h / fig_h))
-        ax.imshow(XYZ_to_display(image[crop] * scale, colour_cfg["space"],
-                                 colour_cfg["gamut_clip"], expose=False, **display),
-                  interpolation="nearest")
-        ax.set_axis_off()
-        ax.text(0.5, -0.01, text, transform=ax.transAxes, ha="center", va="top", color="white",
-                fontsize=8, linespacing=1.15)
-        if i == first[group]:  # the group's heading over its first vase
-            fig.text(0.01 if group != "extra" else 1 - 0.5 / n_cols, (y0 + 0.07) / fig_h,
-                     GROUPS[group], color="white" if group != "extra" else "#ffcc66",
-                     fontsize=9 if group != "extra" else 8,
-                     ha="left" if group != "extra" else "center")
+        if group not in [h[2] for h in headings]:  # the group's heading over its first vase
+            headings.append((row, col, group))
+        cells.append((row, col, image, text))
+    styles = {"metal": {"x": 0.01}, "nonmetal": {"x": 0.01},
+              "extra": {"x": 1 - 0.5 / n_cols, "color": "#ffcc66", "fontsize": 8, "ha": "center"}}
     reading = READINGS[reference].format(f=f"{p.fig6['ambient_fraction']:g}")
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 7 \u2014 ambient {reading}; one exposure for "
-                 "all vases", color="white", fontsize=10)
+    fig = image_grid(cells, 2, n_cols, scale, colour_cfg["space"], colour_cfg["gamut_clip"],
+                     display, f"Cook & Torrance 1982, Fig. 7 \u2014 ambient {reading}; one "
+                     "exposure for all vases",
+                     headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
+                     crop=covered_rows(images))
     savefig(fig, out.png, dpi=100)
