@@ -62,6 +62,26 @@ def _figure_materials(config):
     return found
 
 
+def _table1_references(config):
+    """References the schema cannot check: C&T Table I rows and Fig. 6 ambient readings by name."""
+    ct = config.get("figures", {}).get("cook_torrance_1982", {})
+    if not all(key in ct for key in ("table1", "fig6", "fig7", "fig8")):
+        return []
+    rows = [row["material"] for row in ct["table1"]["rows"]]
+    named = [(f"fig7.extras[{i}].table1", e["table1"])
+             for i, e in enumerate(ct["fig7"].get("extras", [])) if "table1" in e]
+    named += [(f"fig8.parts.{part}.table1", spec["table1"])
+              for part, spec in ct["fig8"]["parts"].items() if "table1" in spec]
+    problems = [f"figures.cook_torrance_1982.{key}: {name!r} is not a row of table1; known: "
+                f"{', '.join(rows)}" for key, name in named if name not in rows]
+    readings = list(ct["fig6"]["ambient_readings"])
+    if ct["fig8"]["ambient_reading"] not in readings:
+        problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "
+                        f"{ct['fig8']['ambient_reading']!r} is not a key of fig6.ambient_readings; "
+                        f"known: {', '.join(readings)}")
+    return problems
+
+
 def check_config(config, check_spectra=True):
     """Checks the schema cannot express; raises :class:`ConfigError` listing every problem.
 
@@ -95,6 +115,7 @@ def check_config(config, check_spectra=True):
             problems.append(
                 f"{_key(path)}: unknown material {name!r}; known: {', '.join(sorted(known))}"
             )
+    problems += _table1_references(config)
     if check_spectra and w and not problems:
         from .spectra import coverage_nm
 

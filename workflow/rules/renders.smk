@@ -155,24 +155,6 @@ rule ct82_fig7:
 CT82_FIG8 = CT82["fig8"]
 
 
-def _check_ct82_fig7_fig8():
-    """References the schema cannot check: Table I rows and Fig. 6 ambient readings by name."""
-    rows = [row["material"] for row in CT82["table1"]["rows"]]
-    named = [(f"fig7.extras[{i}].table1", e["table1"]) for i, e in enumerate(CT82_FIG7["extras"])]
-    named += [(f"fig8.parts.{part}.table1", spec["table1"])
-              for part, spec in CT82_FIG8["parts"].items() if "table1" in spec]
-    problems = [f"figures.cook_torrance_1982.{key}: {name!r} is not a row of table1; known: "
-                f"{', '.join(rows)}" for key, name in named if name not in rows]
-    if CT82_FIG8["ambient_reading"] not in CT82_FIG6_READINGS:
-        problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "
-                        f"{CT82_FIG8['ambient_reading']!r} is not a key of fig6.ambient_readings; "
-                        f"known: {', '.join(CT82_FIG6_READINGS)}")
-    if problems:
-        raise WorkflowError("invalid configuration:\n  config.yaml: "
-                            + "\n  config.yaml: ".join(problems))
-
-
-_check_ct82_fig7_fig8()
 CT82_FIG8_MATERIALS = {spec.get("material", spec.get("table1"))  # a Table I row names its material
                        for spec in CT82_FIG8["parts"].values()}
 
