@@ -30,6 +30,7 @@ from reflectance.shading import shade
 from reflectance.visibility import shadow_masks, visibility
 
 __all__ = [
+    "render_to_files",
     "COMPONENTS",
     "RenderResult",
     "trace",
@@ -213,3 +214,17 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     if not lit.any():
         return 0.0, 0.0
     return float(dE[lit].mean()), float(dE[lit].max())
+
+
+def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):
+    """Write the scene file, render it and write its EXR (and PNG); return the result.
+
+    What every rendered figure does, in one place: the scene written beside the images can be
+    rendered again alone with ``reflectance render``.
+    """
+    from reflectance.scene import write_scene_file
+
+    write_scene_file(scene, scene_path)
+    result = render(scene, components=components)
+    write_render(result, exr_path, png_path)
+    return result

@@ -39,6 +39,7 @@ from __future__ import annotations
 import numpy as np
 
 from reflectance.geometry import _grid_mesh, _merge, _triangle_mesh, place
+from reflectance.geometry import _positive as _check_positive
 
 __all__ = ["WATCH_PARTS", "SEVEN_SEGMENT_DIGITS", "watch"]
 
@@ -280,10 +281,8 @@ def _display(text, digit_height, thickness, slant_deg, z, box, window, part):
 # --------------------------------------------------------------------------------------------
 
 def _positive(name, value):
-    value = float(value)
-    if not np.isfinite(value) or value <= 0:
-        raise ValueError(f"watch: {name} must be a positive finite number, got {value!r}")
-    return value
+    """geometry's check, with the message naming the watch's parameter."""
+    return _check_positive(value, f"watch: {name}")
 
 
 def _pair(name, value):

@@ -9,8 +9,8 @@ import pandas as pd
 
 from reflectance.colorimetry import tristimulus_weights
 from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import display_image, render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import display_from_colour, scene_document
 from reflectance.scripting import script_log
 from reflectance.spectra import load_material, wavelength_grid
@@ -38,9 +38,7 @@ with script_log(snakemake) as log:
                          ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
                          display=display_from_colour(colour, illuminant=False))
     scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
-    write_scene_file(scene, out.scene)
-    result = render(scene)
-    write_render(result, out.exr, out.render)
+    result = render_to_files(scene, out.scene, out.exr, out.render)
     image, scale = display_image(result)
     log.info("timings %s; exposure scale %.6g", result.timings, scale)
 

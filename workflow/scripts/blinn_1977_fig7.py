@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 
 from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import display_image, render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
 
@@ -33,9 +33,8 @@ with script_log(snakemake) as log:
                         continue  # the Torrance-Sparrow renders do not depend on the reading
                     doc = blinn_scene_Blinn1977(fig_cfg, m[model], fig_cfg["lights"][light], w)
                     scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
-                    write_scene_file(scene, f"{stems[key]}.scene.yaml")
-                    result = render(scene)
-                    write_render(result, f"{stems[key]}.exr", f"{stems[key]}.png")
+                    result = render_to_files(scene, f"{stems[key]}.scene.yaml",
+                                             f"{stems[key]}.exr", f"{stems[key]}.png")
                     images[key], Y[key] = display_image(result)[0], result.XYZ[..., 1]
                     log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
                 ph, ts = Y[f"{panel}_phong_{light}_{reading}"], Y[f"{panel}_torrance_sparrow_{light}"]

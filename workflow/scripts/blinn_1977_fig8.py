@@ -10,8 +10,8 @@ import pandas as pd
 
 from reflectance.microfacet import c3_texture_Blinn1977
 from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import display_image, render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import blinn_scene_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.texture import texture
@@ -31,9 +31,8 @@ with script_log(snakemake) as log:
                                           "min": cfg["c_min"], "max": 1.0}}
         doc = blinn_scene_Blinn1977(fig7, material, cfg["light"], snakemake.params.wavelengths)
         scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
-        write_scene_file(scene, out[f"{part}_scene"])
-        result = render(scene)
-        write_render(result, out[f"{part}_exr"], out[f"{part}_png"])
+        result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
+                                 out[f"{part}_png"])
         images[part] = display_image(result)[0]
         # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
         maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),

@@ -9,8 +9,8 @@ import numpy as np
 import pandas as pd
 
 from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import display_image, render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import panel_material, vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.shading import ambient_intensity
@@ -31,9 +31,8 @@ with script_log(snakemake) as log:
                                                colour_cfg, spectra_dir)
         scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                  f"panel {part}")
-        write_scene_file(scene, out[f"{part}_scene"])
-        result = render(scene, components=True)
-        write_render(result, out[f"{part}_exr"], out[f"{part}_png"])
+        result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
+                                 out[f"{part}_png"], components=True)
         images[part], scale = display_image(result)
         Y = {name: value[..., 1] for name, value in result.components.items()}
         direct = Y["diffuse"] + Y["specular"]

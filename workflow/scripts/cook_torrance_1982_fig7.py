@@ -11,8 +11,8 @@ import pandas as pd
 from reflectance.colorimetry import tristimulus_weights
 from reflectance.composite import common_exposure, covered_rows, image_grid
 from reflectance.plotting import savefig
-from reflectance.render import render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.spectra import list_materials, load_material
@@ -65,9 +65,7 @@ with script_log(snakemake) as log:
                                                colour_cfg, spectra_dir, p.fig["vase_image"])
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
-        write_scene_file(scene, out.scenes[k])
-        result = render(scene)
-        write_render(result, out.exrs[k])
+        result = render_to_files(scene, out.scenes[k], out.exrs[k])
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
         albedo = scene.objects[0].material.albedo @ W  # pi R_d (Cook & Torrance 1982: R_d = F0/pi)

@@ -11,8 +11,8 @@ import pandas as pd
 from reflectance.colorimetry import tristimulus_weights
 from reflectance.composite import part_pixels
 from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render, write_render
-from reflectance.scene import scene_from_dict, write_scene_file
+from reflectance.render import display_image, render_to_files
+from reflectance.scene import scene_from_dict
 from reflectance.scenes_from_config import display_from_colour, panel_material, scene_document
 from reflectance.scripting import script_log
 from reflectance.spectra import load_material
@@ -59,9 +59,7 @@ with script_log(snakemake) as log:
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
     document = watch_scene(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg, spectra_dir)
     scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
-    write_scene_file(scene, out.scene)
-    result = render(scene)
-    write_render(result, out.exr, out.render_png)
+    result = render_to_files(scene, out.scene, out.exr, out.render_png)
     rgb, scale = display_image(result)
     log.info("render %s, exposure scale %.6g", result.timings, scale)
 
