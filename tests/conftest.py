@@ -23,6 +23,6 @@ def root():
 
 @pytest.fixture(scope="session")
 def grid():
-    from reflectance.spectra import wavelength_grid
+    from reflectance.optics.spectra import wavelength_grid
 
     return wavelength_grid(360, 830, 5)

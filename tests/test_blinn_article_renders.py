@@ -1,6 +1,6 @@
 """Rendered figures of Blinn 1977 (Figs. 7, 8, the light sweep) and of the article (pair of spheres).
 
-The Blinn helpers of ``reflectance.scenes_from_config`` are checked against Blinn's formulas written out here.
+The Blinn helpers of ``reflectance.papers.scenes`` are checked against Blinn's formulas written out here.
 Each figure script runs once, as Snakemake would run it, with the parameters of config.yaml at a
 small image size and outputs in a temporary directory; the images are then checked against what
 the paper's formulas say they must show (computed here, not taken from the scripts' tables).
@@ -19,9 +19,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from PIL import Image
 
-from reflectance.imageio import read_exr
-from reflectance.scene import constant_index_material
-from reflectance.scenes_from_config import (PHONG_SPECULAR_READINGS, light_direction,
+from reflectance.io.images import read_exr
+from reflectance.render.scene import constant_index_material
+from reflectance.papers.scenes import (PHONG_SPECULAR_READINGS, light_direction,
                                             materials_Blinn1977)
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,11 +49,11 @@ def fresnel_sin_tan(phi, n):
                   + np.tan(phi - theta) ** 2 / np.tan(phi + theta) ** 2)
 
 
-# --- Blinn's helpers in reflectance.scenes_from_config ----------------------------------------
+# --- Blinn's helpers in reflectance.papers.scenes ----------------------------------------
 
 @pytest.mark.parametrize("n", [1.8, 200.0, 1.5])
 def test_constant_index_material_gives_the_dielectric_fresnel(n):
-    from reflectance.fresnel import fresnel
+    from reflectance.optics.fresnel import fresnel
 
     material = constant_index_material(n, 0.0, np.arange(360.0, 831.0, 5.0))
     assert np.all(material.n == n) and np.all(material.k == 0)
@@ -124,8 +124,8 @@ def fig7(tmp_path_factory):
 
 
 def test_fig7_writes_exr_png_and_a_scene_that_re_renders(fig7):
-    from reflectance.render import render
-    from reflectance.scene import load_scene
+    from reflectance.render.pipeline import render
+    from reflectance.render.scene import load_scene
 
     fig, Y, _, tmp = fig7
     for key in Y:
@@ -216,9 +216,9 @@ def test_fig8_texture_modulates_the_highlight(fig8, part):
     [C_min C3 / (cos^2 a (C3^2 - 1) + 1)]^2 / [C_min^2 / (cos^2 a (C_min^2 - 1) + 1)]^2. The
     texture lowers the peak (ratio (C_min / C3)^2 at a = 0) and widens the lobe (ratio > 1 far
     from the highlight)."""
-    from reflectance.render import shade_samples, trace
-    from reflectance.scene import load_scene, scene_from_dict
-    from reflectance.texture import texture
+    from reflectance.render.pipeline import shade_samples, trace
+    from reflectance.render.scene import load_scene, scene_from_dict
+    from reflectance.geometry.texture import texture
 
     fig, out = fig8
     scene = load_scene(out[f"{part}_scene"])
@@ -263,7 +263,7 @@ def test_fig8_table_and_images(fig8):
 def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
     import colour
 
-    from reflectance.spectra import read_spectrum_csv
+    from reflectance.optics.spectra import read_spectrum_csv
 
     fig = copy.deepcopy(CONFIG["figures"]["article"]["spheres"])
     fig["camera"].update(width=160, height=100, supersample=1)

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.brdf import (
+from reflectance.optics.brdf import (
     BRDF_METHODS,
     ambient_reflectance_CookTorrance1982,
     brdf,
@@ -16,7 +16,7 @@ from reflectance.brdf import (
     directional_albedo,
     intensity_CookTorrance1982,
 )
-from reflectance.fresnel import fresnel_conductor, fresnel_dielectric_CookTorrance1982
+from reflectance.optics.fresnel import fresnel_conductor, fresnel_dielectric_CookTorrance1982
 
 N = np.array([0.0, 0.0, 1.0])
 X, Y = np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])

@@ -1,4 +1,4 @@
-"""Tests of reflectance.colorimetry against colour-science and published CIE / ASTM values."""
+"""Tests of reflectance.colour.colorimetry against colour-science and published CIE / ASTM values."""
 
 import colour
 import numpy as np
@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.colorimetry import (
+from reflectance.colour.colorimetry import (
     OBSERVER_DEFAULT,
     cmfs,
     dominant_wavelength,

@@ -4,13 +4,13 @@ import colour
 import numpy as np
 import pytest
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.colour_shift import (
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.audit.colour_shift import (
     colour_interpolation_CookTorrance1982,
     colour_table,
     colour_XYZ,
 )
-from reflectance.spectra import load_material
+from reflectance.optics.spectra import load_material
 
 
 @pytest.fixture(scope="module")

@@ -129,8 +129,8 @@ def test_fig7_diffuse_colour_is_F0_over_pi_by_colour_science(fig7):
 
 def test_fig7_one_exposure_for_the_whole_grid(fig7):
     """The common scale puts the brightest colour of all vases at the display maximum."""
-    from reflectance.colorimetry import white_XYZ
-    from reflectance.imageio import read_exr
+    from reflectance.colour.colorimetry import white_XYZ
+    from reflectance.io.images import read_exr
 
     scale = pd.read_csv(fig7.csv).exposure_scale.unique()
     assert len(scale) == 1
@@ -146,9 +146,9 @@ def test_fig7_one_exposure_for_the_whole_grid(fig7):
 
 def test_fig7_lunar_dust_is_cook_torrance_with_s_zero(fig7):
     """m "Not used": the Lambert vase equals a Cook & Torrance vase with s = 0 and any m."""
-    from reflectance.imageio import read_exr
-    from reflectance.render import render
-    from reflectance.scene import scene_from_dict
+    from reflectance.io.images import read_exr
+    from reflectance.render.pipeline import render
+    from reflectance.render.scene import scene_from_dict
 
     document = yaml.safe_load(Path(fig7.scenes[VASES.index("LunarDust")]).read_text())
     material = document["objects"][0]["material"]
@@ -178,9 +178,9 @@ def test_fig8_parts_and_materials_come_from_config(fig8):
 
 def led_pixels(scene_path):
     """Pixels whose every sample sees an LED segment (the scene's own visibility)."""
-    from reflectance.scene import load_scene
-    from reflectance.visibility import visibility
-    from reflectance.watch import WATCH_PARTS
+    from reflectance.render.scene import load_scene
+    from reflectance.render.visibility import visibility
+    from reflectance.geometry.watch import WATCH_PARTS
 
     scene = load_scene(scene_path)
     samples = visibility(scene.mesh, scene.camera)
@@ -203,7 +203,7 @@ def test_fig8_led_pixels_show_dominant_wavelength_640(fig8):
     target = CT82["fig8"]["led"]["dominant_wavelength_nm"]
     assert np.all(np.abs(np.asarray(wl) - target) <= 3), np.unique(wl)
     # and in the linear image the LED is the configured emission, Y = factor I d omega / pi
-    from reflectance.imageio import read_exr
+    from reflectance.io.images import read_exr
 
     light = CT82["fig8"]["light"]
     Y = read_exr(fig8.exr)[0][mask][:, 1]
@@ -213,9 +213,9 @@ def test_fig8_led_pixels_show_dominant_wavelength_640(fig8):
 
 def test_fig8_scene_file_rerenders_the_exr(fig8):
     """The scene YAML beside the image renders it again, bit for bit (in the EXR's float32)."""
-    from reflectance.imageio import read_exr
-    from reflectance.render import render
-    from reflectance.scene import load_scene
+    from reflectance.io.images import read_exr
+    from reflectance.render.pipeline import render
+    from reflectance.render.scene import load_scene
 
     XYZ = read_exr(fig8.exr)[0]
     assert XYZ.dtype == np.float32

@@ -1,4 +1,4 @@
-"""Tests of reflectance.display against colour-science, closed-form identities and brute force."""
+"""Tests of reflectance.colour.display against colour-science, closed-form identities and brute force."""
 
 import colour
 import numpy as np
@@ -6,14 +6,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.colorimetry import (
+from reflectance.colour.colorimetry import (
     OBSERVER_DEFAULT,
     dominant_wavelength,
     spectrum_to_XYZ,
     tristimulus_weights,
     white_XYZ,
 )
-from reflectance.display import (
+from reflectance.colour.display import (
     DISPLAY_SPACES,
     GAMUT_CLIP_METHODS,
     XYZ_to_display,

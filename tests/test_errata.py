@@ -14,9 +14,9 @@ import pandas as pd
 import pytest
 import yaml
 
-from reflectance.brdf import brdf
-from reflectance.microfacet import distribution_Gaussian_CookTorrance1982, distribution_TorranceSparrow1967
-from reflectance.vgroove import simulate_vgroove
+from reflectance.optics.brdf import brdf
+from reflectance.optics.microfacet import distribution_Gaussian_CookTorrance1982, distribution_TorranceSparrow1967
+from reflectance.papers.vgroove import simulate_vgroove
 
 N_Z = np.array([0.0, 0.0, 1.0])
 

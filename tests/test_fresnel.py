@@ -1,4 +1,4 @@
-"""Tests of reflectance.fresnel against independent truth.
+"""Tests of reflectance.optics.fresnel against independent truth.
 
 Truth used here: closed forms written out in the tests (normal incidence, energy conservation),
 a brute-force Snell's-law computation with complex angles, Blinn's 1977 sin/tan form, the
@@ -15,7 +15,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from reflectance.fresnel import (
+from reflectance.optics.fresnel import (
     COS_THETA_F82,
     F0_from_nk,
     F82_from_nk,

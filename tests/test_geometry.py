@@ -1,4 +1,4 @@
-"""Tests of reflectance.geometry against analytic surfaces (cones, tori, superellipsoids)."""
+"""Tests of reflectance.geometry.shapes against analytic surfaces (cones, tori, superellipsoids)."""
 
 import numpy as np
 import pytest
@@ -6,7 +6,7 @@ import pyvista as pv
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.geometry import (
+from reflectance.geometry.shapes import (
     VASE_INTERPOLATION_METHODS,
     VASE_PARTS,
     analytic_spheres,

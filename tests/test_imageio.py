@@ -1,4 +1,4 @@
-"""Tests of reflectance.imageio: PNG and OpenEXR round trips, determinism, bad input."""
+"""Tests of reflectance.io.images: PNG and OpenEXR round trips, determinism, bad input."""
 
 import struct
 import zlib
@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 from PIL import Image
 
-from reflectance.imageio import XYZ_CHROMATICITIES, read_exr, write_exr_XYZ, write_png
+from reflectance.io.images import XYZ_CHROMATICITIES, read_exr, write_exr_XYZ, write_png
 
 
 def read_png_chunks(data):

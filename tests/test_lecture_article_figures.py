@@ -166,7 +166,7 @@ def test_fresnel_curves(config, tmp_path, grid):
         np.testing.assert_allclose(exact[inner], fresnel_by_hand(theta[inner], n), rtol=2e-5, atol=1e-6)
         np.testing.assert_allclose(schlick, F0 + (1 - F0) * (1 - np.cos(theta)) ** 5, rtol=2e-5, atol=1e-6)
     # Metals at normal incidence: Y of F0 = |(n - 1 + ik)/(n + 1 + ik)|^2 by colour-science's integration.
-    from reflectance.spectra import load_material
+    from reflectance.optics.spectra import load_material
 
     shape = colour.SpectralShape(grid[0], grid[-1], grid[1] - grid[0])
     cmfs = colour.MSDS_CMFS[config["colour"]["observer"]].copy().align(shape)

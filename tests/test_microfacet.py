@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 from scipy import integrate
 from scipy.optimize import brentq
 
-from reflectance.microfacet import (
+from reflectance.optics.microfacet import (
     C3_MAX_FOR_BETA,
     DISTRIBUTION_METHODS,
     beta_to_c1_Blinn1977,

@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from reflectance.fresnel import fresnel_dielectric_CookTorrance1982
-from reflectance.polar import (direction_from_angles, intensity_in_plane_of_incidence,
+from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
+from reflectance.papers.polar import (direction_from_angles, intensity_in_plane_of_incidence,
                               plane_of_incidence_vectors)
 
 

@@ -1,4 +1,4 @@
-"""2-D height profiles (reflectance.profile): visibility against rays marched here by brute force,
+"""2-D height profiles (reflectance.papers.profile): visibility against rays marched here by brute force,
 against the V-groove's closed form, and the projected-area identity of G1."""
 
 import math
@@ -8,7 +8,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from reflectance.profile import (crossings, first_blocker, first_hit, gaussian_profile, masking_G1,
+from reflectance.papers.profile import (crossings, first_blocker, first_hit, gaussian_profile, masking_G1,
                                  projected_length, trace_window, visible_fraction,
                                  visible_fraction_by_slope)
 

@@ -1,14 +1,14 @@
-"""End-to-end tests of reflectance.render on small images, against geometry written out here."""
+"""End-to-end tests of reflectance.render.pipeline on small images, against geometry written out here."""
 
 import colour
 import numpy as np
 import pytest
 
 from reflectance.cli import main
-from reflectance.imageio import read_exr
-from reflectance.render import image_difference_CIEDE2000, render, write_render
-from reflectance.scene import load_scene, scene_from_dict
-from reflectance.shading import emission_XYZ
+from reflectance.io.images import read_exr
+from reflectance.render.pipeline import image_difference_CIEDE2000, render, write_render
+from reflectance.render.scene import load_scene, scene_from_dict
+from reflectance.render.shading import emission_XYZ
 
 
 @pytest.fixture(scope="module")
@@ -127,9 +127,11 @@ def test_supersampling_converges(spectra):
 
 
 def test_table_is_within_dE2000_001_of_brute_force_on_the_copper_vase(root, spectra):
-    from reflectance.bench import load_bench_scene
+    from reflectance.papers.scenes import fig6_scene_CookTorrance1982
+    from reflectance.render.bench import load_bench_scene
 
-    scene = load_bench_scene(None, spectra_dir=spectra, width=48, height=64, supersample=2)
+    doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra)
+    scene = load_bench_scene(doc, spectra_dir=spectra, width=48, height=64, supersample=2)
     table = render(scene, spectral="table").XYZ
     brute = render(scene, spectral="brute-force").XYZ
     # CIELAB of both on one scale (the brute-force image's peak luminance at L* = 100)

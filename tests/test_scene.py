@@ -1,4 +1,4 @@
-"""Tests of reflectance.scene: scene files, validation errors by key, resolution."""
+"""Tests of reflectance.render.scene: scene files, validation errors by key, resolution."""
 
 import copy
 
@@ -7,8 +7,8 @@ import pandas as pd
 import pytest
 import yaml
 
-from reflectance.geometry import analytic_spheres
-from reflectance.scene import SceneError, load_scene, scene_from_dict, validate_scene
+from reflectance.geometry.shapes import analytic_spheres
+from reflectance.render.scene import SceneError, load_scene, scene_from_dict, validate_scene
 
 
 def minimal(**changes):
@@ -214,7 +214,7 @@ def test_watch_geometry_takes_the_builder_parameters(spectra):
 @pytest.mark.parametrize("n, k", [(1.8, 0.0), (200.0, 0.0), (0.27, 3.4)])
 def test_index_material_equals_a_flat_spectrum_file(tmp_path, n, k):
     """`index: {n, k}` gives the material that a CSV of the same n, k at every wavelength gives."""
-    from reflectance.spectra import write_spectrum_csv
+    from reflectance.optics.spectra import write_spectrum_csv
 
     write_spectrum_csv(pd.DataFrame({"wavelength_nm": [300.0, 900.0], "n": n, "k": k}),
                        tmp_path / "flat.csv")

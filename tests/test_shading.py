@@ -1,4 +1,4 @@
-"""Tests of reflectance.shading against formulas written out here, colour-science and brute force."""
+"""Tests of reflectance.render.shading against formulas written out here, colour-science and brute force."""
 
 import colour
 import numpy as np
@@ -6,13 +6,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.colorimetry import dominant_wavelength, tristimulus_weights
-from reflectance.shading import (SHADING_MODELS, Ambient, Light, RoughnessTexture,
+from reflectance.colour.colorimetry import dominant_wavelength, tristimulus_weights
+from reflectance.render.shading import (SHADING_MODELS, Ambient, Light, RoughnessTexture,
                                  ShadingMaterial, ambient_intensity, emission_XYZ,
                                  fresnel_XYZ_table, lookup_table, shade)
-from reflectance.texture import texture
-from reflectance.spectra import load_material
-from reflectance.visibility import DirectionalLight, PointLight
+from reflectance.geometry.texture import texture
+from reflectance.optics.spectra import load_material
+from reflectance.render.lights import DirectionalLight, PointLight
 
 OBSERVER = "CIE 1931 2 Degree Standard Observer"
 

@@ -8,8 +8,8 @@ from hypothesis import strategies as st
 from scipy import integrate
 from scipy.special import erf
 
-from reflectance.microfacet import distribution_Beckmann1963
-from reflectance.shadowing import (
+from reflectance.optics.microfacet import distribution_Beckmann1963
+from reflectance.optics.shadowing import (
     G1_Smith_Beckmann_Walter2007,
     G_over_NE_Blinn1977,
     SHADOWING_METHODS,
@@ -17,7 +17,7 @@ from reflectance.shadowing import (
     shadowing_Smith_Beckmann_Walter2007,
     shadowing_VCavity_Blinn1977,
 )
-from reflectance.vgroove import simulate_vgroove, vgroove_vertices
+from reflectance.papers.vgroove import simulate_vgroove, vgroove_vertices
 
 
 def direction(theta, phi=0.0):

@@ -1,4 +1,4 @@
-"""Tests of reflectance.spectra: exports, CSV checks, interpolation, F0, derived colours."""
+"""Tests of reflectance.optics.spectra: exports, CSV checks, interpolation, F0, derived colours."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.spectra import (
+from reflectance.optics.spectra import (
     EXPORT_RANGE_NM,
     SOURCES_COLUMNS,
     SpectraError,

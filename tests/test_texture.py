@@ -1,13 +1,13 @@
-"""Tests of reflectance.texture: shininess textures t(u, v) for Blinn 1977, Fig. 8."""
+"""Tests of reflectance.geometry.texture: shininess textures t(u, v) for Blinn 1977, Fig. 8."""
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.microfacet import (c3_texture_Blinn1977,
+from reflectance.optics.microfacet import (c3_texture_Blinn1977,
                                     distribution_TrowbridgeReitz_texture_Blinn1977)
-from reflectance.texture import (TEXTURE_METHODS, texture, texture_sinusoid, texture_spots,
+from reflectance.geometry.texture import (TEXTURE_METHODS, texture, texture_sinusoid, texture_spots,
                                  texture_value_noise)
 
 METHODS = sorted(TEXTURE_METHODS)

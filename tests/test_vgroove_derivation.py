@@ -6,9 +6,9 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from reflectance.shadowing import shadowing_VCavity_Blinn1977, vcavity_terms_Blinn1977
-from reflectance.vgroove import simulate_vgroove
-from reflectance.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
+from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977, vcavity_terms_Blinn1977
+from reflectance.papers.vgroove import simulate_vgroove
+from reflectance.papers.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
 
 
 def vec(theta_deg, phi_deg):

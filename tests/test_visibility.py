@@ -1,26 +1,17 @@
-"""Tests of reflectance.visibility against independent ray geometry written here."""
+"""Tests of reflectance.render.visibility against independent ray geometry written here."""
 
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from reflectance.geometry import VASE_PARTS, compose, plane, sphere, torus, vase
-from reflectance.visibility import (
-    Camera,
-    DirectionalLight,
-    PointLight,
-    as_light,
-    decode_ids,
-    encode_ids,
-    id_buffer,
-    light_vectors,
-    ray_sphere,
-    ray_triangle_MollerTrumbore1997,
-    shadow_mask,
-    shadow_masks,
-    visibility,
-)
+from reflectance.geometry.shapes import VASE_PARTS, compose, plane, sphere, torus, vase
+from reflectance.render.camera import Camera
+from reflectance.render.idbuffer import decode_ids, encode_ids, id_buffer
+from reflectance.render.lights import DirectionalLight, PointLight, as_light, light_vectors
+from reflectance.render.rays import ray_sphere, ray_triangle_MollerTrumbore1997
+from reflectance.render.shadows import shadow_mask, shadow_masks
+from reflectance.render.visibility import visibility
 
 
 # ---- independent helpers (textbook formulas, not the module's) --------------------------------
@@ -448,7 +439,7 @@ def test_sub_pixel_triangles_are_found_exactly():
     """The watch has many triangles smaller than a pixel at this size: samples whose true
     triangle never reached the ID buffer are found by the exact bounding-box search, so no
     covered sample is dropped, and every hit agrees with a brute-force nearest hit."""
-    from reflectance.watch import watch
+    from reflectance.geometry.watch import watch
 
     scene = compose([(watch(), 0)])
     cam = Camera((-10, -7, 11), (0, 0, -1.2), (0, 0, 1), 34.0, 240, 192)

@@ -1,12 +1,12 @@
-"""Tests of reflectance.watch: the LED watch of Cook & Torrance 1982, Fig. 8."""
+"""Tests of reflectance.geometry.watch: the LED watch of Cook & Torrance 1982, Fig. 8."""
 
 import numpy as np
 import pytest
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from reflectance.geometry import compose
-from reflectance.watch import WATCH_PARTS, watch
+from reflectance.geometry.shapes import compose
+from reflectance.geometry.watch import WATCH_PARTS, watch
 
 # lit segments of the digits of a seven-segment display, counted from the usual glyphs
 # (0: all but the middle; 1: the two right; 7: top and the two right; 8: all seven; ...)

@@ -66,7 +66,7 @@ def test_every_output_is_readable(built):
     import pandas as pd
     from PIL import Image
 
-    from reflectance.imageio import read_exr
+    from reflectance.io.images import read_exr
 
     files = results(built)
     assert len(files) >= len(FOUNDATION)

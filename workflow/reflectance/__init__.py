@@ -1,27 +1,35 @@
 """reflectance: spectral reproduction and audit of the classic reflectance papers.
 
-The physics and colour science are re-exported here (colour-science style, explicit ``__all__``);
-the renderer's modules (geometry, visibility, scene, shading, render), which load VTK, are
-imported from their own modules: ``from reflectance.render import render``.
+The folders are the architecture; data flows one way, from the bottom of this list to the top:
+
+- ``cli``, ``config``, ``scripting``: the ``reflectance`` command and the workflow's support;
+- ``papers``: what only one text needs (V-groove simulations, plots, scenes from config.yaml);
+- ``audit``: how far each shortcut lies from the exact spectral answer;
+- ``render``: a spectral renderer that takes a scene (camera ... shading, scene files, pipeline);
+- ``geometry``: shapes, the watch, texture patterns;
+- ``optics``: spectra, Fresnel, microfacet D, shadowing G, BRDFs;
+- ``colour``: CIE colorimetry and display encoding;
+- ``io``: atomic, deterministic file output.
+
+Each subpackage names its public functions in ``__all__`` and loads them on first use, so
+``import reflectance`` loads neither colour-science nor VTK: ``from reflectance.optics import
+fresnel_conductor``, ``from reflectance.render import render``.
 """
 
-import importlib as _importlib
-
-from .brdf import *  # noqa: F401,F403
-from .colorimetry import *  # noqa: F401,F403
-from .display import *  # noqa: F401,F403
-from .fresnel import *  # noqa: F401,F403
-from .microfacet import *  # noqa: F401,F403
-from .shadowing import *  # noqa: F401,F403
-from .spectra import *  # noqa: F401,F403
+from importlib import import_module
 
 __version__ = "0.1.0"
 
-# Some public functions share their module's name (fresnel, brdf, shadowing): take each
-# module's __all__ from the module object itself.
-__all__ = [
-    name
-    for module in ("spectra", "fresnel", "microfacet", "shadowing", "brdf", "colorimetry",
-                   "display")
-    for name in _importlib.import_module(f"{__name__}.{module}").__all__
-]
+_SUBPACKAGES = ("optics", "colour", "geometry", "render", "audit", "papers", "io")
+
+__all__ = ["__version__", *_SUBPACKAGES]
+
+
+def __getattr__(name):
+    if name in _SUBPACKAGES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

@@ -17,7 +17,7 @@ DEFAULT_CONFIG = "config.yaml"
 
 def _grid_and_colour(args):
     """Wavelength grid and colour defaults: from --config if it exists, else the built-in ones."""
-    from .spectra import wavelength_grid
+    from reflectance.optics.spectra import wavelength_grid
 
     grid = {"start_nm": 360, "end_nm": 830, "step_nm": 5}
     path = Path(args.config)
@@ -39,7 +39,7 @@ def _common(parser):
 
 
 def _load(args, name, grid):
-    from .spectra import load_material
+    from reflectance.optics.spectra import load_material
 
     try:
         return load_material(name, grid, spectra_dir=args.spectra_dir)
@@ -50,7 +50,7 @@ def _load(args, name, grid):
 # -- reflectance colour -------------------------------------------------------------------------
 
 def _add_colour(sub):
-    from .colour_shift import COLOUR_METHODS
+    from reflectance.audit.colour_shift import COLOUR_METHODS
 
     p = sub.add_parser(
         "colour", help="colour of a smooth material vs incidence angle (CSV)",
@@ -79,8 +79,8 @@ def _add_colour(sub):
 
 
 def _run_colour(args):
-    from .colorimetry import tristimulus_weights
-    from .colour_shift import colour_table
+    from reflectance.colour.colorimetry import tristimulus_weights
+    from reflectance.audit.colour_shift import colour_table
 
     grid = _grid_and_colour(args)
     material = _load(args, args.material, grid)
@@ -107,7 +107,7 @@ def _add_spectra(sub):
 
 
 def _run_spectra(args):
-    from .spectra import list_materials
+    from reflectance.optics.spectra import list_materials
 
     try:
         table = list_materials(args.spectra_dir)
@@ -119,7 +119,7 @@ def _run_spectra(args):
 
 # -- reflectance brdf ---------------------------------------------------------------------------
 
-#: Command-line names of the models of :data:`reflectance.brdf.BRDF_METHODS` (which are accepted
+#: Command-line names of the models of :data:`reflectance.optics.brdf.BRDF_METHODS` (which are accepted
 #: too, in any letter case).
 BRDF_ALIASES = {
     "lambert": "Lambert", "phong": "Phong1975", "blinn-phong": "BlinnPhong1977",
@@ -155,7 +155,7 @@ illuminant's tristimulus weights). With --material also X, Y, Z: the reflected r
 light of the illuminant's colour whose irradiance normal to its beam has Y = 1, i.e.
 XYZ = cos(incidence) sum_lambda f(lambda) W(lambda), so Y = total cos(incidence).
 
-Material: --material takes F per wavelength from the material's n, k (reflectance.fresnel,
+Material: --material takes F per wavelength from the material's n, k (reflectance.optics.fresnel,
 --fresnel method) and the diffuse albedo F0 (Cook & Torrance 1982 Fig. 7: R_d = F0/pi); --n
 (and --k) give one index for all wavelengths. The microfacet models (torrance-sparrow,
 cook-torrance) need one of them for their Fresnel term; the empirical ones use it for the
@@ -171,7 +171,7 @@ s), --beta Blinn's half-angle in degrees (phong, blinn-phong: c1; torrance-sparr
 
 
 def _add_brdf(sub):
-    from .fresnel import FRESNEL_METHODS
+    from reflectance.optics.fresnel import FRESNEL_METHODS
 
     names = ", ".join(BRDF_ALIASES)
     p = sub.add_parser(
@@ -181,7 +181,7 @@ def _add_brdf(sub):
                     "--material, X, Y, Z.",
         epilog=_BRDF_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("model", metavar="MODEL",
-                   help=f"one of {names} (or a key of reflectance.brdf.BRDF_METHODS)")
+                   help=f"one of {names} (or a key of reflectance.optics.brdf.BRDF_METHODS)")
     p.add_argument("--incidence", type=float, required=True, metavar="DEG",
                    help="angle of the light from the normal, 0 <= DEG < 90")
     p.add_argument("--angles", type=float, nargs="+", required=True, metavar="DEG",
@@ -215,7 +215,7 @@ def _add_brdf(sub):
 
 
 def _brdf_method(name):
-    from .brdf import BRDF_METHODS
+    from reflectance.optics.brdf import BRDF_METHODS
 
     by_lower = {k.lower(): k for k in BRDF_METHODS} | BRDF_ALIASES
     try:
@@ -231,7 +231,7 @@ def _brdf_parameters(method, args, albedo):
     multiplies the diffuse-only evaluation)."""
     import numpy as np
 
-    from . import microfacet
+    from reflectance.optics import microfacet as microfacet
 
     diffuse_name, specular_name, roughness = _BRDF_OPTIONS[method]
     parameters = {}
@@ -279,9 +279,9 @@ def _run_brdf(args):
     import numpy as np
     import pandas as pd
 
-    from .brdf import brdf
-    from .colorimetry import tristimulus_weights
-    from .fresnel import F0_from_nk
+    from reflectance.optics.brdf import brdf
+    from reflectance.colour.colorimetry import tristimulus_weights
+    from reflectance.optics.fresnel import F0_from_nk
 
     method = _brdf_method(args.model)
     angles = np.asarray(args.angles, dtype=np.float64)
@@ -367,8 +367,8 @@ def _add_render(sub):
 
 
 def _run_render(args):
-    from .render import render, write_render
-    from .scene import load_scene
+    from reflectance.render.pipeline import render, write_render
+    from reflectance.render.scene import load_scene
 
     if Path(args.output).suffix.lower() != ".exr":
         raise SystemExit(f"reflectance: -o {args.output}: the output must end in .exr")
@@ -417,17 +417,26 @@ def _add_bench(sub):
     p.set_defaults(run=_run_bench)
 
 
+def _default_bench_scene(spectra_dir):
+    """The copper vase of Cook & Torrance 1982 Fig. 6b (irradiance reading), from config.yaml."""
+    from reflectance.papers.scenes import fig6_scene_CookTorrance1982
+
+    doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra_dir)
+    doc["_source"] = "config.yaml figures.cook_torrance_1982.fig6 panel b (irradiance)"
+    return doc
+
+
 def _run_bench(args):
     import json
 
-    from .bench import DEFAULT_SCENE, format_report, run_bench
+    from reflectance.render.bench import format_report, run_bench
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")
     try:
-        results = run_bench(args.scene or DEFAULT_SCENE, args.sizes, args.supersample,
-                            args.runs, args.brute_force_runs, args.grids, args.grid_size,
-                            args.spectra_dir)
+        scene = args.scene or _default_bench_scene(args.spectra_dir)
+        results = run_bench(scene, args.sizes, args.supersample, args.runs,
+                            args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))

@@ -35,7 +35,7 @@ def validate_schema(config, schema_path=SCHEMA_PATH, source="config.yaml"):
 
 def wavelengths_from_config(config):
     """The spectral grid of ``config['wavelengths']`` (inclusive, in nm)."""
-    from .spectra import wavelength_grid
+    from reflectance.optics.spectra import wavelength_grid
 
     w = config["wavelengths"]
     return wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
@@ -88,7 +88,7 @@ def check_config(config, check_spectra=True):
     - the illuminant and observer are names colour-science knows;
     - every material a figure names is defined under ``materials``;
     - the wavelength grid is ordered and inside every material's data range (taken from the
-      data source, see :func:`reflectance.spectra.coverage_nm`).
+      data source, see :func:`reflectance.optics.spectra.coverage_nm`).
     """
     import colour
 
@@ -117,7 +117,7 @@ def check_config(config, check_spectra=True):
             )
     problems += _table1_references(config)
     if check_spectra and w and not problems:
-        from .spectra import coverage_nm
+        from reflectance.optics.spectra import coverage_nm
 
         lo_grid, hi_grid = float(w["start_nm"]), float(w["end_nm"])
         for name in sorted(known):

@@ -1,4 +1,4 @@
-# Rendered figures (reflectance.render): Cook & Torrance 1982, Fig. 6, the two vases, once per
+# Rendered figures (reflectance.render.pipeline): Cook & Torrance 1982, Fig. 6, the two vases, once per
 # reading of the paper's ambient term (figures.cook_torrance_1982.fig6.ambient_readings).
 
 CT82_FIG6 = CT82["fig6"]
@@ -41,7 +41,7 @@ rule ct82_fig6:
         "../scripts/cook_torrance_1982_fig6.py"
 
 
-# Rendered figures of Blinn 1977 (reflectance.scenes_from_config): Fig. 7, Phong vs Torrance-Sparrow,
+# Rendered figures of Blinn 1977 (reflectance.papers.scenes): Fig. 7, Phong vs Torrance-Sparrow,
 # edge and front lit, once per reading of Phong's p_s; the same as a light sweep (GIF); Fig. 8,
 # shininess varying with two texture patterns.
 

@@ -8,10 +8,10 @@ Cook-Torrance k_spec is a BRDF. Each panel is scaled to its own maximum."""
 import numpy as np
 import pandas as pd
 
-from reflectance.brdf import brdf
-from reflectance.microfacet import distribution
-from reflectance.plotting import new_figure, savefig
-from reflectance.polar import plane_of_incidence_vectors
+from reflectance.optics.brdf import brdf
+from reflectance.optics.microfacet import distribution
+from reflectance.io.figures import new_figure, savefig
+from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
 

@@ -7,8 +7,8 @@ article's own printed previous step, which shows where a discrepancy comes from.
 import numpy as np
 import pandas as pd
 
-from reflectance.brdf import brdf
-from reflectance.plotting import new_figure, savefig
+from reflectance.optics.brdf import brdf
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 
 

@@ -7,13 +7,13 @@ from pathlib import Path
 
 import pandas as pd
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import display_from_colour, scene_document
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import display_from_colour, scene_document
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material, wavelength_grid
+from reflectance.optics.spectra import load_material, wavelength_grid
 
 with script_log(snakemake) as log:
     cfg, out, colour = snakemake.params.fig, snakemake.output, snakemake.params.colour

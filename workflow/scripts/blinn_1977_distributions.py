@@ -7,11 +7,11 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from reflectance.microfacet import (beta_to_c1_Blinn1977, beta_to_c2_Blinn1977,
+from reflectance.optics.microfacet import (beta_to_c1_Blinn1977, beta_to_c2_Blinn1977,
                                     beta_to_c3_Blinn1977, distribution_Phong1975,
                                     distribution_TorranceSparrow1967,
                                     distribution_TrowbridgeReitz1975)
-from reflectance.plotting import new_figure, savefig
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 
 NAMES = {"D1": "D1 = cos^c1 \u03b1 (Phong)", "D2": "D2 = exp(\u2212(\u03b1 c2)\u00b2) (Torrance-Sparrow)",

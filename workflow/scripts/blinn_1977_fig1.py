@@ -4,10 +4,10 @@ simulated escaping fraction beside Blinn's closed form G = min(1, G_b, G_c)."""
 
 import pandas as pd
 
-from reflectance.plotting import new_figure, savefig
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.vgroove_derivation import vgroove_case
-from reflectance.vgroove_plot import COLOURS, draw_groove
+from reflectance.papers.vgroove_derivation import vgroove_case
+from reflectance.papers.vgroove_plot import COLOURS, draw_groove
 
 TITLES = {"a": "(a) no attenuation", "b": "(b) reflected light partly masked",
           "c": "(c) incident light partly shadowed"}

@@ -5,10 +5,10 @@ Blinn's angles a..f. Every point and number comes from the ray simulation of the
 import numpy as np
 import pandas as pd
 
-from reflectance.plotting import new_figure, savefig
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
-from reflectance.vgroove_plot import (COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove,
+from reflectance.papers.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
+from reflectance.papers.vgroove_plot import (COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove,
                                       draw_top_view)
 
 # Per case: what is blocked, along which direction, Blinn's closed form, the simulated fraction.

@@ -6,10 +6,10 @@ import numpy as np
 import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
-from reflectance.fresnel import fresnel_dielectric_CookTorrance1982
-from reflectance.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
-from reflectance.plotting import new_figure, savefig
-from reflectance.polar import intensity_in_plane_of_incidence
+from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
+from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
+from reflectance.io.figures import new_figure, savefig
+from reflectance.papers.polar import intensity_in_plane_of_incidence
 from reflectance.scripting import script_log
 
 with script_log(snakemake) as log:
@@ -56,7 +56,7 @@ with script_log(snakemake) as log:
                 ax.plot(t * np.cos(arc), t * np.sin(arc), color="0.85", lw=0.6, zorder=0)
                 for x in (-t, t):
                     ax.text(x, -0.02 * R, f"{t:g}", ha="center", va="top", fontsize=7, color="0.4")
-            # Blinn's light comes from the right: reflectance.polar's plane seen from behind (x -> -x)
+            # Blinn's light comes from the right: reflectance.papers.polar's plane seen from behind (x -> -x)
             ax.plot(-r * np.sin(theta_r), r * np.cos(theta_r), color="#0072b2", lw=1.6)
             light = 0.97 * R * np.array([np.sin(theta_i), np.cos(theta_i)])
             ax.annotate("", xy=0.04 * light, xytext=light,

@@ -6,10 +6,10 @@ i = 1 is display white). One figure per reading of Phong's p_s; a table of the d
 import numpy as np
 import pandas as pd
 
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import blinn_scene_Blinn1977, materials_Blinn1977
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",

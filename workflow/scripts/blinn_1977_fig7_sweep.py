@@ -9,13 +9,14 @@ import numpy as np
 import pandas as pd
 from PIL import Image, ImageDraw, ImageFont
 
-from reflectance.io import atomic_write
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import RenderResult, display_image, shade_samples
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import blinn_scene_Blinn1977, materials_Blinn1977
+from reflectance.io.atomic import atomic_write
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import RenderResult, display_image, shade_samples
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
-from reflectance.visibility import shadow_masks, visibility
+from reflectance.render.shadows import shadow_masks
+from reflectance.render.visibility import visibility
 
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 

@@ -8,13 +8,13 @@ import json
 import numpy as np
 import pandas as pd
 
-from reflectance.microfacet import c3_texture_Blinn1977
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import blinn_scene_Blinn1977
+from reflectance.optics.microfacet import c3_texture_Blinn1977
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import blinn_scene_Blinn1977
 from reflectance.scripting import script_log
-from reflectance.texture import texture
+from reflectance.geometry.texture import texture
 
 with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output

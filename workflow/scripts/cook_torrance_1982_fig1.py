@@ -3,7 +3,7 @@ that holds it in this project (a function, or an argument shown as ``function(ar
 
 import pandas as pd
 
-from reflectance.plotting import new_figure, savefig
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 
 with script_log(snakemake) as log:

@@ -6,8 +6,8 @@ import pandas as pd
 import pyvista as pv
 from matplotlib import font_manager
 
-from reflectance.plotting import off_screen_plotter, save_plotter
-from reflectance.polar import direction_from_angles
+from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
 
 FONT = font_manager.findfont("DejaVu Sans")  # has the Greek letters VTK's own fonts lack

@@ -7,9 +7,9 @@ import pyvista as pv
 from scipy.integrate import simpson
 from matplotlib import font_manager
 
-from reflectance.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
-from reflectance.plotting import off_screen_plotter, save_plotter
-from reflectance.polar import direction_from_angles
+from reflectance.optics.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
+from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
 
 FONT = font_manager.findfont("DejaVu Sans")

@@ -7,11 +7,11 @@ import colour
 
 import pandas as pd
 
-from reflectance.colorimetry import illuminant_sd
-from reflectance.plotting import new_figure, savefig
+from reflectance.colour.colorimetry import illuminant_sd
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.fresnel import F0_from_nk
-from reflectance.spectra import load_material, read_spectrum_csv, wavelength_grid
+from reflectance.optics.fresnel import F0_from_nk
+from reflectance.optics.spectra import load_material, read_spectrum_csv, wavelength_grid
 
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour

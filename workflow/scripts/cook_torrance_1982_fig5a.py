@@ -7,10 +7,10 @@ import numpy as np
 import pandas as pd
 import pyvista as pv
 
-from reflectance.fresnel import fresnel_conductor
-from reflectance.plotting import off_screen_plotter, save_plotter
+from reflectance.optics.fresnel import fresnel_conductor
+from reflectance.io.figures import off_screen_plotter, save_plotter
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material, wavelength_grid
+from reflectance.optics.spectra import load_material, wavelength_grid
 
 with script_log(snakemake) as log:
     fig_cfg = snakemake.params.fig

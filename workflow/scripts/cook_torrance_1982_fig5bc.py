@@ -7,12 +7,12 @@ from pathlib import Path
 import numpy as np
 from matplotlib.patches import Rectangle
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.colour_shift import COLOUR_METHODS, colour_table
-from reflectance.imageio import write_exr_XYZ
-from reflectance.plotting import new_figure, savefig
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.audit.colour_shift import COLOUR_METHODS, colour_table
+from reflectance.io.images import write_exr_XYZ
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material, wavelength_grid
+from reflectance.optics.spectra import load_material, wavelength_grid
 
 LABELS = {"exact": "(b) exact n, k", "approximation": "(c) C&T approximation",
           "fitted": "k = 0 fit per wavelength", "schlick": "Schlick 1994", "f82": "F82 tint"}

@@ -1,5 +1,5 @@
 """Cook & Torrance 1982, Fig. 6: (a) a copper-coloured plastic vase, (b) a copper vase, rendered
-spectrally (reflectance.render) with the paper's parameters; the ambient term read as printed or as
+spectrally (reflectance.render.pipeline) with the paper's parameters; the ambient term read as printed or as
 1 % of the lights' irradiance (wildcard ``reading``). Also tabulates how large the ambient term is
 against the direct light."""
 
@@ -8,12 +8,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import panel_material, vase_scene_CookTorrance1982
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
-from reflectance.shading import ambient_intensity
+from reflectance.render.shading import ambient_intensity
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",

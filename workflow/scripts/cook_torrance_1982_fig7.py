@@ -1,5 +1,5 @@
 """Cook & Torrance 1982, Fig. 7: "A variety of vases", six metals and six nonmetals with
-"R_d = F0/pi", rendered one vase at a time (reflectance.render) under Fig. 6's lighting and
+"R_d = F0/pi", rendered one vase at a time (reflectance.render.pipeline) under Fig. 6's lighting and
 composed into one grid shown as ONE scene: one Cook & Torrance exposure for all vases. Plus
 labelled extras (not in the paper) and a table of each vase's parameters and mean colour."""
 
@@ -8,14 +8,14 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.composite import common_exposure, covered_rows, image_grid
-from reflectance.plotting import savefig
-from reflectance.render import render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import vase_scene_CookTorrance1982
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.render.composite import common_exposure, covered_rows, image_grid
+from reflectance.io.figures import savefig
+from reflectance.render.pipeline import render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
-from reflectance.spectra import list_materials, load_material
+from reflectance.optics.spectra import list_materials, load_material
 
 GROUPS = {"metal": "six metals: Fig. 6b's s, d, D, F from measured n, k",
           "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "extra, not in the paper"}

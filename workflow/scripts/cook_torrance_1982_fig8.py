@@ -1,4 +1,4 @@
-"""Cook & Torrance 1982, Fig. 8: "A watch" (reflectance.watch), rendered spectrally under a single
+"""Cook & Torrance 1982, Fig. 8: "A watch" (reflectance.geometry.watch), rendered spectrally under a single
 light: gold case, bezel and outer band (links with a rougher interior than border), stainless-steel
 inner band, a dark face and red LEDs of dominant wavelength 640 nm. Also tabulates each part's
 material and what the image shows of it."""
@@ -8,16 +8,16 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.composite import part_pixels
-from reflectance.plotting import new_figure, savefig
-from reflectance.render import display_image, render_to_files
-from reflectance.scene import scene_from_dict
-from reflectance.scenes_from_config import display_from_colour, panel_material, scene_document
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.render.composite import part_pixels
+from reflectance.io.figures import new_figure, savefig
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.scenes import display_from_colour, panel_material, scene_document
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material
-from reflectance.visibility import visibility
-from reflectance.watch import WATCH_PARTS
+from reflectance.optics.spectra import load_material
+from reflectance.render.visibility import visibility
+from reflectance.geometry.watch import WATCH_PARTS
 
 
 def part_material(name, spec, fig6, table1):

@@ -7,11 +7,11 @@ import numpy as np
 import pandas as pd
 from matplotlib.patches import Rectangle
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.display import XYZ_to_display
-from reflectance.plotting import new_figure, savefig
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import XYZ_to_display
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.spectra import list_materials, load_material, wavelength_grid
+from reflectance.optics.spectra import list_materials, load_material, wavelength_grid
 
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour

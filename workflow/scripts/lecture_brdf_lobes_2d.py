@@ -7,12 +7,12 @@ import numpy as np
 import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
-from reflectance.brdf import brdf
-from reflectance.plotting import new_figure, savefig
-from reflectance.polar import plane_of_incidence_vectors
+from reflectance.optics.brdf import brdf
+from reflectance.io.figures import new_figure, savefig
+from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
-# config key -> (reflectance.brdf method, panel title)
+# config key -> (reflectance.optics.brdf method, panel title)
 MODELS = {
     "diffuse": ("Lambert", "Diffuse (Lambert)"),
     "phong": ("Phong1975", "Phong, (R\u00b7V)$^{c_1}$/(N\u00b7L)"),

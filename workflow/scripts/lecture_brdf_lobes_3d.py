@@ -5,12 +5,12 @@ radius along every outgoing direction V is the BRDF itself (not f cos theta_o), 
 import numpy as np
 import pyvista as pv
 
-from reflectance.brdf import brdf
-from reflectance.plotting import off_screen_plotter, save_plotter
-from reflectance.polar import direction_from_angles, plane_of_incidence_vectors
+from reflectance.optics.brdf import brdf
+from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.papers.polar import direction_from_angles, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
-# config key -> (reflectance.brdf method, panel title)
+# config key -> (reflectance.optics.brdf method, panel title)
 MODELS = {
     "diffuse": ("Lambert", "Diffuse (Lambert)"),
     "phong": ("Phong1975", "Phong"),

@@ -7,11 +7,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.colorimetry import tristimulus_weights
-from reflectance.fresnel import fresnel
-from reflectance.plotting import new_figure, savefig
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.optics.fresnel import fresnel
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
-from reflectance.spectra import load_material, wavelength_grid
+from reflectance.optics.spectra import load_material, wavelength_grid
 
 with script_log(snakemake) as log:
     cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour

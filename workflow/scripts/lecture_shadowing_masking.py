@@ -9,10 +9,10 @@ import numpy as np
 import pandas as pd
 from matplotlib.collections import LineCollection
 
-from reflectance.plotting import new_figure, savefig
-from reflectance.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
+from reflectance.io.figures import new_figure, savefig
+from reflectance.papers.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
-from reflectance.shadowing import G1_Smith_Beckmann_Walter2007
+from reflectance.optics.shadowing import G1_Smith_Beckmann_Walter2007
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig

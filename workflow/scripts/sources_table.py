@@ -3,7 +3,7 @@
 from pathlib import Path
 
 from reflectance.scripting import script_log
-from reflectance.spectra import sources_table, write_sources_csv
+from reflectance.optics.spectra import sources_table, write_sources_csv
 
 with script_log(snakemake) as log:
     table = sources_table(snakemake.params.materials, spectra_dir=Path(snakemake.output[0]).parent)

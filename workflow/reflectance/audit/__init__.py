@@ -1,0 +1,36 @@
+"""Audit: how far each shortcut of the papers lies from the exact spectral answer.
+
+Modules: colour_shift (a smooth material"s colour against angle, per Fresnel method).
+
+Public names are loaded on first use (``from reflectance.audit import name``), so importing
+the package stays cheap.
+"""
+
+from importlib import import_module
+
+#: this package"s modules (a name equal to a module"s is the module)
+_MODULES = ("colour_shift",)
+
+#: public name -> module of this package that defines it
+_EXPORTS = {
+    "COLOUR_METHODS": "colour_shift",
+    "reflected_XYZ": "colour_shift",
+    "colour_interpolation_CookTorrance1982": "colour_shift",
+    "reflected_XYZ_approximation_CookTorrance1982": "colour_shift",
+    "colour_XYZ": "colour_shift",
+    "colour_table": "colour_shift",
+}
+
+__all__ = [*_MODULES, *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    if name in _MODULES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

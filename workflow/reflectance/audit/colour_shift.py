@@ -1,0 +1,150 @@
+"""The colour of light reflected by a smooth surface as a function of incidence angle.
+
+Cook & Torrance 1982 (section "Spectral composition of the reflected light", Figs. 4 and 5): the
+reflected spectral energy distribution is the light's SPD times the Fresnel reflectance
+F(lambda, theta); its XYZ follow by integration against the CMFs. Because XYZ is linear in the
+spectrum, ``XYZ(theta) = F(., theta) @ W`` with the tristimulus weights ``W`` that already hold the
+illuminant and the CMFs (see :func:`reflectance.colour.colorimetry.tristimulus_weights`).
+
+The module also holds the paper's cheap approximation of the colour shift (Fig. 5c) and the audit
+table that compares every Fresnel shortcut with the exact spectral answer.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from reflectance.optics.fresnel import fresnel, fresnel_dielectric_CookTorrance1982, n_from_F0_CookTorrance1982
+
+__all__ = [
+    "COLOUR_METHODS",
+    "reflected_XYZ",
+    "colour_interpolation_CookTorrance1982",
+    "reflected_XYZ_approximation_CookTorrance1982",
+    "colour_XYZ",
+    "colour_table",
+]
+
+
+def reflected_XYZ(material, cos_theta, W, method="exact"):
+    """XYZ of the light a smooth ``material`` reflects at incidence cosine ``cos_theta``.
+
+    Cook & Torrance 1982, Fig. 4b and 5b: reflected SPD = I(lambda) F(lambda, theta), integrated
+    against the CMFs; ``W`` carries I(lambda) and the CMFs, so the light's white has Y = 1.
+
+    Parameters
+    ----------
+    material : reflectance.optics.spectra.Material
+    cos_theta : array_like
+        Cosines of the incidence angle, any shape.
+    W : ndarray, shape (n_wavelengths, 3)
+    method : str
+        A Fresnel method of :data:`reflectance.optics.fresnel.FRESNEL_METHODS`.
+
+    Returns
+    -------
+    ndarray, shape cos_theta.shape + (3,)
+    """
+    c = np.asarray(cos_theta, dtype=float)[..., None]
+    F = fresnel(c, material.n, material.k, method=method)
+    return F @ W
+
+
+def colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F_0, F_90=1.0):
+    """Cook & Torrance 1982's colour-shift approximation ("Spectral composition", equation for Red_theta).
+
+    ``Red_theta = Red_0 + (Red_pi/2 - Red_0) max(0, F_theta - F_0) / (F_pi/2 - F_0)``, applied to
+    each component. The paper writes it for RGB; RGB is a linear map of XYZ, so interpolating XYZ
+    gives the same colour before the display's non-linear steps.
+    """
+    # Cook & Torrance 1982, "Spectral composition": Red_theta = Red_0 + (Red_90 - Red_0) max(0, F_theta - F_0)/(F_90 - F_0)
+    t = np.maximum(0.0, np.asarray(F_theta) - F_0) / (F_90 - F_0)
+    XYZ_0 = np.asarray(XYZ_0, dtype=float)
+    XYZ_90 = np.asarray(XYZ_90, dtype=float)
+    return XYZ_0 + (XYZ_90 - XYZ_0) * np.asarray(t)[..., None]
+
+
+def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average_range_nm):
+    """The colour of Fig. 5c: the paper's approximation of the colour shift.
+
+    F is computed once, for the index n that corresponds to the material's average normal
+    reflectance over ``average_range_nm`` (k = 0); it interpolates between the colour at normal
+    incidence (exact) and the light's colour at grazing incidence, where F = 1 at every wavelength.
+    """
+    F0_average = material.mean_F0(average_range_nm)
+    n_average = n_from_F0_CookTorrance1982(F0_average)  # C&T 1982: n = (1 + sqrt F0)/(1 - sqrt F0)
+    c = np.asarray(cos_theta, dtype=float)
+    F_theta = fresnel_dielectric_CookTorrance1982(c, n_average)
+    XYZ_0 = material.F0 @ W  # the colour at theta = 0 (C&T 1982, Fig. 4b)
+    XYZ_90 = W.sum(axis=0)  # F_pi/2 = 1: the light's colour
+    return colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F0_average)
+
+
+#: How the colour of each row of Fig. 5 and of ``reflectance colour`` is obtained.
+COLOUR_METHODS = {
+    "exact": "exact complex-index Fresnel per wavelength (C&T 1982 Fig. 5b)",
+    "approximation": "C&T 1982's interpolation with F of the average-F0 index (Fig. 5c)",
+    "fitted": "C&T 1982's per-wavelength k = 0 fit of n to F0, then the Fresnel equation",
+    "schlick": "Schlick 1994 from the exact F0 per wavelength",
+    "f82": "F82-tint model (Hoffman 2019; Kutz et al. 2021) from exact F0 and F(82 deg)",
+}
+
+
+def colour_XYZ(material, cos_theta, W, method="exact", average_range_nm=(380, 780)):
+    """XYZ of the reflected light for any of :data:`COLOUR_METHODS`."""
+    if method not in COLOUR_METHODS:
+        raise ValueError(f"unknown colour method {method!r}; known: {', '.join(COLOUR_METHODS)}")
+    if method == "approximation":
+        return reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average_range_nm)
+    return reflected_XYZ(material, cos_theta, W, method=method)
+
+
+def colour_table(material, angles_deg, W, methods=("exact",), space="sRGB",
+                 clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
+                 expose=True, observer="CIE 1931 2 Degree Standard Observer"):
+    """The audit table: one row per (method, angle), with display RGB and dE2000 vs exact.
+
+    With ``expose=True`` all rows form one scene for Cook & Torrance's exposure: they are scaled
+    together (with 90 degrees among the angles, the light's own colour, F = 1, sets the scale).
+    With ``expose=False`` the light's white is displayed at Y = 1 and nothing is rescaled.
+
+    Columns: method, angle_deg, X, Y, Z, x, y, dominant_nm, purity, R, G, B, dE2000_vs_exact.
+    R, G, B are display values (transfer function applied) after gamut clipping.
+    """
+    import colour
+
+    from reflectance.colour.colorimetry import dominant_wavelength
+    from reflectance.colour.display import XYZ_to_display
+
+    angles = np.asarray(angles_deg, dtype=float)
+    if angles.ndim != 1 or np.any(angles < 0) or np.any(angles > 90):
+        raise ValueError(f"angles must be a list of degrees in [0, 90], got {angles_deg!r}")
+    cos_theta = np.clip(np.cos(np.radians(angles)), 0.0, 1.0)
+    white = W.sum(axis=0)
+    white_xy = colour.XYZ_to_xy(white)
+    exact = colour_XYZ(material, cos_theta, W, "exact")
+    lab_exact = colour.XYZ_to_Lab(exact, white_xy)
+
+    blocks = []
+    XYZ_all = np.concatenate(
+        [colour_XYZ(material, cos_theta, W, m, average_range_nm) for m in methods]
+    ).reshape(len(methods), len(angles), 3)
+    # The white of this grid (W.sum), not the 1 nm table's, maps to display white exactly.
+    RGB_all = XYZ_to_display(XYZ_all, space=space, clip=clip, expose=expose, illuminant=white,
+                             observer=observer)
+    for i, method in enumerate(methods):
+        XYZ = XYZ_all[i]
+        xy = colour.XYZ_to_xy(XYZ)
+        wl, purity = dominant_wavelength(XYZ, white, observer=observer)
+        dE = colour.delta_E(colour.XYZ_to_Lab(XYZ, white_xy), lab_exact, method="CIE 2000")
+        blocks.append(pd.DataFrame({
+            "method": method,
+            "angle_deg": angles,
+            "X": XYZ[:, 0], "Y": XYZ[:, 1], "Z": XYZ[:, 2],
+            "x": xy[:, 0], "y": xy[:, 1],
+            "dominant_nm": wl, "purity": purity,
+            "R": RGB_all[i, :, 0], "G": RGB_all[i, :, 1], "B": RGB_all[i, :, 2],
+            "dE2000_vs_exact": dE,
+        }))
+    return pd.concat(blocks, ignore_index=True)

@@ -1,0 +1,52 @@
+"""Colour: CIE colorimetry and display encoding, knowing nothing of optics or rendering.
+
+Modules: colorimetry (CMFs, illuminants, tristimulus weights, dominant wavelength), display (RGB spaces,
+Cook & Torrance"s exposure, gamut clipping, transfer functions).
+
+Public names are loaded on first use (``from reflectance.colour import name``), so importing
+the package stays cheap.
+"""
+
+from importlib import import_module
+
+#: this package"s modules (a name equal to a module"s is the module)
+_MODULES = ("colorimetry", "display")
+
+#: public name -> module of this package that defines it
+_EXPORTS = {
+    "OBSERVER_DEFAULT": "colorimetry",
+    "cmfs": "colorimetry",
+    "illuminant_sd": "colorimetry",
+    "tristimulus_weights": "colorimetry",
+    "white_XYZ": "colorimetry",
+    "spectrum_to_XYZ": "colorimetry",
+    "dominant_wavelength": "colorimetry",
+    "DISPLAY_SPACES": "display",
+    "CHROMATIC_ADAPTATION_TRANSFORM": "display",
+    "DisplaySpace": "display",
+    "display_space": "display",
+    "XYZ_to_linear_RGB": "display",
+    "linear_RGB_to_XYZ": "display",
+    "expose_CookTorrance1982": "display",
+    "gamut_clip_CookTorrance1982": "display",
+    "gamut_clip_channels": "display",
+    "gamut_clip_CSSColor4": "display",
+    "GAMUT_CLIP_METHODS": "display",
+    "gamut_clip": "display",
+    "encode": "display",
+    "XYZ_to_display": "display",
+}
+
+__all__ = [*_MODULES, *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    if name in _MODULES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

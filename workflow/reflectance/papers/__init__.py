@@ -1,0 +1,66 @@
+"""Papers: what only one text needs: its simulations, plots and scenes from config.yaml.
+
+Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn"s V-groove), profile (random-surface
+shadowing), polar (plane-of-incidence curves), scenes (the rendered figures" scenes).
+
+Public names are loaded on first use (``from reflectance.papers import name``), so importing
+the package stays cheap.
+"""
+
+from importlib import import_module
+
+#: this package"s modules (a name equal to a module"s is the module)
+_MODULES = ("polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
+
+#: public name -> module of this package that defines it
+_EXPORTS = {
+    "direction_from_angles": "polar",
+    "plane_of_incidence_vectors": "polar",
+    "intensity_in_plane_of_incidence": "polar",
+    "gaussian_profile": "profile",
+    "projected_length": "profile",
+    "visible_fraction": "profile",
+    "masking_G1": "profile",
+    "visible_fraction_by_slope": "profile",
+    "crossings": "profile",
+    "first_hit": "profile",
+    "first_blocker": "profile",
+    "WindowRays": "profile",
+    "trace_window": "profile",
+    "CONFIG_PATH": "scenes",
+    "PHONG_SPECULAR_READINGS": "scenes",
+    "display_from_colour": "scenes",
+    "scene_document": "scenes",
+    "panel_material": "scenes",
+    "vase_scene_CookTorrance1982": "scenes",
+    "fig6_scene_CookTorrance1982": "scenes",
+    "light_direction": "scenes",
+    "materials_Blinn1977": "scenes",
+    "blinn_scene_Blinn1977": "scenes",
+    "VGrooveSimulation": "vgroove",
+    "vgroove_vertices": "vgroove",
+    "simulate_vgroove": "vgroove",
+    "vgroove_case": "vgroove_derivation",
+    "GrooveAngles": "vgroove_derivation",
+    "groove_angles_Blinn1977": "vgroove_derivation",
+    "COLOURS": "vgroove_plot",
+    "draw_groove": "vgroove_plot",
+    "draw_top_view": "vgroove_plot",
+    "draw_arrow": "vgroove_plot",
+    "draw_angle": "vgroove_plot",
+    "draw_dimension": "vgroove_plot",
+}
+
+__all__ = [*_MODULES, *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    if name in _MODULES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

@@ -1,0 +1,293 @@
+"""Scenes built from config.yaml's figure sections (the scene format of ``scene.schema.yaml``).
+
+Every rendered figure turns a section of ``config.yaml`` into a scene mapping and writes it beside
+its outputs (so that ``reflectance render`` re-renders it alone). The shared parts live here:
+
+- :func:`scene_document`: camera, objects, lights, ambient and display -> a scene mapping;
+  :func:`display_from_colour` the ``display`` of config ``colour``;
+- :func:`vase_scene_CookTorrance1982`: one vase as Cook & Torrance 1982 Fig. 6 renders it (also
+  Fig. 7's vases); :func:`fig6_scene_CookTorrance1982` a Fig. 6 panel straight from config.yaml
+  (the default scene of ``reflectance bench``);
+- :func:`light_direction`, :func:`materials_Blinn1977` and :func:`blinn_scene_Blinn1977`:
+  Blinn 1977 Figs. 7 and 8.
+
+Blinn's models are scalar: ``i = p_a + d p_d + s p_s`` with ``d = N.L``, Phong's ``s = (N.H)^c1``
+or the Torrance-Sparrow ``s = D3 G F / (N.E)``, F the dielectric Fresnel reflectance of one index
+``n`` (n = 200 for his aluminium, 1.8 for magnesium oxide): scene materials with
+``index: {n: ..., k: 0}``. F is then the exact dielectric Fresnel reflectance, with the factor 1/2
+that Blinn's printing lacks, at every wavelength; with a spectrally flat diffuse albedo of 1 a
+white light gives a grey image whose luminance Y is Blinn's intensity i (a light of intensity 1
+and solid angle 1 has Y = 1). How large Phong's specular proportion is has two readings
+(:data:`PHONG_SPECULAR_READINGS`): Blinn prints one ``p_s`` for both models, but his
+Torrance-Sparrow highlight carries F, which for MgO is 0.08 at normal incidence, and yet he calls
+the front-lit images of both models "essentially same".
+
+References
+----------
+- Blinn, J. F. (1977). Models of light reflection for computer synthesized pictures. Computer
+  Graphics (SIGGRAPH '77), 11(2), 192-198. (Figs. 7a, 7b, 8; D3; c1, c3 of beta.)
+- Cook, R. L., & Torrance, K. E. (1982). A reflectance model for computer graphics. ACM
+  Transactions on Graphics, 1(1), 7-24. (Figs. 6, 7.)
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
+from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
+from reflectance.geometry.vectors import unit_vector
+
+__all__ = [
+    "CONFIG_PATH",
+    "PHONG_SPECULAR_READINGS",
+    "display_from_colour",
+    "scene_document",
+    "panel_material",
+    "vase_scene_CookTorrance1982",
+    "fig6_scene_CookTorrance1982",
+    "light_direction",
+    "materials_Blinn1977",
+    "blinn_scene_Blinn1977",
+]
+
+CONFIG_PATH = Path(__file__).resolve().parents[3] / "config.yaml"
+"""The project's config.yaml."""
+
+PHONG_SPECULAR_READINGS = {
+    "as_printed": "Phong's s p_s with Blinn's p_s: the highlight of a white mirror (F = 1)",
+    "matched": "Phong's p_s times F(n) at normal incidence, so that both models agree for a "
+               "light at the eye (Blinn's 'both models essentially same', front lit)",
+}
+"""How large Phong's specular proportion is against Blinn's Torrance-Sparrow model."""
+
+
+def display_from_colour(colour, illuminant=True):
+    """The scene ``display`` of config ``colour`` (space, gamut clip, white, PNG bit depth).
+
+    With ``illuminant=False`` the display white is left to the scene's default (the first
+    light's spectrum).
+    """
+    out = {"space": colour["space"], "gamut_clip": colour["gamut_clip"]}
+    if illuminant:
+        out["illuminant"] = colour["illuminant"]
+    out["png_bit_depth"] = colour["png_bit_depth"]
+    return out
+
+
+def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, observer=None,
+                   spectral=None, ambient=None, display=None):
+    """A scene mapping (workflow/schemas/scene.schema.yaml); keys left None take the defaults.
+
+    Parameters
+    ----------
+    camera : dict
+    objects : list of dict
+    lights : list of dict
+        Lights without a ``type`` are directional.
+    wavelengths : dict
+        ``{start_nm, end_nm, step_nm}`` (config ``wavelengths``).
+    spectra_dir, observer, spectral : str, optional
+    ambient, display : dict, optional
+    """
+    doc = {"wavelengths": dict(wavelengths)}
+    for key, value in (("observer", observer), ("spectra_dir", spectra_dir),
+                       ("spectral", spectral)):
+        if value is not None:
+            doc[key] = str(value)
+    doc.update(camera=dict(camera), objects=list(objects),
+               lights=[dict(light) if "type" in light else {"type": "directional", **light}
+                       for light in lights])
+    if ambient is not None:
+        doc["ambient"] = dict(ambient)
+    if display is not None:
+        doc["display"] = dict(display)
+    return doc
+
+
+def panel_material(panel):
+    """A config material entry (``material`` names the spectrum of F) as a scene material."""
+    return {**{k: v for k, v in panel.items() if k != "material"}, "name": panel["material"]}
+
+
+def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, spectra_dir,
+                                image=None):
+    """One vase alone as Cook & Torrance 1982 Fig. 6 renders it (Fig. 7: every vase).
+
+    Parameters
+    ----------
+    fig6 : dict
+        Config ``figures.cook_torrance_1982.fig6`` (vase, camera, lights, ambient fraction and
+        the renderer settings).
+    material : dict
+        The scene material; fig6's distribution, convention, fresnel and shadowing unless given.
+    reference : str
+        The ambient reading (scene ``ambient.reference``).
+    wavelengths, colour : dict
+        Config ``wavelengths`` and ``colour``.
+    spectra_dir : str
+    image : dict, optional
+        Overrides of the camera (``width``, ``height``, ``supersample``).
+    """
+    material = {"distribution": fig6["distribution"], "convention": fig6["convention"],
+                "fresnel": fig6["fresnel"], "shadowing": fig6["shadowing"], **material}
+    return scene_document(
+        {**fig6["camera"], **(image or {})},
+        [{"name": "vase", "geometry": {"type": "vase", **fig6["vase"]}, "material": material}],
+        fig6["lights"], wavelengths, spectra_dir, observer=colour["observer"],
+        spectral=fig6["spectral"],
+        ambient={"fraction": fig6["ambient_fraction"], "reference": reference},
+        display=display_from_colour(colour))
+
+
+def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, spectra_dir=None):
+    """The scene of Cook & Torrance 1982 Fig. 6 ``panel`` from config.yaml.
+
+    Parameters
+    ----------
+    panel : str
+        A key of ``figures.cook_torrance_1982.fig6.panels`` (``"b"``: the copper vase).
+    reading : str
+        A key of ``fig6.ambient_readings``.
+    config : dict or str or Path, optional
+        The configuration or its file (default :data:`CONFIG_PATH`).
+    spectra_dir : str, optional
+        Default: ``spectra`` beside config.yaml.
+    """
+    if not isinstance(config, dict):
+        path = Path(config or CONFIG_PATH)
+        config, spectra_default = yaml.safe_load(path.read_text()), path.parent / "spectra"
+    else:
+        spectra_default = Path("spectra")
+    fig6 = config["figures"]["cook_torrance_1982"]["fig6"]
+    for key, value, known in (("panels", panel, fig6["panels"]),
+                              ("ambient_readings", reading, fig6["ambient_readings"])):
+        if value not in known:
+            raise ValueError(f"config.yaml figures.cook_torrance_1982.fig6.{key}: no "
+                             f"{value!r}; known: {', '.join(known)}")
+    return vase_scene_CookTorrance1982(fig6, panel_material(fig6["panels"][panel]),
+                                       fig6["ambient_readings"][reading],
+                                       config["wavelengths"], config["colour"],
+                                       str(spectra_dir or spectra_default))
+
+
+def light_direction(position, look_at, up, angle_deg, azimuth_deg):
+    """Unit vector toward a directional light at ``angle_deg`` from the direction to the viewer.
+
+    ``L = cos(a) E + sin(a) (cos(b) X + sin(b) Y)`` with E the unit vector from ``look_at`` toward
+    the camera ``position``, X the image's right and Y its up (``up`` made orthogonal to E), a the
+    angle and b the azimuth in the image plane (0: from the right, 90: from above). 0 is a light
+    at the eye ("front lit"), angles towards 180 light the object from behind ("edge lit").
+
+    Parameters
+    ----------
+    position, look_at, up : array_like, shape (3,)
+        The camera (as in the scene's ``camera``).
+    angle_deg : float
+        Angle between L and E, in [0, 180]: 0 front lit, near 180 lit from behind.
+    azimuth_deg : float
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+
+    Examples
+    --------
+    >>> (light_direction((0, -5, 0), (0, 0, 0), (0, 0, 1), 90, 0).round(12) + 0.0).tolist()
+    [1.0, 0.0, 0.0]
+    """
+    E = unit_vector(np.subtract(position, look_at), "position - look_at")
+    Y = np.asarray(up, dtype=np.float64) - np.dot(up, E) * E
+    Y = unit_vector(Y, "up (orthogonal to the view direction)")
+    X = np.cross(Y, E)  # the image's right: (right, up, toward the viewer) is right-handed
+    if not 0.0 <= float(angle_deg) <= 180.0:
+        raise ValueError(f"angle_deg must lie in [0, 180], got {angle_deg!r}")
+    a, b = np.radians(float(angle_deg)), np.radians(float(azimuth_deg))
+    return np.cos(a) * E + np.sin(a) * (np.cos(b) * X + np.sin(b) * Y)
+
+
+def materials_Blinn1977(p_s, p_d, c3, n, phong_specular="as_printed"):
+    """Scene materials of Blinn's Phong and Torrance-Sparrow models at equal beta.
+
+    Both have a flat diffuse albedo 1 (so ``d p_d`` is the diffuse intensity). The
+    Torrance-Sparrow material takes F from the constant index ``n`` (scene key ``index``, k = 0)
+    and Blinn's D3 with ``c3``; the Phong material has ``c1 = -ln 2 / ln cos(beta)`` with beta
+    the half-value angle of that D3.
+
+    Parameters
+    ----------
+    p_s, p_d : float
+        Blinn's specular and diffuse proportions (Fig. 7a: 0.4, 0.6; Fig. 7b: 0.667, 0.333).
+    c3 : float
+        D3 eccentricity, in (0, 2^(-1/4)).
+    n : float
+        Blinn's index of refraction (Fig. 7a: 200, Fig. 7b: 1.8).
+    phong_specular : str
+        A key of :data:`PHONG_SPECULAR_READINGS`.
+
+    Returns
+    -------
+    dict
+        ``{"phong": material, "torrance_sparrow": material}`` (scene-file mappings) and
+        ``"c1"``, ``"beta_deg"``, ``"phong_s"``.
+
+    References
+    ----------
+    - Blinn 1977, "Comparison with Phong shading", Fig. 7; "Facet distribution functions".
+
+    Examples
+    --------
+    >>> m = materials_Blinn1977(0.667, 0.333, 0.35, 1.8, "matched")
+    >>> print(f"{m['beta_deg']:.4f} {m['c1']:.4f} {m['phong_s']:.5f}")
+    13.9141 23.2741 0.05445
+    """
+    if phong_specular not in PHONG_SPECULAR_READINGS:
+        raise ValueError(f"unknown phong_specular reading {phong_specular!r}; known: "
+                         f"{', '.join(PHONG_SPECULAR_READINGS)}")
+    beta = c3_to_beta_Blinn1977(c3)
+    c1 = float(beta_to_c1_Blinn1977(beta))  # Blinn 1977, equal beta: D1 and D3 halve together
+    phong_s = float(p_s)
+    if phong_specular == "matched":
+        # Blinn 1977, s = D G F / (N.E) at a light at the eye: D = G = N.E = 1 at the highlight
+        phong_s *= float(fresnel_dielectric_CookTorrance1982(1.0, n))
+    return {
+        "phong": {"model": "BlinnPhong1977", "c1": c1, "s": phong_s, "d": float(p_d),
+                  "albedo": 1.0},  # Blinn 1977, s = (N.H)^c1
+        "torrance_sparrow": {"index": {"n": float(n), "k": 0.0},
+                             "model": "TorranceSparrow_Blinn1977",
+                             "distribution": "TrowbridgeReitz1975", "c3": float(c3),
+                             "s": float(p_s), "d": float(p_d), "albedo": 1.0,
+                             "fresnel": "exact", "convention": "paper"},  # s = D G F / (N.E)
+        "c1": c1, "beta_deg": float(np.degrees(beta)), "phong_s": phong_s,
+    }
+
+
+def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
+    """One render of Blinn 1977 Fig. 7's object (also Fig. 8 and the sweep).
+
+    Parameters
+    ----------
+    fig7 : dict
+        Config ``figures.blinn_1977.fig7`` (object, camera, p_a).
+    material : dict
+        Scene material (:func:`materials_Blinn1977`).
+    light : dict or list of dict
+        ``{angle_deg, azimuth_deg}`` from the eye (:func:`light_direction`), or several.
+    wavelengths : dict
+    camera : dict, optional
+        Default: fig7's camera.
+    """
+    cam = dict(camera or fig7["camera"])
+    lights = [{"type": "directional", "direction": [float(x) for x in light_direction(
+                   cam["position"], cam["look_at"], cam["up"], one["angle_deg"],
+                   one["azimuth_deg"])],
+               "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0}
+              for one in ([light] if isinstance(light, dict) else light)]
+    # Blinn's p_a: I_ia R_a with I_ia = p_a (a fraction of the light's intensity 1), R_a = 1
+    return scene_document(cam, [{"name": "object", "geometry": dict(fig7["object"]),
+                                 "material": material}], lights, wavelengths,
+                          ambient={"fraction": fig7["p_a"], "reference": "intensity"},
+                          display={"expose": False})

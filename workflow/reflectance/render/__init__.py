@@ -1,0 +1,92 @@
+"""Render: a spectral renderer that takes a scene and knows nothing of papers or the CLI.
+
+Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
+camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
+(spectral, per-angle Fresnel table); scene (scene files); pipeline (trace, shade, write);
+composite (grids with one exposure); bench (speed and memory).
+
+Public names are loaded on first use (``from reflectance.render import name``), so importing
+the package stays cheap.
+"""
+
+from importlib import import_module
+
+#: this package"s modules (a name equal to a module"s is the module)
+_MODULES = ("bench", "camera", "composite", "idbuffer", "lights", "pipeline", "primitives", "rays", "samples", "scene", "shading", "shadows", "visibility")
+
+#: public name -> module of this package that defines it
+_EXPORTS = {
+    "load_bench_scene": "bench",
+    "bench_size": "bench",
+    "run_bench": "bench",
+    "format_report": "bench",
+    "Camera": "camera",
+    "common_exposure": "composite",
+    "covered_rows": "composite",
+    "image_grid": "composite",
+    "part_pixels": "composite",
+    "MAX_TRIANGLES": "idbuffer",
+    "MAX_BUFFER_SIDE": "idbuffer",
+    "encode_ids": "idbuffer",
+    "decode_ids": "idbuffer",
+    "id_buffer": "idbuffer",
+    "DirectionalLight": "lights",
+    "PointLight": "lights",
+    "LIGHT_TYPES": "lights",
+    "as_light": "lights",
+    "light_vectors": "lights",
+    "render_to_files": "pipeline",
+    "COMPONENTS": "pipeline",
+    "RenderResult": "pipeline",
+    "trace": "pipeline",
+    "shade_samples": "pipeline",
+    "render": "pipeline",
+    "display_image": "pipeline",
+    "software_versions": "pipeline",
+    "write_render": "pipeline",
+    "image_difference_CIEDE2000": "pipeline",
+    "ray_triangle_MollerTrumbore1997": "rays",
+    "ray_sphere": "rays",
+    "SurfaceSamples": "samples",
+    "SceneError": "scene",
+    "SCENE_SCHEMA_PATH": "scene",
+    "GEOMETRY_BUILDERS": "scene",
+    "GEOMETRY_PARTS": "scene",
+    "Display": "scene",
+    "SceneObject": "scene",
+    "Scene": "scene",
+    "validate_scene": "scene",
+    "scene_from_dict": "scene",
+    "load_scene": "scene",
+    "write_scene_file": "scene",
+    "constant_index_material": "scene",
+    "SHADING_MODELS": "shading",
+    "SHADOWING_NAMES": "shading",
+    "SPECTRAL_METHODS": "shading",
+    "AMBIENT_REFERENCES": "shading",
+    "RoughnessTexture": "shading",
+    "ShadingMaterial": "shading",
+    "Light": "shading",
+    "Ambient": "shading",
+    "ambient_intensity": "shading",
+    "emission_XYZ": "shading",
+    "fresnel_XYZ_table": "shading",
+    "lookup_table": "shading",
+    "shade": "shading",
+    "shadow_mask": "shadows",
+    "shadow_masks": "shadows",
+}
+
+__all__ = [*_MODULES, *_EXPORTS]
+
+
+def __getattr__(name):
+    if name in _EXPORTS:
+        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+    if name in _MODULES:
+        return import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(__all__)

@@ -1,0 +1,198 @@
+"""Speed and memory of the renderer: ``reflectance bench``.
+
+For a scene (a scene file, or a scene document as :func:`reflectance.render.scene.scene_from_dict`
+takes it; ``reflectance bench`` passes the copper vase of Cook & Torrance 1982, Fig. 6b, built
+from config.yaml by the papers' scene builder) rendered square at several sizes with n x n
+supersampling,
+each size runs in its own Python process (so that its peak resident memory, ``ru_maxrss``, which
+includes VTK's, belongs to that size alone) and reports:
+
+- median wall seconds over ``runs`` renders of visibility (camera ID buffer + exact hits), cast
+  shadows (every light) and shading (table path), and samples per second of each;
+- the peak resident memory of those renders;
+- brute-force per-wavelength shading of the same samples: its seconds, its speed ratio to the
+  table and the CIEDE2000 (mean, max over the lit pixels) between the two images;
+- at one size, the table and brute-force shading times on wavelength grids of different steps
+  (5 nm and 1 nm by default): the table's time does not grow with the number of wavelengths.
+
+Speed targets are measured here, never asserted in tests.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+__all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report"]
+
+
+def _peak_MiB():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
+
+
+def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersample=None,
+                     spectral=None, wavelengths=None):
+    """The benchmarked scene: a scene file's path, or a scene document (dict, with its
+    ``source`` description under the key ``"_source"`` if any), with overrides as
+    :func:`reflectance.render.scene.load_scene` takes them."""
+    import copy
+
+    from reflectance.render.scene import load_scene, scene_from_dict
+
+    overrides = {"width": width, "height": height, "supersample": supersample,
+                 "spectral": spectral, "wavelengths": wavelengths}
+    if not isinstance(scene, dict):
+        return load_scene(scene, spectra_dir=spectra_dir, **overrides)
+    doc = copy.deepcopy(scene)
+    source = doc.pop("_source", "scene document")
+    doc["camera"].update({k: v for k, v in overrides.items()
+                          if k in ("width", "height", "supersample") and v is not None})
+    if spectral is not None:
+        doc["spectral"] = spectral
+    if wavelengths is not None:
+        doc["wavelengths"] = dict(wavelengths)
+    return scene_from_dict(doc, source=source, spectra_dir=spectra_dir)
+
+
+def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
+               spectra_dir=None):
+    """Measurements for one image size, in this process (see :func:`run_bench`)."""
+    from reflectance.colour.colorimetry import tristimulus_weights
+    from reflectance.render.pipeline import image_difference_CIEDE2000, shade_samples, trace
+    from reflectance.render.shading import fresnel_XYZ_table
+
+    t0 = time.perf_counter()
+    scene = load_bench_scene(scene, spectra_dir=spectra_dir, width=size, height=size,
+                             supersample=supersample, spectral="table")
+    load_s = time.perf_counter() - t0
+    times = {"visibility": [], "shadows": [], "shading": []}
+    for _ in range(runs):
+        samples, shadowed, t = trace(scene)
+        t1 = time.perf_counter()
+        XYZ = shade_samples(scene, samples, shadowed, "table")
+        times["shading"].append(time.perf_counter() - t1)
+        times["visibility"].append(t["visibility"])
+        times["shadows"].append(t["shadows"])
+    peak = _peak_MiB()
+    n_samples, n_hit = len(samples.hit), int(samples.hit.sum())
+    median = {k: statistics.median(v) for k, v in times.items()}
+    out = {
+        "size": size, "supersample": supersample, "runs": runs, "samples": n_samples,
+        "hit_samples": n_hit, "triangles": int(scene.mesh.n_cells), "lights": len(scene.lights),
+        "wavelengths": len(scene.wavelengths), "load_s": load_s, "peak_MiB": peak,
+        **{f"{k}_s": v for k, v in median.items()},
+        "total_s": sum(median.values()),
+        "visibility_samples_per_s": n_samples / median["visibility"],
+        "shadows_samples_per_s": n_hit * len(scene.lights) / max(median["shadows"], 1e-12),
+        "shading_samples_per_s": n_hit / median["shading"],
+    }
+    if brute_force_runs:
+        brute_times = []
+        for _ in range(brute_force_runs):
+            t1 = time.perf_counter()
+            brute = shade_samples(scene, samples, shadowed, "brute-force")
+            brute_times.append(time.perf_counter() - t1)
+        dE_mean, dE_max = image_difference_CIEDE2000(
+            samples.to_pixels(XYZ), samples.to_pixels(brute), scene.display.illuminant,
+            scene.observer, scene.wavelengths)
+        out.update(brute_force_s=statistics.median(brute_times),
+                   brute_over_table=statistics.median(brute_times) / median["shading"],
+                   dE2000_mean=dE_mean, dE2000_max=dE_max)
+    grid_rows = []
+    for step in grids_nm:
+        w = scene.document["wavelengths"]
+        other = load_bench_scene(scene, spectra_dir=spectra_dir, width=size, height=size,
+                                 supersample=supersample,
+                                 wavelengths={"start_nm": w["start_nm"], "end_nm": w["end_nm"],
+                                              "step_nm": step})
+        row = {"step_nm": step, "wavelengths": len(other.wavelengths)}
+        W = tristimulus_weights(other.wavelengths, other.lights[0].spectrum, other.observer)
+        t1 = time.perf_counter()
+        for obj in other.objects:
+            fresnel_XYZ_table(obj.material, W, other.table_size)
+        row["table_build_s"] = time.perf_counter() - t1  # per light spectrum and object
+        for method, repeat in (("table", max(1, min(runs, 3))), ("brute-force", 1)):
+            t = []
+            for _ in range(repeat):
+                t1 = time.perf_counter()
+                shade_samples(other, samples, shadowed, method)
+                t.append(time.perf_counter() - t1)
+            row[f"{method}_s"] = statistics.median(t)
+        grid_rows.append(row)
+    out["grids"] = grid_rows
+    return out
+
+
+def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
+              grids_nm=(5, 1), grid_size=512, spectra_dir=None):
+    """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
+
+    ``scene`` is a scene file's path or a scene document (dict)."""
+    spectra_dir = None if spectra_dir is None else str(spectra_dir)
+    results = []
+    for size in sizes:
+        job = {"scene": scene if isinstance(scene, dict) else str(scene),
+               "size": int(size), "supersample": supersample,
+               "runs": runs, "brute_force_runs": brute_force_runs,
+               "grids_nm": list(grids_nm) if size == grid_size else [],
+               "spectra_dir": spectra_dir}
+        proc = subprocess.run([sys.executable, "-m", "reflectance.render.bench", "--worker",
+                               json.dumps(job)], capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise RuntimeError(f"benchmark of size {size} failed:\n{proc.stderr}")
+        results.append(json.loads(proc.stdout.strip().splitlines()[-1]))
+    return results
+
+
+def format_report(results):
+    """A plain-text report of :func:`run_bench` results."""
+    lines = []
+    if results:
+        r0 = results[0]
+        lines.append(f"{r0['triangles']} triangles, {r0['lights']} lights, "
+                     f"{r0['supersample']} x {r0['supersample']} samples per pixel, "
+                     f"{r0['wavelengths']} wavelengths; median of {r0['runs']} runs; "
+                     "peak = max resident memory of the process (VTK included)")
+    head = (f"{'size':>6} {'samples':>9} {'hit':>8} {'scene s':>8} {'visib. s':>9} {'shadow s':>9} "
+            f"{'shade s':>8} {'total s':>8} {'vis Ms/s':>9} {'shd Ms/s':>9} {'peak MiB':>9} "
+            f"{'brute s':>8} {'brute/tab':>9} {'dE00 mean':>10} {'dE00 max':>9}")
+    lines.append(head)
+    for r in results:
+        brute = (f"{r['brute_force_s']:8.3f} {r['brute_over_table']:9.1f} "
+                 f"{r['dE2000_mean']:10.2e} {r['dE2000_max']:9.2e}"
+                 if "brute_force_s" in r else f"{'-':>8} {'-':>9} {'-':>10} {'-':>9}")
+        lines.append(
+            f"{r['size']:>6} {r['samples']:>9} {r['hit_samples']:>8} {r['load_s']:8.3f} "
+            f"{r['visibility_s']:9.3f} "
+            f"{r['shadows_s']:9.3f} {r['shading_s']:8.3f} {r['total_s']:8.3f} "
+            f"{r['visibility_samples_per_s'] / 1e6:9.2f} {r['shading_samples_per_s'] / 1e6:9.2f} "
+            f"{r['peak_MiB']:9.0f} {brute}")
+    lines.append("(scene s: reading the scene, building the mesh, resampling the spectra, once; "
+                 "total s = visibility + shadows + shading; vis Ms/s: camera samples per second "
+                 "of visibility; shd Ms/s: hit samples per second of table shading, all lights)")
+    for r in results:
+        for g in r.get("grids", []):
+            lines.append(f"size {r['size']}, {g['step_nm']:g} nm grid ({g['wavelengths']} "
+                         f"wavelengths): table shading {g['table_s']:.3f} s (of which "
+                         f"{g['table_build_s']:.3f} s building the Fresnel table), brute force "
+                         f"{g['brute-force_s']:.3f} s")
+    return "\n".join(lines)
+
+
+def _worker(argv):
+    job = json.loads(argv[0])
+    result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
+                        job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"])
+    print(json.dumps(result))
+
+
+if __name__ == "__main__":  # pragma: no cover - run by run_bench in a subprocess
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--worker", nargs=1, required=True)
+    _worker(parser.parse_args().worker)

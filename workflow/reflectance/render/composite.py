@@ -1,0 +1,134 @@
+"""Figures composed of several renders: one exposure for all, a grid of images; per-part pixels.
+
+- :func:`common_exposure`: Cook & Torrance's exposure over several renders shown as one scene
+  ("all XYZ values in the scene are scaled equally");
+- :func:`covered_rows`: the image rows any render covers (to crop a grid);
+- :func:`image_grid`: a matplotlib figure of renders on a black ground, each at a (row, column)
+  with a label beneath, shown with one exposure;
+- :func:`part_pixels`: what each pixel of a render shows of each named part of a mesh, and the
+  colour it is shown in (dominant wavelength of the scene and of the displayed colour).
+
+References
+----------
+- Cook, R. L., & Torrance, K. E. (1982). A reflectance model for computer graphics. ACM
+  Transactions on Graphics, 1(1), 7-24. ("Determining the RGB values": one scale for a scene.)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from reflectance.colour.display import (XYZ_to_display, XYZ_to_linear_RGB, expose_CookTorrance1982,
+                                 gamut_clip, linear_RGB_to_XYZ)
+
+__all__ = ["common_exposure", "covered_rows", "image_grid", "part_pixels"]
+
+
+def common_exposure(images, space, illuminant, observer, wavelengths):
+    """The Cook & Torrance 1982 exposure scale of several XYZ images taken as one scene."""
+    # Cook & Torrance 1982: "all XYZ values in the scene are scaled equally"
+    _, scale = expose_CookTorrance1982(np.stack(images), space, illuminant=illuminant,
+                                       observer=observer, wavelengths=wavelengths)
+    return scale
+
+
+def covered_rows(images, margin=4):
+    """A slice of the rows that any image covers (Y > 0), widened by ``margin`` pixels."""
+    lit = np.flatnonzero(np.stack(images)[..., 1].max(axis=(0, 2)) > 0)
+    if lit.size == 0:
+        return slice(0, np.shape(images[0])[0])
+    return slice(max(lit[0] - margin, 0), lit[-1] + margin + 1)
+
+
+def image_grid(cells, n_rows, n_cols, scale, space, gamut_clip_method, display, title,
+               headings=(), crop=slice(None), head=0.25, foot=0.4, top=0.45, dpi=100):
+    """A figure of XYZ renders in a grid, all shown with one exposure ``scale``.
+
+    Parameters
+    ----------
+    cells : sequence of (row, col, XYZ, label)
+        The renders (same size) and the text beneath each.
+    n_rows, n_cols : int
+    scale : float
+        Exposure applied to every image (:func:`common_exposure`).
+    space, gamut_clip_method : str
+        Display space and gamut clipping (:func:`reflectance.colour.display.XYZ_to_display`).
+    display : dict
+        ``illuminant``, ``observer``, ``wavelengths`` of the display conversion.
+    title : str
+    headings : sequence of (row, col, text, style)
+        Text over a cell; ``style`` holds matplotlib text keywords and ``x`` (figure fraction).
+    crop : slice
+        Rows of every image shown.
+    head, foot, top : float
+        Inches above each row of images (headings), below it (labels) and above the grid (title).
+    """
+    from reflectance.io.figures import new_figure
+
+    first = cells[0][2][crop]
+    w, h = first.shape[1] / dpi, first.shape[0] / dpi
+    fig_w, fig_h = n_cols * w * 1.04, top + n_rows * (head + h + foot)
+    fig = new_figure(fig_w, fig_h, facecolor="black")
+    for row, col, XYZ, label in cells:
+        y0 = fig_h - top - row * (head + h + foot) - head
+        ax = fig.add_axes((col / n_cols + 0.02 / n_cols, (y0 - h) / fig_h, w / fig_w, h / fig_h))
+        ax.imshow(XYZ_to_display(XYZ[crop] * scale, space, gamut_clip_method, expose=False,
+                                 **display), interpolation="nearest")
+        ax.set_axis_off()
+        ax.text(0.5, -0.01, label, transform=ax.transAxes, ha="center", va="top", color="white",
+                fontsize=8, linespacing=1.15)
+    for row, col, text, style in headings:
+        style = dict(style)
+        y0 = fig_h - top - row * (head + h + foot) - head
+        fig.text(style.pop("x", col / n_cols + 0.01), (y0 + 0.07) / fig_h, text,
+                 **{"color": "white", "fontsize": 9, "ha": "left", **style})
+    fig.suptitle(title, color="white", fontsize=10)
+    return fig
+
+
+def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, display):
+    """Per named part: the pixels it covers and the colour they show.
+
+    Parameters
+    ----------
+    samples : reflectance.render.visibility.SurfaceSamples
+        The render's camera samples (``triangle``, ``hit``, ``to_pixels``).
+    part_codes : array_like
+        The mesh's ``cell_data["part"]``.
+    XYZ : ndarray (H, W, 3)
+        The rendered image.
+    scale : float
+        Its display exposure.
+    space, gamut_clip_method : str
+    display : dict
+        ``illuminant``, ``observer``, ``wavelengths``.
+
+    Returns
+    -------
+    callable
+        ``stats(code) -> dict`` with ``pixels`` (sum of sample fractions), ``full_pixels``
+        (pixels wholly on the part), ``mean_Y`` and the median dominant wavelength of the scene
+        colour and of the shown (exposed, gamut-clipped) colour with its purity over the full
+        pixels (NaN where the part covers none).
+    """
+    from reflectance.colour.colorimetry import dominant_wavelength
+
+    code = np.where(samples.hit, np.asarray(part_codes)[np.maximum(samples.triangle, 0)], -1)
+    shown = linear_RGB_to_XYZ(gamut_clip(XYZ_to_linear_RGB(XYZ * scale, space, **display),
+                                         gamut_clip_method, space), space, **display)
+
+    def over(values, statistic=np.nanmedian):
+        return statistic(values) if np.size(values) else np.nan
+
+    def stats(number):
+        fraction = samples.to_pixels((code == number).astype(float))
+        full = fraction == 1.0
+        wl_scene = dominant_wavelength(XYZ[full], **display)[0]
+        wl_shown, purity = dominant_wavelength(shown[full], **display)
+        return {"pixels": fraction.sum(), "full_pixels": int(full.sum()),
+                "mean_Y": over(XYZ[full][:, 1], np.mean),
+                "dominant_wavelength_scene_nm": over(wl_scene),
+                "dominant_wavelength_shown_nm": over(wl_shown),
+                "purity_shown": over(purity)}
+
+    return stats

@@ -1,0 +1,231 @@
+"""Render a scene: visibility, cast shadows, spectral shading, box filter; EXR and display PNG.
+
+:func:`render` runs the steps on a :class:`reflectance.render.scene.Scene`:
+
+1. :func:`trace`: which surface each camera sample sees (:func:`reflectance.render.visibility.visibility`,
+   VTK ID buffer + exact float64 hits) and which lights each sample sees
+   (:func:`reflectance.render.visibility.shadow_masks`);
+2. :func:`shade_samples`: every object's samples shaded with its material
+   (:func:`reflectance.render.shading.shade`), background black;
+3. the n x n samples of each pixel averaged in linear XYZ (box filter,
+   :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
+
+:func:`write_render` writes the linear XYZ image as OpenEXR (the validated scene and the package
+versions in its header) and, optionally, the display PNG (Cook & Torrance exposure over the image,
+gamut clipping, transfer function: :mod:`reflectance.colour.display`). Everything is deterministic: the
+same scene gives byte-identical files.
+"""
+
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982
+from reflectance.io.images import write_exr_XYZ, write_png
+from reflectance.render.shading import shade
+from reflectance.render.shadows import shadow_masks
+from reflectance.render.visibility import visibility
+
+__all__ = [
+    "render_to_files",
+    "COMPONENTS",
+    "RenderResult",
+    "trace",
+    "shade_samples",
+    "render",
+    "display_image",
+    "software_versions",
+    "write_render",
+    "image_difference_CIEDE2000",
+]
+
+COMPONENTS = ("ambient", "diffuse", "specular", "emission")
+"""Parts of the reflected XYZ a render can return separately (table shading)."""
+
+
+@dataclass
+class RenderResult:
+    """A rendered image.
+
+    Attributes
+    ----------
+    XYZ : ndarray, shape (height, width, 3)
+        Linear CIE XYZ (a light's white has Y = intensity; background 0).
+    components : dict or None
+        ``{name: (height, width, 3)}`` for :data:`COMPONENTS` when asked for.
+    timings : dict
+        Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total``.
+    stats : dict
+        Visibility statistics, the fraction of samples hit and the fraction of hit samples in
+        each light's shadow.
+    scene : Scene
+    """
+
+    XYZ: np.ndarray
+    components: dict | None
+    timings: dict
+    stats: dict
+    scene: object = field(repr=False)
+
+
+def trace(scene):
+    """(samples, shadowed, timings): camera visibility and each light's shadow mask."""
+    t0 = time.perf_counter()
+    samples = visibility(scene.mesh, scene.camera)
+    t1 = time.perf_counter()
+    if scene.shadows and scene.lights:
+        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights])
+    else:
+        shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
+    t2 = time.perf_counter()
+    return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
+
+
+def shade_samples(scene, samples, shadowed, spectral=None, components=False):
+    """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``)."""
+    spectral = scene.spectral if spectral is None else spectral
+    N = len(samples.hit)
+    XYZ = np.zeros((N, 3))
+    parts = {name: np.zeros((N, 3)) for name in COMPONENTS} if components else None
+    part_of_triangle = np.asarray(scene.mesh.cell_data["part"])
+    for i, obj in enumerate(scene.objects):
+        members = np.nonzero(samples.object_id == i)[0]
+        groups = [(obj.material, members)]
+        if obj.part_materials:  # named parts with their own materials
+            code = part_of_triangle[samples.triangle[members]]
+            rest = ~np.isin(code, list(obj.part_materials))
+            groups = [(obj.material, members[rest])] + [
+                (material, members[code == c]) for c, material in obj.part_materials.items()]
+        for material, idx in groups:
+            if len(idx) == 0:
+                continue
+            out = shade(samples.position[idx], samples.normal[idx], samples.view[idx],
+                        samples.uv[idx], material, scene.lights, shadowed[:, idx],
+                        scene.ambient, scene.wavelengths, scene.observer, spectral,
+                        scene.table_size, components=components)
+            if components:
+                out, got = out
+                for name in COMPONENTS:
+                    if name in got:
+                        parts[name][idx] = got[name]
+            XYZ[idx] = out
+    return (XYZ, parts) if components else XYZ
+
+
+def render(scene, spectral=None, components=False):
+    """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
+
+    Parameters
+    ----------
+    scene : Scene
+    spectral : str, optional
+        Overrides ``scene.spectral`` (``"table"`` or ``"brute-force"``).
+    components : bool
+        Also return the ambient, diffuse, specular and emitted parts (table shading only).
+    """
+    spectral = scene.spectral if spectral is None else spectral
+    if components and spectral != "table":
+        raise ValueError("components are available with spectral='table' only")
+    t0 = time.perf_counter()
+    samples, shadowed, timings = trace(scene)
+    t1 = time.perf_counter()
+    shaded = shade_samples(scene, samples, shadowed, spectral, components)
+    XYZ, parts = shaded if components else (shaded, None)
+    image = samples.to_pixels(XYZ)
+    if components:
+        parts = {name: samples.to_pixels(value) for name, value in parts.items()}
+    t2 = time.perf_counter()
+    timings.update(shading=t2 - t1, total=t2 - t0)
+    hit = samples.hit
+    stats = dict(samples.stats, hit=float(hit.mean()),
+                 shadowed=[float(s[hit].mean()) if hit.any() else 0.0 for s in shadowed])
+    return RenderResult(image, parts, timings, stats, scene)
+
+
+def display_image(result):
+    """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display."""
+    scene, d = result.scene, result.scene.display
+    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
+              "wavelengths": scene.wavelengths}
+    XYZ, scale = result.XYZ, 1.0
+    if d.expose:
+        # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
+        # at the maximum luminance of its chromaticity
+        XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
+    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False, **kwargs), scale
+
+
+def software_versions():
+    """Versions of the packages an image depends on (for the EXR header)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {}
+    for name in ("reflectance", "numpy", "scipy", "colour-science", "vtk", "pyvista", "OpenEXR"):
+        try:
+            out[name] = version(name)
+        except PackageNotFoundError:
+            out[name] = "unknown"
+    return out
+
+
+def write_render(result, exr_path, png_path=None):
+    """Write the linear XYZ image (EXR) and, if asked, the display PNG, atomically.
+
+    The EXR header holds the validated scene (``scene``, JSON), its file (``scene_file``), the
+    display exposure scale, the visibility statistics and the package versions (``software``).
+    Both images are computed before either file is written.
+    """
+    scene = result.scene
+    rgb, scale = display_image(result)
+    attributes = {
+        "scene": scene.to_json(),
+        "scene_file": str(scene.source),
+        "display_exposure_scale": float(scale),
+        "visibility_stats": json.dumps(result.stats, sort_keys=True),
+        "software": json.dumps(software_versions(), sort_keys=True),
+    }
+    write_exr_XYZ(exr_path, result.XYZ, attributes)
+    if png_path is not None:
+        write_png(png_path, rgb, bit_depth=scene.display.png_bit_depth)
+
+
+def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                               wavelengths=None):
+    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
+
+    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
+    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
+    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
+    """
+    import colour
+
+    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
+
+    observer = observer or OBSERVER_DEFAULT
+    _, scale = expose_CookTorrance1982(XYZ_reference, "sRGB", illuminant, observer, wavelengths)
+    white = white_XYZ(illuminant, observer, wavelengths)
+    xy = white[:2] / white.sum()
+    lab = [colour.XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
+    dE = colour.delta_E(lab[0], lab[1], method="CIE 2000")
+    lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
+    if not lit.any():
+        return 0.0, 0.0
+    return float(dE[lit].mean()), float(dE[lit].max())
+
+
+def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):
+    """Write the scene file, render it and write its EXR (and PNG); return the result.
+
+    What every rendered figure does, in one place: the scene written beside the images can be
+    rendered again alone with ``reflectance render``.
+    """
+    from reflectance.render.scene import write_scene_file
+
+    write_scene_file(scene, scene_path)
+    result = render(scene, components=components)
+    write_render(result, exr_path, png_path)
+    return result

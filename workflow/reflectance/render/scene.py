@@ -1,0 +1,533 @@
+"""Scene files: read, validate against ``workflow/schemas/scene.schema.yaml``, resolve.
+
+A scene (YAML) names a camera, objects (a geometry and a material each), lights, the ambient
+term and the display; the schema documents every key and its default. :func:`load_scene` checks
+everything before anything is rendered: the schema (every violation, by key), then what a schema
+cannot say (materials in ``spectra/``, illuminant names, ``s + d = 1`` for Cook & Torrance, the
+roughness a distribution needs, geometry the builders accept). Each error names the file and the
+key, e.g. ``scene.yaml: objects[0].material.s: ...``. The result is a :class:`Scene` with meshes
+built and spectra resolved onto the wavelength grid, ready for :func:`reflectance.render.pipeline.render`.
+"""
+
+from __future__ import annotations
+
+import copy
+import functools
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import yaml
+
+from reflectance.colour.colorimetry import cmfs, illuminant_sd
+from reflectance.optics.fresnel import F0_from_nk
+from reflectance.geometry.shapes import (VASE_PARTS, compose, mesh_from_file, place, plane, sphere,
+                                  superellipsoid_Barr1981, torus, vase)
+from reflectance.optics.microfacet import ROUGHNESS_PARAMETERS
+from reflectance.render.shading import (SHADING_MODELS, Ambient, Light, RoughnessTexture,
+                                 ShadingMaterial, emission_XYZ)
+from reflectance.geometry.texture import texture
+from reflectance.optics.spectra import Material, load_material, wavelength_grid
+from reflectance.render.camera import Camera
+from reflectance.render.lights import as_light
+from reflectance.geometry.watch import WATCH_PARTS, watch
+
+__all__ = [
+    "SceneError",
+    "SCENE_SCHEMA_PATH",
+    "GEOMETRY_BUILDERS",
+    "GEOMETRY_PARTS",
+    "Display",
+    "SceneObject",
+    "Scene",
+    "validate_scene",
+    "scene_from_dict",
+    "load_scene",
+    "write_scene_file",
+    "constant_index_material",
+]
+
+SCENE_SCHEMA_PATH = Path(__file__).resolve().parents[2] / "schemas" / "scene.schema.yaml"
+"""The JSON schema of scene files."""
+
+
+class SceneError(ValueError):
+    """A scene file holds something the renderer cannot use; the message names file and key."""
+
+
+def _key(parts):
+    out = ""
+    for p in parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out or "(top level)"
+
+
+def _with_defaults(validator_class):
+    """A validator class that fills in the schema's ``default`` values while validating."""
+    from jsonschema import validators
+
+    check_properties = validator_class.VALIDATORS["properties"]
+
+    def properties(validator, props, instance, schema):
+        if isinstance(instance, dict):
+            for name, sub in props.items():
+                if isinstance(sub, dict) and "default" in sub:
+                    instance.setdefault(name, copy.deepcopy(sub["default"]))
+        yield from check_properties(validator, props, instance, schema)
+
+    return validators.extend(validator_class, {"properties": properties})
+
+
+@functools.lru_cache(maxsize=1)
+def _validator():
+    """The schema's validator (that fills in defaults), read once per process."""
+    import jsonschema
+
+    schema = yaml.safe_load(SCENE_SCHEMA_PATH.read_text())
+    return _with_defaults(jsonschema.Draft202012Validator)(schema)
+
+
+def validate_scene(document, source="<scene>"):
+    """A copy of ``document`` with the schema's defaults filled in; SceneError listing every
+    violation by key."""
+    if not isinstance(document, dict):
+        raise SceneError(f"{source}: a scene must be a mapping of keys, got "
+                         f"{type(document).__name__}")
+    document = copy.deepcopy(document)
+    validator = _validator()
+    errors = list(validator.iter_errors(document))
+    if errors:
+        # the deepest (most specific) errors first; if/then wrappers add nothing
+        lines = sorted({f"{source}: {_key(list(e.absolute_path))}: {e.message}"
+                        for e in errors})
+        raise SceneError("invalid scene:\n  " + "\n  ".join(lines))
+    return document
+
+
+# --------------------------------------------------------------------------------------------
+# Resolved scene
+# --------------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Display:
+    """How the linear XYZ image becomes a display PNG (:func:`reflectance.colour.display.XYZ_to_display`)."""
+
+    space: str = "sRGB"
+    gamut_clip: str = "dominant-wavelength"
+    expose: bool = True
+    illuminant: str = "D65"
+    png_bit_depth: int = 8
+
+
+@dataclass(frozen=True, eq=False)
+class SceneObject:
+    """One object: its placed mesh, its material and the materials of named parts.
+
+    ``part_materials`` maps codes of the mesh's ``cell_data["part"]`` to the material used there
+    instead of ``material``.
+    """
+
+    name: str
+    mesh: object  # pyvista.PolyData, placed
+    material: ShadingMaterial
+    part_materials: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True, eq=False)
+class Scene:
+    """A validated scene with its meshes and spectra resolved (see :func:`load_scene`).
+
+    ``document`` is the scene as validated, with every default filled in (it goes into the EXR
+    header); ``mesh`` the composed scene (object id = index in ``objects``).
+    """
+
+    camera: Camera
+    objects: tuple
+    lights: tuple
+    ambient: Ambient
+    display: Display
+    wavelengths: np.ndarray
+    observer: str
+    spectral: str
+    table_size: int
+    shadows: bool
+    mesh: object
+    source: str = "<scene>"
+    document: dict = field(default_factory=dict)
+
+    def to_json(self):
+        """The validated document as canonical JSON (sorted keys)."""
+        return json.dumps(self.document, sort_keys=True, separators=(",", ":"))
+
+
+def _rotation(degrees):
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_euler("xyz", degrees, degrees=True).as_matrix()  # extrinsic x, y, z
+
+
+GEOMETRY_BUILDERS = {
+    "sphere": lambda g, base: sphere(g["center"], g["radius"], g["n_theta"], g["n_phi"]),
+    "vase": lambda g, base: vase(g["profile"], g["n_theta"], g["n_profile_samples"],
+                                 g["wall_thickness"], g["n_rim_samples"], g["interpolation"]),
+    "torus": lambda g, base: torus(g["major_radius"], g["minor_radius"], g["n_u"], g["n_v"],
+                                   g["center"]),
+    "superellipsoid": lambda g, base: superellipsoid_Barr1981(g["radii"], g["exponents"],
+                                                              g["n_u"], g["n_v"], g["center"]),
+    "plane": lambda g, base: plane(g["center"], g["normal"], g["size"], g["resolution"],
+                                   g.get("u_direction")),
+    "mesh": lambda g, base: mesh_from_file(Path(base) / g["path"], g["feature_angle"]),
+    "watch": lambda g, base: watch(**g["parameters"]),
+}
+"""Scene geometry types and how each is built from its keys (``base``: the scene's folder)."""
+
+GEOMETRY_PARTS = {"vase": VASE_PARTS, "watch": WATCH_PARTS}
+"""Named parts (codes of ``cell_data["part"]``) of the geometry types that have them."""
+
+
+class _Checker:
+    """Collects problems by key so that one run reports them all."""
+
+    def __init__(self, source):
+        self.source, self.problems = source, []
+
+    def add(self, path, message):
+        self.problems.append(f"{self.source}: {_key(path)}: {message}")
+
+    def run(self, path, function, *args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except (ValueError, TypeError, FileNotFoundError) as err:
+            self.add(path, str(err).strip("'\""))
+            return None
+
+    def raise_if_any(self):
+        if self.problems:
+            raise SceneError("invalid scene:\n  " + "\n  ".join(self.problems))
+
+
+def _illuminant(check, path, name):
+    if check.run(path, illuminant_sd, name) is not None:
+        return name
+    return None
+
+
+def _spectral_material(check, path, name, grid, spectra_dir, cache):
+    if name not in cache:
+        cache[name] = check.run(path, load_material, name, grid, spectra_dir)
+    return cache[name]
+
+
+def index_label(index):
+    """The name of a constant-index material, e.g. ``"n = 1.8, k = 0"``."""
+    return f"n = {index['n']:g}, k = {index['k']:g}"
+
+
+def constant_index_material(n, k, grid):
+    """A :class:`reflectance.optics.spectra.Material` of wavelength-independent index ``n + i k``.
+
+    What a material CSV with the same ``n, k`` at every wavelength gives (scene key ``index``:
+    e.g. Blinn 1977's scalar n = 200 for aluminium, 1.8 for magnesium oxide).
+    """
+    grid = np.asarray(grid, dtype=np.float64)
+    n_, k_ = np.full(grid.shape, float(n)), np.full(grid.shape, float(k))
+    for a in (grid, n_, k_):
+        a.setflags(write=False)
+    F0 = np.asarray(F0_from_nk(n_, k_), dtype=np.float64)
+    F0.setflags(write=False)
+    return Material(index_label({"n": n, "k": k}), "measured", grid, n_, k_, F0)
+
+
+def _material(check, path, m, grid, spectra_dir, cache, observer):
+    """A ShadingMaterial from a validated material mapping (None if something is wrong)."""
+    model = m["model"]
+    spec = SHADING_MODELS[model]
+    s, d = m.get("s"), m.get("d")
+    if s is None and d is None:
+        s, d = (0.0, 1.0) if model == "Lambert" else (1.0, 0.0)
+    elif s is None:
+        s = 1.0 - d
+    elif d is None:
+        d = 1.0 - s
+    if model == "CookTorrance1982" and abs(s + d - 1.0) > 1e-9:
+        check.add(path + ["s"], f"Cook & Torrance 1982 require s + d = 1, got s = {s}, d = {d}")
+    if model == "Lambert" and s > 0:
+        check.add(path + ["s"], "a Lambert material has no specular part: s must be 0")
+    ok = True
+
+    # the specular material: a material of spectra/ (name) or a constant complex index (index)
+    specular = None
+    if "name" in m and "index" in m:
+        check.add(path, "give either 'name' (a material of spectra/) or 'index' (a constant "
+                        "n, k), not both")
+        ok = False
+    elif "index" in m:
+        specular = constant_index_material(m["index"]["n"], m["index"]["k"], grid)
+    elif "name" in m:
+        specular = _spectral_material(check, path + ["name"], m["name"], grid, spectra_dir,
+                                      cache)
+        ok &= specular is not None
+    n = k = None
+    if spec["fresnel"] and s > 0:
+        if "name" not in m and "index" not in m:
+            check.add(path, f"model {model} with s > 0 needs 'name' (the material whose n, k "
+                            "give F) or 'index'")
+            ok = False
+        elif specular is not None:
+            n, k = specular.n, specular.k
+
+    albedo = 0.0
+    if "albedo" in m:
+        if "diffuse_material" in m:
+            check.add(path + ["albedo"], "give either albedo or diffuse_material, not both")
+            ok = False
+        albedo = float(m["albedo"])
+    else:
+        if "diffuse_material" in m:
+            found = _spectral_material(check, path + ["diffuse_material"], m["diffuse_material"],
+                                       grid, spectra_dir, cache)
+        else:
+            found = specular  # the specular material's own F0 (name or index)
+        if found is not None:
+            albedo = found.F0  # Cook & Torrance 1982, Fig. 7: R_d = F0 / pi
+        elif "diffuse_material" in m:
+            ok = False
+        elif d > 0 and "name" not in m:
+            check.add(path, "a diffuse part (d > 0) needs 'diffuse_material', 'albedo', 'name' "
+                            "or 'index'")
+            ok = False
+
+    distribution, roughness, lobes, rough_texture = m["distribution"], None, None, None
+    kind = spec["roughness"]
+    if kind is True:
+        key = ROUGHNESS_PARAMETERS[distribution]
+        if "lobes" in m:
+            lobes = []
+            for j, lobe in enumerate(m["lobes"]):
+                if key not in lobe:
+                    check.add(path + ["lobes", j], f"distribution {distribution} needs '{key}'")
+                    ok = False
+                else:
+                    lobes.append((lobe["w"], lobe[key]))
+            weights = [lobe["w"] for lobe in m["lobes"]]
+            if abs(sum(weights) - 1.0) > 1e-9:
+                check.add(path + ["lobes"], f"weights must sum to 1 (Cook & Torrance 1982), got "
+                                            f"{weights}")
+                ok = False
+            lobes = tuple(lobes)
+            if "roughness_texture" in m:
+                check.add(path + ["roughness_texture"], "a roughness texture needs a single "
+                                                        "distribution, not lobes")
+                ok = False
+        elif "roughness_texture" not in m:
+            # Cook & Torrance 1982, Table I: m "not used" where s = 0 (no specular part)
+            if key not in m and s > 0:
+                check.add(path, f"distribution {distribution} needs '{key}' (or 'lobes')")
+                ok = False
+            roughness = m.get(key)
+        if m["shadowing"] == "smith" and (distribution != "Beckmann1963" or lobes is not None):
+            check.add(path + ["shadowing"], "smith shadowing is the Smith G of one Beckmann "
+                                            "distribution (no lobes)")
+            ok = False
+        if model == "TorranceSparrow_Blinn1977" and m["convention"] != "paper":
+            check.add(path + ["convention"], "Blinn's Torrance-Sparrow model exists only as "
+                                             "printed (paper)")
+            ok = False
+    elif kind == "c1":
+        if "c1" not in m and "roughness_texture" not in m:
+            check.add(path, f"model {model} needs the exponent 'c1'")
+            ok = False
+        roughness = m.get("c1")
+    if "roughness_texture" in m:
+        t = m["roughness_texture"]
+        if kind is False:
+            check.add(path + ["roughness_texture"], f"model {model} has no roughness")
+            ok = False
+        elif distribution == "TrowbridgeReitz1975" and kind is True:
+            if m["convention"] != "paper":
+                check.add(path + ["convention"], "Blinn's texture-modulated D3 exists only as "
+                                                 "printed (paper)")
+                ok = False
+            if t["max"] != 1.0:
+                check.add(path + ["roughness_texture", "max"], "Blinn's C3 = C_min + (1 - "
+                                                               "C_min) t has max 1")
+                ok = False
+        if check.run(path + ["roughness_texture", "parameters"], texture, np.zeros(1),
+                     np.zeros(1), t["method"], **t["parameters"]) is None:
+            ok = False
+        rough_texture = RoughnessTexture(t["method"], float(t["min"]), float(t["max"]),
+                                         dict(t["parameters"]))
+
+    emission = None
+    if "emission" in m:
+        e = m["emission"]
+        if _illuminant(check, path + ["emission", "white"], e["white"]) is None:
+            ok = False
+        else:
+            emission = check.run(path + ["emission"], emission_XYZ,
+                                 e["dominant_wavelength_nm"], e["luminance"], e["purity"],
+                                 e["white"], observer)
+            ok &= emission is not None
+    if not ok:
+        return None
+    return check.run(path, ShadingMaterial, model=model, convention=m["convention"], s=s, d=d,
+                     n=n, k=k, fresnel=m["fresnel"], albedo=albedo, distribution=distribution,
+                     roughness=roughness, lobes=lobes, texture=rough_texture,
+                     shadowing=m["shadowing"], emission=emission,
+                     name=m.get("name", index_label(m["index"]) if "index" in m
+                                else m.get("diffuse_material", "")))
+
+
+def _geometry(check, path, g, transform, base):
+    mesh = check.run(path + ["geometry"], GEOMETRY_BUILDERS[g["type"]], g, base)
+    if mesh is None or transform is None:
+        return mesh
+    return check.run(path + ["transform"], place, mesh, transform["offset"], transform["scale"],
+                     _rotation(transform["rotation_deg"]))
+
+
+def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
+    """A :class:`Scene` from a scene mapping (as a scene file holds it).
+
+    Parameters
+    ----------
+    document : dict
+        The scene; validated against the schema (defaults filled in on a copy).
+    source : str
+        Name used in error messages (the file).
+    base_dir : str or Path
+        Folder that mesh paths are relative to.
+    spectra_dir : str or Path, optional
+        Overrides the scene's ``spectra_dir``.
+
+    Raises
+    ------
+    SceneError
+        Listing every problem with its key.
+    """
+    doc = validate_scene(document, source)
+    if spectra_dir is not None:
+        doc["spectra_dir"] = str(spectra_dir)
+    check = _Checker(source)
+    w = doc["wavelengths"]
+    grid = check.run(["wavelengths"], wavelength_grid, w["start_nm"], w["end_nm"], w["step_nm"])
+    observer = doc["observer"]
+    if check.run(["observer"], cmfs, observer) is None:
+        observer = None
+    if not Path(doc["spectra_dir"]).is_dir():
+        check.add(["spectra_dir"], f"no such folder {doc['spectra_dir']!r} (run from the "
+                                   "project folder or pass --spectra-dir)")
+    check.raise_if_any()
+
+    c = doc["camera"]
+    camera = check.run(["camera"], Camera, c["position"], c["look_at"], c["up"], c["fov_deg"],
+                       c["width"], c["height"], c["supersample"])
+
+    lights = []
+    for i, spec in enumerate(doc["lights"]):
+        path = ["lights", i]
+        _illuminant(check, path + ["spectrum"], spec["spectrum"])
+        source_light = check.run(path, as_light, spec)
+        if source_light is None:
+            continue
+        solid_angle = spec.get("solid_angle", None if "area" in spec else 1.0)
+        light = check.run(path, Light, source_light, spec["spectrum"], spec["intensity"],
+                          solid_angle, spec.get("area"))
+        if light is not None:
+            lights.append(light)
+
+    first = doc["lights"][0]["spectrum"] if doc["lights"] else "D65"
+    a = doc["ambient"]
+    a_spectrum = a.get("spectrum", first)
+    if "spectrum" in a:  # (a light's spectrum is checked with the light)
+        _illuminant(check, ["ambient", "spectrum"], a_spectrum)
+    ambient = check.run(["ambient"], Ambient, a["fraction"], a["reference"], a_spectrum)
+    if ambient is not None and ambient.reference == "irradiance" and ambient.fraction > 0 \
+            and any(light.area is not None for light in lights):
+        check.add(["ambient", "reference"], "'irradiance' needs every light's solid_angle")
+
+    d = doc["display"]
+    display_white = d.get("illuminant", first)
+    if "illuminant" in d:
+        _illuminant(check, ["display", "illuminant"], display_white)
+    display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
+                      d["png_bit_depth"])
+
+    cache, objects = {}, []
+    for i, obj in enumerate(doc["objects"]):
+        path = ["objects", i]
+        material = _material(check, path + ["material"], obj["material"], grid,
+                             doc["spectra_dir"], cache, observer)
+        names = GEOMETRY_PARTS.get(obj["geometry"]["type"], {})
+        parts, ok = {}, material is not None
+        for part, spec in obj.get("parts", {}).items():
+            if part not in names:
+                check.add(path + ["parts", part], f"no part {part!r} in a "
+                          f"{obj['geometry']['type']}; known: {', '.join(names) or 'none'}")
+                ok = False
+                continue
+            parts[names[part]] = _material(check, path + ["parts", part], spec, grid,
+                                           doc["spectra_dir"], cache, observer)
+            ok &= parts[names[part]] is not None
+        mesh = _geometry(check, path, obj["geometry"], obj.get("transform"), base_dir)
+        if ok and mesh is not None:
+            objects.append(SceneObject(obj.get("name", f"object {i}"), mesh, material, parts))
+    check.raise_if_any()
+    composed = check.run(["objects"], compose, [(o.mesh, i) for i, o in enumerate(objects)])
+    check.raise_if_any()
+    return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
+                 display=display, wavelengths=grid, observer=observer, spectral=doc["spectral"],
+                 table_size=doc["fresnel_table_size"], shadows=doc["shadows"], mesh=composed,
+                 source=source, document=doc)
+
+
+def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None,
+               spectral=None, wavelengths=None):
+    """Read a scene file, validate it and resolve it (see :func:`scene_from_dict`).
+
+    Parameters
+    ----------
+    path : str or Path
+        YAML scene file.
+    spectra_dir : str or Path, optional
+        Overrides the scene's ``spectra_dir``.
+    width, height, supersample : int, optional
+        Override the camera's.
+    spectral : str, optional
+        Overrides the scene's ``spectral`` (``"table"`` or ``"brute-force"``).
+    wavelengths : dict, optional
+        Overrides the scene's ``wavelengths`` ({start_nm, end_nm, step_nm}).
+
+    Raises
+    ------
+    SceneError
+        Naming the file and the key of each problem.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise SceneError(f"{path}: no such scene file")
+    try:
+        document = yaml.safe_load(path.read_text())
+    except yaml.YAMLError as err:
+        raise SceneError(f"{path}: not valid YAML: {err}") from None
+    if isinstance(document, dict):
+        camera = document.get("camera")
+        for key, value in (("width", width), ("height", height), ("supersample", supersample)):
+            if value is not None and isinstance(camera, dict):
+                camera[key] = value
+        if spectral is not None:
+            document["spectral"] = spectral
+        if wavelengths is not None:
+            document["wavelengths"] = dict(wavelengths)
+    return scene_from_dict(document, source=str(path), base_dir=path.parent,
+                           spectra_dir=spectra_dir)
+
+
+def write_scene_file(scene, path):
+    """Write the validated scene (defaults filled in) as YAML, atomically; ``reflectance render``
+    re-renders it."""
+    from reflectance.io.atomic import atomic_write
+
+    with atomic_write(path) as tmp:
+        Path(tmp).write_text(yaml.safe_dump(scene.document, sort_keys=False))

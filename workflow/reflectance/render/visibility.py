@@ -1,0 +1,193 @@
+"""Visibility: VTK finds the surface, float64 numpy computes where exactly.
+
+VTK rasterises an *ID buffer* off-screen (:mod:`reflectance.render.idbuffer`): every triangle of the
+scene is drawn flat, unlit, without anti-aliasing or multisampling, in a colour that encodes its
+index in 24 bits (0 is the background). The buffer is only used to *choose* which triangle a
+sample sees; the sample's position, normal and (u, v) then come from intersecting its exact
+camera ray with that triangle (Moller-Trumbore, float64), or with the exact sphere when the
+triangle belongs to an analytic sphere (:func:`reflectance.geometry.shapes.sphere`). No 8-bit quantity
+limits the shading.
+
+Where the raster and the exact ray disagree (silhouettes, shared edges), the triangles of the
+3 x 3 neighbouring ID pixels are tested and the nearest exact hit wins; a sample whose ray meets
+none of them is background. :attr:`SurfaceSamples.stats` reports how often this happens.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from reflectance.geometry.vectors import dot, normalize
+from reflectance.render.camera import Camera
+from reflectance.render.idbuffer import (IdRenderer, dilate, distinct_keys, key_image,
+                                         neighbour_keys)
+from reflectance.render.primitives import Primitives
+from reflectance.render.samples import SurfaceSamples
+
+__all__ = ["visibility"]
+
+
+def visibility(meshes, camera):
+    """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
+
+    Parameters
+    ----------
+    meshes : pyvista.PolyData or sequence of (mesh, object_id)
+        A scene from :func:`reflectance.geometry.shapes.compose`, or the pairs to compose.
+    camera : Camera
+
+    Returns
+    -------
+    SurfaceSamples
+
+    Examples
+    --------
+    >>> from reflectance.geometry.shapes import sphere
+    >>> cam = Camera((0, 0, 5), (0, 0, 0), (0, 1, 0), 30.0, 8, 8)
+    >>> s = visibility([(sphere((0, 0, 0), 1.0, 32, 16), 1)], cam)
+    >>> bool(s.hit[s.pixel == 3 * 8 + 4][0]), bool(s.hit[0])
+    (True, False)
+    """
+    if not isinstance(camera, Camera):
+        raise ValueError(f"camera must be a Camera, got {type(camera).__name__}")
+    scene = Primitives(meshes)
+    view = camera.view()
+    with IdRenderer(scene) as renderer:
+        keys = key_image(scene, renderer.render(view))
+    rows, cols = camera.shape
+    N = rows * cols
+    eye, d = view.pixel_rays()
+    raster = keys.ravel()
+    best_t, best_key = np.full(N, np.inf), np.full(N, -1, np.int32)
+    barycentric = np.zeros((N, 2))  # (b1, b2) of the best hit so far, written in place
+    best_b1, best_b2 = barycentric[:, 0], barycentric[:, 1]
+
+    def offer(sel, k):  # each sample at most once per call; chunks bound the temporaries
+        for start in range(0, len(sel), _CHUNK):
+            sc, kc = sel[start:start + _CHUNK], k[start:start + _CHUNK]
+            t, b1, b2, hit = scene.intersect(eye, np.take(d, sc, axis=1), kc, 0.0, np.inf)
+            better = hit & (t < best_t[sc])
+            s = sc[better]
+            best_t[s], best_key[s], best_b1[s], best_b2[s] = (t[better], kc[better],
+                                                              b1[better], b2[better])
+
+    surface = np.nonzero(raster >= 0)[0]
+    offer(surface, raster[surface])
+    missed = surface[best_key[surface] < 0]
+    del surface
+    # where raster and exact rays disagree: retry with the neighbouring pixels' primitives
+    near = np.nonzero((raster < 0) & dilate(keys >= 0).ravel())[0]
+    retry = np.concatenate([missed, near])
+    candidates = distinct_keys(neighbour_keys(keys, retry // cols, retry % cols), raster[retry])
+    del keys, raster, near
+    for j in range(candidates.shape[1]):
+        m = candidates[:, j] >= 0
+        if m.any():
+            offer(retry[m], candidates[m, j])
+    del candidates
+    # Last resort, still exact: a sample the raster covers whose ray meets none of the nearby
+    # primitives (its true triangle is smaller than a pixel and never reached the ID buffer) is
+    # tested against every primitive whose projected bounding box contains it.
+    lost = missed[best_key[missed] < 0]
+    if len(lost):
+        _search_projected_boxes(scene, view, eye, d, lost, cols, best_t, best_key, best_b1,
+                                best_b2)
+    hit = best_key >= 0
+    stats = {
+        "raster_miss": len(missed) / N,
+        "recovered": float(np.count_nonzero(hit[retry])) / N,
+        "searched": len(lost) / N,
+        "dropped": float(np.count_nonzero(~hit[missed])) / N,
+    }
+    del retry, missed, lost
+    towards_camera = np.empty((N, 3))
+    np.negative(d.T, out=towards_camera)  # V = -d, sample-major
+    del d
+    # best_t is inf and barycentric 0 wherever nothing was hit: they are the final arrays
+    return _samples(scene, camera, eye, towards_camera, hit, best_t, best_key, barycentric,
+                    stats)
+
+
+_CHUNK = 1 << 18  # camera rays tested at once (bounds the memory of the ray-test temporaries)
+
+
+def _search_projected_boxes(scene, view, eye, d, samples, cols, best_t, best_key, best_b1,
+                            best_b2):
+    """Exact nearest hit of each sample's ray among the primitives whose screen-space bounding
+    box holds the sample (updates the ``best_*`` arrays in place)."""
+    x, y, _ = view.project(scene.P)
+    tx, ty = x[scene.T], y[scene.T]  # (3, n) corners of every triangle on the fine grid
+    x0, x1, y0, y1 = tx.min(axis=0), tx.max(axis=0), ty.min(axis=0), ty.max(axis=0)
+    for s in samples:
+        px, py = s % cols + 0.5, s // cols + 0.5
+        near = np.nonzero((x0 <= px) & (px <= x1) & (y0 <= py) & (py <= y1))[0]
+        keys = np.unique(scene.key[near])
+        if not len(keys):
+            continue
+        t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1), keys,
+                                       0.0, np.inf)
+        if h.any():
+            j = int(np.argmin(np.where(h, t, np.inf)))
+            best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
+
+
+def _samples(scene, camera, eye, view, hit, t, key, barycentric, stats):
+    """SurfaceSamples from the best exact hits; ``view`` (N, 3) is the unit V = -d."""
+    N = len(hit)
+    position, normal, geometric = np.zeros((N, 3)), np.zeros((N, 3)), np.zeros((N, 3))
+    uv = np.zeros((N, 2))
+    triangle = np.full(N, -1, np.int32)
+
+    mesh = np.nonzero(hit & (key < scene.n))[0]  # mesh triangles: barycentric interpolation
+    for start in range(0, len(mesh), _CHUNK):  # chunks bound the temporaries
+        m = mesh[start:start + _CHUNK]
+        tri = key[m]
+        triangle[m] = tri
+        corner = np.take(scene.T, tri, axis=1)
+        b1, b2 = barycentric[m, 0], barycentric[m, 1]
+        w = (1.0 - b1 - b2, b1, b2)
+
+        def blend(A, k):  # component k of the barycentric interpolation of a vertex attribute
+            return sum(w[j] * np.take(A[k], corner[j]) for j in range(3))
+
+        for k in range(3):
+            position[m, k] = blend(scene.P, k)
+        for k in range(2):
+            uv[m, k] = blend(scene.UV, k)
+        n = [blend(scene.N, k) for k in range(3)]
+        length = np.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
+        good = length > 1e-6
+        inv = 1.0 / np.where(good, length, 1.0)
+        g = scene.face_normal[tri]
+        geometric[m] = g
+        for k in range(3):
+            normal[m, k] = np.where(good, n[k] * inv, g[:, k])
+    del mesh
+
+    s = np.nonzero(hit & (key >= scene.n))[0]  # analytic spheres: exact
+    if len(s):
+        sphere = key[s] - scene.n
+        triangle[s] = scene.first_triangle[sphere]
+        p = eye - t[s] * view[s].T  # = eye + t d, exactly
+        position[s] = p.T
+        n = normalize((p - scene.C[:, sphere]).T)
+        normal[s] = geometric[s] = n
+        uv[s, 0] = np.mod(np.arctan2(n[:, 1], n[:, 0]) / (2.0 * np.pi), 1.0)
+        uv[s, 1] = np.arccos(np.clip(-n[:, 2], -1.0, 1.0)) / np.pi
+
+    flipped = hit & (dot(geometric, view) < 0)  # seen from the back: two-sided surface
+    normal[flipped] *= -1.0
+    geometric[flipped] *= -1.0
+    rows, cols = camera.shape
+    n_ss = camera.supersample
+    # final-image pixel of each sample, row * width + col (< 2**28: int32 suffices)
+    pixel = ((np.arange(rows, dtype=np.int32) // n_ss * np.int32(camera.width))[:, None]
+             + (np.arange(cols, dtype=np.int32) // n_ss)[None, :]).ravel()
+    object_id = np.full(N, -1, np.int32)
+    object_id[hit] = scene.object_id[triangle[hit]]
+    return SurfaceSamples(
+        shape=(rows, cols), supersample=n_ss, hit=hit, object_id=object_id,
+        triangle=triangle, barycentric=barycentric, position=position, normal=normal,
+        geometric_normal=geometric, flipped=flipped, uv=uv, view=view, depth=t, pixel=pixel,
+        stats=stats, scene=scene,
+    )
