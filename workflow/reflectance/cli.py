@@ -53,7 +53,7 @@ def _add_colour(sub):
     from reflectance.audit.colour_shift import COLOUR_METHODS
 
     p = sub.add_parser(
-        "colour", help="colour of a smooth material vs incidence angle (CSV)",
+        "colour", help=COMMAND_HELP["colour"],
         description="The colour of the light a smooth MATERIAL reflects at each incidence angle "
                     "(Cook & Torrance 1982, Fig. 5), as CSV: angle_deg, X, Y, Z (reflected "
                     "light; the illuminant's white has Y = 1), x, y, dominant_nm, purity, R, G, "
@@ -99,7 +99,7 @@ def _run_colour(args):
 # -- reflectance spectra ------------------------------------------------------------------------
 
 def _add_spectra(sub):
-    p = sub.add_parser("spectra", help="list the materials with their kind and source (CSV)",
+    p = sub.add_parser("spectra", help=COMMAND_HELP["spectra"],
                        description="List every material of spectra/sources.csv: material, kind "
                                    "(measured n,k or derived reflectance), dataset and reference.")
     _common(p)
@@ -175,7 +175,7 @@ def _add_brdf(sub):
 
     names = ", ".join(BRDF_ALIASES)
     p = sub.add_parser(
-        "brdf", help="reflected distribution of a BRDF model in a plane (CSV)",
+        "brdf", help=COMMAND_HELP["brdf"],
         description="The BRDF of MODEL for light at --incidence degrees, evaluated at the view "
                     "angles --angles, as CSV: theta_out_deg, diffuse, specular, total and, with "
                     "--material, X, Y, Z.",
@@ -345,7 +345,7 @@ def _run_brdf(args):
 
 def _add_render(sub):
     p = sub.add_parser(
-        "render", help="render a scene file to a linear XYZ EXR (and a display PNG)",
+        "render", help=COMMAND_HELP["render"],
         description="Render SCENE (YAML, keys in workflow/schemas/scene.schema.yaml) spectrally "
                     "into linear CIE XYZ (OpenEXR, scene and package versions in the header) "
                     "and optionally a display PNG (Cook & Torrance exposure, gamut clipping). "
@@ -395,7 +395,7 @@ def _run_render(args):
 
 def _add_bench(sub):
     p = sub.add_parser(
-        "bench", help="time and measure the memory of the renderer",
+        "bench", help=COMMAND_HELP["bench"],
         description="Render a scene (default: the copper vase of Cook & Torrance 1982 Fig. 6b) "
                     "square at each --sizes with 2 x 2 supersampling, each size in its own "
                     "process: median seconds of visibility, shadows and shading, samples per "
@@ -446,20 +446,44 @@ def _run_bench(args):
 COMMANDS = {"colour": _add_colour, "spectra": _add_spectra, "brdf": _add_brdf,
             "render": _add_render, "bench": _add_bench}
 
+#: Sub-command name -> one line for ``reflectance --help`` (the full parser of a command, with
+#: the imports its choices need, is built only when that command runs).
+COMMAND_HELP = {
+    "colour": "colour of a smooth material vs incidence angle (CSV)",
+    "spectra": "list the materials with their kind and source (CSV)",
+    "brdf": "reflected distribution of a BRDF model in a plane (CSV)",
+    "render": "render a scene file to a linear XYZ EXR (and a display PNG)",
+    "bench": "time and measure the memory of the renderer",
+}
 
-def build_parser():
+
+def build_parser(command=None):
+    """The argument parser; only ``command``'s sub-parser is built in full (all with None)."""
+    from reflectance import __version__
+
     parser = argparse.ArgumentParser(
         prog="reflectance",
         description="Spectral audits of the classic reflectance papers (Blinn 1977, Cook & "
                     "Torrance 1982). Each command prints CSV.")
+    parser.add_argument("--version", action="version", version=f"reflectance {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    for add in COMMANDS.values():
-        add(sub)
+    for name, add in COMMANDS.items():
+        if command is None or name == command:
+            add(sub)
+        else:
+            sub.add_parser(name, help=COMMAND_HELP[name])
     return parser
 
 
+def _command(argv):
+    """The sub-command named in ``argv`` (its first word that is not an option), if known."""
+    words = [a for a in argv if not a.startswith("-")]
+    return words[0] if words and words[0] in COMMANDS else ""
+
+
 def main(argv=None):
-    args = build_parser().parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    args = build_parser(_command(argv)).parse_args(argv)
     try:
         return args.run(args) or 0
     except BrokenPipeError:  # the reader stopped early (`| head`): not an error of ours
