@@ -10,6 +10,9 @@ min_version("8.0")
 configfile: "config.yaml"
 
 
+report: "workflow/report/workflow.rst"
+
+
 # common.smk checks config.yaml first, naming each bad key (config.yaml: colour.space: ...);
 # Snakemake's validate() then applies the same schema and fills in its defaults.
 include: "workflow/rules/common.smk"
