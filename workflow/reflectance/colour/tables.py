@@ -44,6 +44,7 @@ __all__ = [
     "illuminant_aligned",
     "rgb_colourspace_matrix",
     "chromatic_adaptation_matrix",
+    "forget",
 ]
 
 CACHE_ENVIRONMENT_VARIABLE = "REFLECTANCE_CACHE"
@@ -197,6 +198,9 @@ def _spectral_shape(grid):
             f"wavelengths: colour.SpectralShape{(shape.start, shape.end, shape.interval)} gives "
             f"{len(shape.wavelengths)} samples, the grid has {len(grid)}"
         )
+    if np.max(np.abs(shape.wavelengths - np.asarray(grid))) > 1e-9 * shape.interval:
+        raise ValueError("wavelengths: must be uniformly spaced (colour-science's SpectralShape "
+                         "is a uniform grid)")
     return shape
 
 
@@ -283,3 +287,10 @@ def chromatic_adaptation_matrix(transform):
         "chromatic-adaptation", [transform],
         lambda: _colour().adaptation.CHROMATIC_ADAPTATION_TRANSFORMS[transform], 2,
     )
+
+
+def forget():
+    """Forget the tables held in this process's memory (the cache files stay); for tests."""
+    for function in (_colour_science_version, _names, cmfs_tabulated, illuminant_tabulated,
+                     rgb_colourspace_matrix, chromatic_adaptation_matrix):
+        function.cache_clear()
