@@ -139,8 +139,8 @@ def cmfs(observer=OBSERVER_DEFAULT, wavelengths=None):
 
     Examples
     --------
-    >>> cmfs("CIE 1931 2 Degree Standard Observer", np.arange(360, 831, 5.0))[39].round(4)
-    array([ 0.5121,  1.    ,  0.0057])
+    >>> cmfs("CIE 1931 2 Degree Standard Observer", np.arange(360, 831, 5.0))[39].round(4).tolist()
+    [0.5121, 1.0, 0.0057]
     """
     if wavelengths is None:
         return np.array(tables.cmfs_tabulated(_validate_observer(observer))[1])
@@ -224,8 +224,8 @@ def spectrum_to_XYZ(S, W):
     Examples
     --------
     >>> W = tristimulus_weights(np.arange(360, 831, 5.0))
-    >>> spectrum_to_XYZ(np.full((2, 95), 0.5), W)[:, 1].round(12)
-    array([ 0.5,  0.5])
+    >>> spectrum_to_XYZ(np.full((2, 95), 0.5), W)[:, 1].round(12).tolist()
+    [0.5, 0.5]
     """
     S = np.asarray(S, dtype=np.float64)
     W = np.asarray(W, dtype=np.float64)
@@ -262,8 +262,8 @@ def white_XYZ(illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
 
     Examples
     --------
-    >>> white_XYZ("D65").round(4)
-    array([ 0.9505,  1.    ,  1.0888])
+    >>> white_XYZ("D65").round(4).tolist()
+    [0.9505, 1.0, 1.0888]
     """
     if wavelengths is None:
         wavelengths = tables.cmfs_tabulated(_validate_observer(observer))[0]
@@ -293,8 +293,8 @@ def XYZ_to_xy(XYZ):
 
     Examples
     --------
-    >>> XYZ_to_xy([0.20654008, 0.12197225, 0.05136952]).round(8)
-    array([ 0.54369557,  0.32107944])
+    >>> XYZ_to_xy([0.20654008, 0.12197225, 0.05136952]).round(8).tolist()
+    [0.54369557, 0.32107944]
     """
     XYZ = np.asarray(XYZ, dtype=np.float64)
     X, Y, Z = XYZ[..., 0], XYZ[..., 1], XYZ[..., 2]
@@ -336,8 +336,8 @@ def XYZ_to_Lab(XYZ, illuminant_xy):
 
     Examples
     --------
-    >>> XYZ_to_Lab([0.20654008, 0.12197225, 0.05136952], [0.3127, 0.3290]).round(4)
-    array([ 41.5279,  52.6386,  26.9231])
+    >>> XYZ_to_Lab([0.20654008, 0.12197225, 0.05136952], [0.3127, 0.3290]).round(3).tolist()
+    [41.528, 52.639, 26.923]
     """
     XYZ = np.asarray(XYZ, dtype=np.float64)
     x_n, y_n = np.asarray(illuminant_xy, dtype=np.float64)[..., :2].T

@@ -111,8 +111,8 @@ def display_space(space="sRGB"):
 
     Examples
     --------
-    >>> display_space("sRGB").matrix_RGB_to_XYZ[1].round(4)
-    array([ 0.2126,  0.7152,  0.0722])
+    >>> display_space("sRGB").matrix_RGB_to_XYZ[1].round(4).tolist()
+    [0.2126, 0.7152, 0.0722]
     """
     if not isinstance(space, str) or space not in DISPLAY_SPACES:
         raise ValueError(
@@ -202,8 +202,8 @@ def XYZ_to_linear_RGB(
     Examples
     --------
     >>> from reflectance.colour.colorimetry import white_XYZ
-    >>> XYZ_to_linear_RGB(0.5 * white_XYZ("A"), "sRGB", "A").round(12)
-    array([ 0.5,  0.5,  0.5])
+    >>> XYZ_to_linear_RGB(0.5 * white_XYZ("A"), "sRGB", "A").round(12).tolist()
+    [0.5, 0.5, 0.5]
     """
     XYZ = _as_triplets(XYZ, "XYZ")
     return XYZ @ _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths).T
@@ -216,8 +216,8 @@ def linear_RGB_to_XYZ(
 
     Examples
     --------
-    >>> linear_RGB_to_XYZ([1.0, 1.0, 1.0], "sRGB", [0.9, 1.0, 1.1]).round(12)
-    array([ 0.9,  1. ,  1.1])
+    >>> linear_RGB_to_XYZ([1.0, 1.0, 1.0], "sRGB", [0.9, 1.0, 1.1]).round(12).tolist()
+    [0.9, 1.0, 1.1]
     """
     RGB = _as_triplets(RGB, "RGB")
     M = _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths)
@@ -344,8 +344,8 @@ def gamut_clip_CookTorrance1982(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_CookTorrance1982([1.2, 0.5, -0.1], "sRGB").round(4)
-    array([ 1.    ,  0.5355,  0.1374])
+    >>> gamut_clip_CookTorrance1982([1.2, 0.5, -0.1], "sRGB").round(4).tolist()
+    [1.0, 0.5355, 0.1374]
     """
     RGB = _as_triplets(RGB_linear, "RGB_linear")
     finite, safe = _finite_rows(RGB)
@@ -370,8 +370,8 @@ def gamut_clip_channels(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_channels([1.2, 0.5, -0.1])
-    array([ 1. ,  0.5,  0. ])
+    >>> gamut_clip_channels([1.2, 0.5, -0.1]).tolist()
+    [1.0, 0.5, 0.0]
     """
     display_space(space)
     finite, safe = _finite_rows(_as_triplets(RGB_linear, "RGB_linear"))
@@ -423,8 +423,8 @@ def gamut_clip_CSSColor4(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_CSSColor4([1.2, 0.5, -0.1], "sRGB").round(3)
-    array([ 1.   ,  0.526,  0.   ])
+    >>> gamut_clip_CSSColor4([1.2, 0.5, -0.1], "sRGB").round(3).tolist()
+    [1.0, 0.526, 0.0]
     """
     ds = display_space(space)
     RGB = _as_triplets(RGB_linear, "RGB_linear")
@@ -503,8 +503,8 @@ def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip([0.2, 0.3, 0.4], "css-oklch")
-    array([ 0.2,  0.3,  0.4])
+    >>> gamut_clip([0.2, 0.3, 0.4], "css-oklch").tolist()
+    [0.2, 0.3, 0.4]
     """
     _validate_clip_method(method)
     return GAMUT_CLIP_METHODS[method](RGB_linear, space)
@@ -525,8 +525,8 @@ def encode(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> encode([0.0, 0.0031308, 1.0], "sRGB").round(6)
-    array([ 0.     ,  0.04045,  1.     ])
+    >>> encode([0.0, 0.0031308, 1.0], "sRGB").round(6).tolist()
+    [0.0, 0.04045, 1.0]
     """
     display_space(space)
     RGB = np.clip(np.asarray(RGB_linear, dtype=np.float64), 0.0, 1.0)
@@ -594,8 +594,8 @@ def XYZ_to_display(
     Examples
     --------
     >>> from reflectance.colour.colorimetry import white_XYZ
-    >>> XYZ_to_display(3.0 * white_XYZ("D65"))
-    array([ 1.,  1.,  1.])
+    >>> XYZ_to_display(3.0 * white_XYZ("D65")).round(12).tolist()
+    [1.0, 1.0, 1.0]
     """
     display_space(space)
     _validate_clip_method(clip)
