@@ -86,11 +86,13 @@ def _path(kind, parts, suffix):
 
 def _store(path, write):
     """Write ``path`` atomically with ``write(file)``; give up silently if the cache is unwritable."""
+    import tempfile
+
     tmp = None
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-        with open(tmp, "wb") as file:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        with os.fdopen(fd, "wb") as file:
             write(file)
         os.replace(tmp, path)
     except OSError:
