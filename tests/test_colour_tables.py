@@ -135,7 +135,7 @@ def test_an_unwritable_cache_is_ignored(tmp_path, monkeypatch):
 def test_a_damaged_cache_file_is_recomputed(fresh_cache):
     g = grid(380, 780, 10)
     tables.illuminant_aligned("A", g)
-    (path,) = tables.cache_directory().glob("illuminant-aligned-*.npy")
+    (path,) = tables.cache_directory().glob("illuminants-aligned-*.npy")
     path.write_bytes(b"\x93NUMPY garbage")
     tables.forget()
     np.testing.assert_array_equal(tables.illuminant_aligned("A", g),
@@ -146,7 +146,7 @@ def test_a_damaged_cache_file_is_recomputed(fresh_cache):
 def test_grid_errors_are_named(fresh_cache):
     with pytest.raises(ValueError, match="wavelengths: "):
         tables.illuminant_aligned("D65", (360.0, 365.0, 371.0))
-    assert not list(tables.cache_directory().glob("illuminant-aligned-*"))
+    assert not list(tables.cache_directory().glob("illuminants-aligned-*"))
 
 
 # -- the formulas against colour-science's functions ---------------------------------------------

@@ -231,16 +231,17 @@ def cmfs_tabulated(observer_key):
     return table[:, 0], table[:, 1:]
 
 
+def _aligned(kind, key, grid, what, ndim):
+    """colour-science's ``mapping[key]`` of ``kind`` aligned to ``grid``, cached."""
+    grid = [float(w) for w in grid]
+    return _array(f"{kind}-aligned", [key, grid],
+                  lambda: _align(_mapping(kind)[key], grid, what), ndim)
+
+
 def cmfs_aligned(observer_key, grid):
     """A standard observer's CMFs aligned to the uniform ``grid`` (a tuple of nm) by colour-science:
     ``MSDS_CMFS_STANDARD_OBSERVER[key].copy().align(SpectralShape(...)).values``, shape (n, 3)."""
-    grid = [float(w) for w in grid]
-
-    def compute():
-        data = _mapping("observers")[observer_key]
-        return _align(data, grid, f"the {observer_key} CMFs")
-
-    return _array("cmfs-aligned", [observer_key, grid], compute, 2)
+    return _aligned("observers", observer_key, grid, f"the {observer_key} CMFs", 2)
 
 
 @functools.lru_cache(maxsize=None)
@@ -253,13 +254,7 @@ def illuminant_tabulated(illuminant_key):
 
 def illuminant_aligned(illuminant_key, grid):
     """An illuminant's SPD aligned to the uniform ``grid`` by colour-science, shape (n,)."""
-    grid = [float(w) for w in grid]
-
-    def compute():
-        data = _mapping("illuminants")[illuminant_key]
-        return _align(data, grid, f"illuminant {illuminant_key}")
-
-    return _array("illuminant-aligned", [illuminant_key, grid], compute, 1)
+    return _aligned("illuminants", illuminant_key, grid, f"illuminant {illuminant_key}", 1)
 
 
 # -- display constants ---------------------------------------------------------------------------
