@@ -80,20 +80,29 @@ def _add_colour(sub):
 
 def _run_colour(args):
     from reflectance.colour.colorimetry import tristimulus_weights
-    from reflectance.audit.colour_shift import colour_table
+    from reflectance.audit.colour_shift import colour_columns
 
     grid = _grid_and_colour(args)
     material = _load(args, args.material, grid)
     try:
         W = tristimulus_weights(grid, args.illuminant, args.observer)
-        table = colour_table(material, args.angle, W, methods=(args.fresnel,), space=args.space,
-                             clip=args.clip, illuminant=args.illuminant,
-                             average_range_nm=args.average_range, expose=False,
-                             observer=args.observer)
+        table = colour_columns(material, args.angle, W, methods=(args.fresnel,), space=args.space,
+                               clip=args.clip, illuminant=args.illuminant,
+                               average_range_nm=args.average_range, expose=False,
+                               observer=args.observer)
     except ValueError as err:
         raise SystemExit(f"reflectance: {err}") from None
-    table.drop(columns="method").to_csv(sys.stdout, index=False, float_format="%.6g",
-                                        lineterminator="\n")
+    del table["method"]
+    _print_float_csv(table)
+
+
+def _print_float_csv(columns):
+    """Print float columns as CSV, as pandas' ``to_csv(index=False, float_format="%.6g")`` does
+    (NaN as an empty field), without importing pandas."""
+    lines = [",".join(columns)]
+    for row in zip(*columns.values()):
+        lines.append(",".join("" if v != v else "%.6g" % v for v in row))
+    sys.stdout.write("\n".join(lines) + "\n")
 
 
 # -- reflectance spectra ------------------------------------------------------------------------

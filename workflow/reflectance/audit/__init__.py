@@ -18,6 +18,8 @@ _EXPORTS = {
     "colour_interpolation_CookTorrance1982": "colour_shift",
     "reflected_XYZ_approximation_CookTorrance1982": "colour_shift",
     "colour_XYZ": "colour_shift",
+    "COLOUR_TABLE_COLUMNS": "colour_shift",
+    "colour_columns": "colour_shift",
     "colour_table": "colour_shift",
 }
 

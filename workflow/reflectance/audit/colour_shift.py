@@ -13,7 +13,6 @@ table that compares every Fresnel shortcut with the exact spectral answer.
 from __future__ import annotations
 
 import numpy as np
-import pandas as pd
 
 from reflectance.optics.fresnel import fresnel, fresnel_dielectric_CookTorrance1982, n_from_F0_CookTorrance1982
 
@@ -23,6 +22,8 @@ __all__ = [
     "colour_interpolation_CookTorrance1982",
     "reflected_XYZ_approximation_CookTorrance1982",
     "colour_XYZ",
+    "COLOUR_TABLE_COLUMNS",
+    "colour_columns",
     "colour_table",
 ]
 
@@ -100,21 +101,27 @@ def colour_XYZ(material, cos_theta, W, method="exact", average_range_nm=(380, 78
     return reflected_XYZ(material, cos_theta, W, method=method)
 
 
-def colour_table(material, angles_deg, W, methods=("exact",), space="sRGB",
-                 clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
-                 expose=True, observer="CIE 1931 2 Degree Standard Observer"):
-    """The audit table: one row per (method, angle), with display RGB and dE2000 vs exact.
+#: Columns of :func:`colour_columns` and :func:`colour_table`, in order.
+COLOUR_TABLE_COLUMNS = ("method", "angle_deg", "X", "Y", "Z", "x", "y", "dominant_nm", "purity",
+                        "R", "G", "B", "dE2000_vs_exact")
+
+
+def colour_columns(material, angles_deg, W, methods=("exact",), space="sRGB",
+                   clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
+                   expose=True, observer="CIE 1931 2 Degree Standard Observer"):
+    """The audit table as columns: one row per (method, angle), with display RGB and dE2000 vs exact.
 
     With ``expose=True`` all rows form one scene for Cook & Torrance's exposure: they are scaled
     together (with 90 degrees among the angles, the light's own colour, F = 1, sets the scale).
     With ``expose=False`` the light's white is displayed at Y = 1 and nothing is rescaled.
 
-    Columns: method, angle_deg, X, Y, Z, x, y, dominant_nm, purity, R, G, B, dE2000_vs_exact.
-    R, G, B are display values (transfer function applied) after gamut clipping.
+    Returns a dict of :data:`COLOUR_TABLE_COLUMNS` -> 1-D array (``method`` of str, the rest
+    float64): method, angle_deg, X, Y, Z, x, y, dominant_nm, purity, R, G, B, dE2000_vs_exact.
+    R, G, B are display values (transfer function applied) after gamut clipping. ``illuminant``
+    is not used: the white is that of ``W`` (``W.sum(0)``).
     """
-    import colour
-
-    from reflectance.colour.colorimetry import dominant_wavelength
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy, dominant_wavelength
+    from reflectance.colour.difference import delta_E_CIE2000
     from reflectance.colour.display import XYZ_to_display
 
     angles = np.asarray(angles_deg, dtype=float)
@@ -122,29 +129,36 @@ def colour_table(material, angles_deg, W, methods=("exact",), space="sRGB",
         raise ValueError(f"angles must be a list of degrees in [0, 90], got {angles_deg!r}")
     cos_theta = np.clip(np.cos(np.radians(angles)), 0.0, 1.0)
     white = W.sum(axis=0)
-    white_xy = colour.XYZ_to_xy(white)
+    white_xy = XYZ_to_xy(white)
     exact = colour_XYZ(material, cos_theta, W, "exact")
-    lab_exact = colour.XYZ_to_Lab(exact, white_xy)
+    lab_exact = XYZ_to_Lab(exact, white_xy)
 
-    blocks = []
     XYZ_all = np.concatenate(
         [colour_XYZ(material, cos_theta, W, m, average_range_nm) for m in methods]
     ).reshape(len(methods), len(angles), 3)
     # The white of this grid (W.sum), not the 1 nm table's, maps to display white exactly.
     RGB_all = XYZ_to_display(XYZ_all, space=space, clip=clip, expose=expose, illuminant=white,
                              observer=observer)
+    blocks = []
     for i, method in enumerate(methods):
         XYZ = XYZ_all[i]
-        xy = colour.XYZ_to_xy(XYZ)
+        xy = XYZ_to_xy(XYZ)
         wl, purity = dominant_wavelength(XYZ, white, observer=observer)
-        dE = colour.delta_E(colour.XYZ_to_Lab(XYZ, white_xy), lab_exact, method="CIE 2000")
-        blocks.append(pd.DataFrame({
-            "method": method,
-            "angle_deg": angles,
-            "X": XYZ[:, 0], "Y": XYZ[:, 1], "Z": XYZ[:, 2],
-            "x": xy[:, 0], "y": xy[:, 1],
-            "dominant_nm": wl, "purity": purity,
-            "R": RGB_all[i, :, 0], "G": RGB_all[i, :, 1], "B": RGB_all[i, :, 2],
-            "dE2000_vs_exact": dE,
-        }))
-    return pd.concat(blocks, ignore_index=True)
+        dE = delta_E_CIE2000(XYZ_to_Lab(XYZ, white_xy), lab_exact)
+        blocks.append([
+            np.full(len(angles), method, dtype=object), angles,
+            XYZ[:, 0], XYZ[:, 1], XYZ[:, 2], xy[:, 0], xy[:, 1], wl, purity,
+            RGB_all[i, :, 0], RGB_all[i, :, 1], RGB_all[i, :, 2], dE,
+        ])
+    return {name: np.concatenate([np.asarray(block[j]) for block in blocks])
+            for j, name in enumerate(COLOUR_TABLE_COLUMNS)}
+
+
+def colour_table(material, angles_deg, W, methods=("exact",), space="sRGB",
+                 clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
+                 expose=True, observer="CIE 1931 2 Degree Standard Observer"):
+    """:func:`colour_columns` as a pandas DataFrame (same arguments, same columns)."""
+    import pandas as pd
+
+    return pd.DataFrame(colour_columns(material, angles_deg, W, methods, space, clip, illuminant,
+                                       average_range_nm, expose, observer))

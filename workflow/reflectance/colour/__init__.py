@@ -1,7 +1,9 @@
 """Colour: CIE colorimetry and display encoding, knowing nothing of optics or rendering.
 
-Modules: colorimetry (CMFs, illuminants, tristimulus weights, dominant wavelength), display (RGB spaces,
-Cook & Torrance"s exposure, gamut clipping, transfer functions).
+Modules: colorimetry (CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength),
+difference (CIEDE2000), display (RGB spaces, Cook & Torrance"s exposure, gamut clipping, transfer
+functions), tables (colour-science's tables, computed by colour-science once and cached, so that
+the colour path reads them with numpy only).
 
 Public names are loaded on first use (``from reflectance.colour import name``), so importing
 the package stays cheap.
@@ -10,7 +12,7 @@ the package stays cheap.
 from importlib import import_module
 
 #: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("colorimetry", "display")
+_MODULES = ("colorimetry", "difference", "display", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -20,7 +22,10 @@ _EXPORTS = {
     "tristimulus_weights": "colorimetry",
     "white_XYZ": "colorimetry",
     "spectrum_to_XYZ": "colorimetry",
+    "XYZ_to_xy": "colorimetry",
+    "XYZ_to_Lab": "colorimetry",
     "dominant_wavelength": "colorimetry",
+    "delta_E_CIE2000": "difference",
     "DISPLAY_SPACES": "display",
     "CHROMATIC_ADAPTATION_TRANSFORM": "display",
     "DisplaySpace": "display",

@@ -1,4 +1,4 @@
-"""Colorimetry on a wavelength grid: CMFs, illuminants, tristimulus weights, dominant wavelength.
+"""Colorimetry on a wavelength grid: CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength.
 
 Everything tabulated (CIE colour matching functions, CIE illuminant SPDs) comes from colour-science
 and is put onto the caller's grid exactly the way colour-science does it
@@ -7,14 +7,18 @@ uniformly tabulated data, cubic spline otherwise) and constant extrapolation bey
 range (CIE 15:2004 and CIE 167:2005 recommendations). Note that the CIE illuminants of
 colour-science are tabulated from 300 nm to 780 nm only, so on a 360-830 nm grid their last value
 (780 nm) is repeated up to 830 nm; the CMFs there are below 1e-4 of their peak, so this is
-immaterial.
+immaterial. The tables are computed by colour-science once and then read back from a cache
+(:mod:`reflectance.colour.tables`), so this module itself needs numpy only; its formulas (xy,
+CIELAB, dominant wavelength) reproduce colour-science's functions to float precision (checked by
+the tests against colour-science).
 
 This module knows nothing of BRDFs or displays: it turns spectra into CIE XYZ.
 
 References
 ----------
--   CIE 15:2004 Colorimetry, 3rd edition, §7 (tristimulus values, normalisation k) and §9.1
-    (dominant wavelength, complementary wavelength, excitation purity).
+-   CIE 15:2004 Colorimetry, 3rd edition, §7 (tristimulus values, normalisation k), §7.3
+    (chromaticity coordinates), §8.2.1 (CIE 1976 L*a*b*) and §9.1 (dominant wavelength,
+    complementary wavelength, excitation purity).
 -   Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM TOG 1(1),
     "Determining the RGB values".
 """
@@ -23,8 +27,9 @@ from __future__ import annotations
 
 import functools
 
-import colour
 import numpy as np
+
+from reflectance.colour import tables
 
 __all__ = [
     "OBSERVER_DEFAULT",
@@ -33,6 +38,8 @@ __all__ = [
     "tristimulus_weights",
     "white_XYZ",
     "spectrum_to_XYZ",
+    "XYZ_to_xy",
+    "XYZ_to_Lab",
     "dominant_wavelength",
 ]
 
@@ -40,8 +47,8 @@ OBSERVER_DEFAULT = "CIE 1931 2 Degree Standard Observer"
 """Cook & Torrance 1982 cite CIE 15 (1970), i.e. the CIE 1931 2 degree standard observer."""
 
 _DOMINANT_WAVELENGTH_CHUNK = 2048
-"""colour.dominant_wavelength is vectorised but builds (n_colours, n_locus) intersection arrays;
-chunking bounds memory (~2048 x 471 x 8 B per array) for whole images."""
+"""The dominant wavelength builds (n_colours, n_locus) intersection arrays; chunking bounds memory
+(~2048 x 472 x 8 B per array) for whole images."""
 
 
 _ACHROMATIC_XY = 1e-12
@@ -49,19 +56,24 @@ _ACHROMATIC_XY = 1e-12
 
 
 def _validate_observer(observer):
-    known = colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER
-    if not isinstance(observer, str) or observer not in known:
+    """colour-science's key of ``observer`` (case, slug and canonical variants accepted)."""
+    key = tables.resolve_observer(observer)
+    if key is None:
         raise ValueError(
-            f"observer: unknown standard observer {observer!r}; known: {', '.join(known)}"
+            f"observer: unknown standard observer {observer!r}; known: "
+            f"{', '.join(tables.observer_names())}"
         )
-    return known[observer]
+    return key
 
 
 def _validate_illuminant(name):
-    known = colour.SDS_ILLUMINANTS
-    if not isinstance(name, str) or name not in known:
-        raise ValueError(f"illuminant: unknown illuminant {name!r}; known: {', '.join(known)}")
-    return known[name]
+    """colour-science's key of illuminant ``name`` (case, slug and canonical variants accepted)."""
+    key = tables.resolve_illuminant(name)
+    if key is None:
+        raise ValueError(
+            f"illuminant: unknown illuminant {name!r}; known: {', '.join(tables.illuminant_names())}"
+        )
+    return key
 
 
 def _grid_key(wavelengths):
@@ -84,39 +96,14 @@ def _grid_key(wavelengths):
     return tuple(wl.tolist())
 
 
-def _align(spectral_data, key, what):
-    """``spectral_data.copy().align(shape)`` with colour-science's errors named for the caller."""
-    try:
-        aligned = spectral_data.copy().align(_shape(key))
-    except (AssertionError, ValueError) as error:
-        raise ValueError(f"wavelengths: cannot align {what} onto the grid: {error}") from error
-    return np.array(aligned.values, dtype=np.float64)
-
-
-def _shape(key):
-    shape = colour.SpectralShape(key[0], key[-1], (key[-1] - key[0]) / (len(key) - 1))
-    if len(shape.wavelengths) != len(key):
-        raise ValueError(
-            f"wavelengths: colour.SpectralShape{(shape.start, shape.end, shape.interval)} gives "
-            f"{len(shape.wavelengths)} samples, the grid has {len(key)}"
-        )
-    return shape
-
-
 @functools.lru_cache(maxsize=64)
 def _cmfs_cached(observer, key):
-    msds = _validate_observer(observer)
-    values = _align(msds, key, f"the {observer} CMFs")
-    values.setflags(write=False)
-    return values
+    return tables.cmfs_aligned(_validate_observer(observer), key)
 
 
 @functools.lru_cache(maxsize=64)
 def _illuminant_cached(name, key):
-    sd = _validate_illuminant(name)
-    values = _align(sd, key, f"illuminant {name}")
-    values.setflags(write=False)
-    return values
+    return tables.illuminant_aligned(_validate_illuminant(name), key)
 
 
 @functools.lru_cache(maxsize=64)
@@ -152,11 +139,11 @@ def cmfs(observer=OBSERVER_DEFAULT, wavelengths=None):
 
     Examples
     --------
-    >>> cmfs("CIE 1931 2 Degree Standard Observer", np.arange(360, 831, 5.0))[39].round(4)
-    array([ 0.5121,  1.    ,  0.0057])
+    >>> cmfs("CIE 1931 2 Degree Standard Observer", np.arange(360, 831, 5.0))[39].round(4).tolist()
+    [0.5121, 1.0, 0.0057]
     """
     if wavelengths is None:
-        return np.array(_validate_observer(observer).values, dtype=np.float64)
+        return np.array(tables.cmfs_tabulated(_validate_observer(observer))[1])
     return _cmfs_cached(observer, _grid_key(wavelengths)).copy()
 
 
@@ -185,7 +172,7 @@ def illuminant_sd(name="D65", wavelengths=None):
     100.0
     """
     if wavelengths is None:
-        return np.array(_validate_illuminant(name).values, dtype=np.float64)
+        return np.array(tables.illuminant_tabulated(_validate_illuminant(name))[1])
     return _illuminant_cached(name, _grid_key(wavelengths)).copy()
 
 
@@ -237,8 +224,8 @@ def spectrum_to_XYZ(S, W):
     Examples
     --------
     >>> W = tristimulus_weights(np.arange(360, 831, 5.0))
-    >>> spectrum_to_XYZ(np.full((2, 95), 0.5), W)[:, 1].round(12)
-    array([ 0.5,  0.5])
+    >>> spectrum_to_XYZ(np.full((2, 95), 0.5), W)[:, 1].round(12).tolist()
+    [0.5, 0.5]
     """
     S = np.asarray(S, dtype=np.float64)
     W = np.asarray(W, dtype=np.float64)
@@ -275,23 +262,104 @@ def white_XYZ(illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
 
     Examples
     --------
-    >>> white_XYZ("D65").round(4)
-    array([ 0.9505,  1.    ,  1.0888])
+    >>> white_XYZ("D65").round(4).tolist()
+    [0.9505, 1.0, 1.0888]
     """
     if wavelengths is None:
-        wavelengths = _validate_observer(observer).wavelengths
+        wavelengths = tables.cmfs_tabulated(_validate_observer(observer))[0]
     W = tristimulus_weights(wavelengths, illuminant, observer)
     return spectrum_to_XYZ(np.ones(W.shape[0]), W)
+
+
+def XYZ_to_xy(XYZ):
+    """CIE xy chromaticity coordinates of CIE XYZ: ``x = X / (X + Y + Z)``, ``y = Y / (X + Y + Z)``.
+
+    As colour-science's ``colour.XYZ_to_xy`` (to the bit): where ``X + Y + Z`` is 0 or a quotient
+    is not finite, the coordinate is 0 (colour-science's default "Ignore Zero Conversion" division).
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Shape ``(..., 3)``.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``(..., 2)``.
+
+    References
+    ----------
+    CIE 15:2004 §7.3, equations 7.3-7.4.
+
+    Examples
+    --------
+    >>> XYZ_to_xy([0.20654008, 0.12197225, 0.05136952]).round(8).tolist()
+    [0.54369557, 0.32107944]
+    """
+    XYZ = np.asarray(XYZ, dtype=np.float64)
+    X, Y, Z = XYZ[..., 0], XYZ[..., 1], XYZ[..., 2]
+    total = X + Y + Z
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xy = np.stack([X / total, Y / total], axis=-1)
+    return np.nan_to_num(xy, nan=0.0, posinf=0.0, neginf=0.0)
+
+
+def _lightness_function_CIE1976(t):
+    """CIE 15:2004 §8.2.1: f(t) = t^(1/3) for t > (24/116)^3, else (841/108) t + 16/116."""
+    # |t|^(1/3) only where t > 0 is used; abs keeps np.where's other branch free of warnings.
+    return np.where(t > (24 / 116) ** 3, np.abs(t) ** (1 / 3), (841 / 108) * t + 16 / 116)
+
+
+def XYZ_to_Lab(XYZ, illuminant_xy):
+    """CIE 1976 L*a*b* of CIE XYZ (Y = 1 scale) relative to the white of chromaticity ``illuminant_xy``.
+
+    The white is ``X_n = x / y``, ``Y_n = 1``, ``Z_n = (1 - x - y) / y``; then ``L* = 116 f(Y/Y_n)
+    - 16``, ``a* = 500 (f(X/X_n) - f(Y/Y_n))``, ``b* = 200 (f(Y/Y_n) - f(Z/Z_n))``, in colour-science's
+    order of operations, so that the result equals ``colour.XYZ_to_Lab(XYZ, illuminant_xy)`` to the
+    bit. L* is 0-100.
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Shape ``(..., 3)``, relative to the white at Y = 1.
+    illuminant_xy : array_like
+        Chromaticity (x, y) of the reference white.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``(..., 3)``: L*, a*, b*.
+
+    References
+    ----------
+    CIE 15:2004 §8.2.1, equations 8.3-8.11.
+
+    Examples
+    --------
+    >>> XYZ_to_Lab([0.20654008, 0.12197225, 0.05136952], [0.3127, 0.3290]).round(3).tolist()
+    [41.528, 52.639, 26.923]
+    """
+    XYZ = np.asarray(XYZ, dtype=np.float64)
+    x_n, y_n = np.asarray(illuminant_xy, dtype=np.float64)[..., :2].T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        Y_y = np.nan_to_num(1.0 / y_n, nan=0.0, posinf=0.0, neginf=0.0)
+    X_n, Y_n, Z_n = x_n * Y_y, 1.0, (1 - (x_n + y_n)) * Y_y
+    f_X = _lightness_function_CIE1976(XYZ[..., 0] / X_n)
+    f_Y = _lightness_function_CIE1976(XYZ[..., 1] / Y_n)
+    f_Z = _lightness_function_CIE1976(XYZ[..., 2] / Z_n)
+    return np.stack([116 * f_Y - 16, 500 * (f_X - f_Y), 200 * (f_Y - f_Z)], axis=-1)
 
 
 def dominant_wavelength(XYZ, illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
     """Dominant wavelength and excitation purity of CIE XYZ colours relative to a white.
 
-    Thin wrapper over ``colour.dominant_wavelength`` (which needs scipy): purples, which have no
-    dominant wavelength, get their complementary wavelength as a negative number, as colour-science
-    returns it. colour-science's function is vectorised but allocates (n_colours, n_locus) arrays,
-    so colours are processed in chunks; any input shape ``(..., 3)`` is accepted. Its wavelength is
-    the locus sample closest to the intersection, i.e. it is quantised to the CMF tabulation (1 nm).
+    Purples, which have no dominant wavelength, get their complementary wavelength as a negative
+    number. The wavelength is colour-science's (``colour.dominant_wavelength``, reproduced to the
+    bit by :func:`_dominant_wavelength_locus`): the locus sample closest to the intersection of the
+    ray from the white through the colour with the spectral locus, i.e. it is quantised to the
+    CMF tabulation (1 nm). The locus is the observer's CMFs in xy, on their own tabulation. Colours
+    are processed in chunks of (n_colours, n_locus) arrays; any input shape ``(..., 3)`` is
+    accepted.
 
     Parameters
     ----------
@@ -319,7 +387,7 @@ def dominant_wavelength(XYZ, illuminant="D65", observer=OBSERVER_DEFAULT, wavele
 
     Examples
     --------
-    >>> wl, p = dominant_wavelength(colour.xyY_to_XYZ([0.54369557, 0.32107944, 0.2]))
+    >>> wl, p = dominant_wavelength([0.20654008, 0.12197225, 0.05136952])
     >>> float(wl), round(float(p), 2)
     (616.0, 0.62)
     """
@@ -333,7 +401,7 @@ def dominant_wavelength(XYZ, illuminant="D65", observer=OBSERVER_DEFAULT, wavele
         if XYZ_n.shape != (3,) or not np.all(np.isfinite(XYZ_n)) or XYZ_n.sum() <= 0:
             raise ValueError(f"illuminant: expected a name or a finite XYZ white, got {XYZ_n!r}")
     xy_n = XYZ_n[:2] / XYZ_n.sum()
-    msds = _validate_observer(observer)
+    locus_wavelengths, locus_xy = _spectral_locus(_validate_observer(observer))
 
     flat = XYZ.reshape(-1, 3)
     total = flat.sum(axis=-1)
@@ -349,24 +417,112 @@ def dominant_wavelength(XYZ, illuminant="D65", observer=OBSERVER_DEFAULT, wavele
     index = np.flatnonzero(chromatic)
     for start in range(0, index.size, _DOMINANT_WAVELENGTH_CHUNK):
         i = index[start : start + _DOMINANT_WAVELENGTH_CHUNK]
-        wl_i, xy_b = _dominant_wavelength_colour(xy[i], xy_n, msds)
+        wl_i, xy_b = _dominant_wavelength_robust(xy[i], xy_n, locus_wavelengths, locus_xy)
         wl[i] = wl_i
-        # CIE 15:2004 §9.1 excitation purity; colour's xy_b lies on the purple line for purples.
+        # CIE 15:2004 §9.1 excitation purity; xy_b lies on the purple line for purples.
         purity[i] = np.hypot(*(xy[i] - xy_n).T) / np.hypot(*(xy_b - xy_n).T)
     shape = XYZ.shape[:-1]
     return wl.reshape(shape), purity.reshape(shape)
 
 
-def _dominant_wavelength_colour(xy, xy_n, msds):
-    """colour.dominant_wavelength for (n, 2) chromaticities, robust to lines through a locus vertex.
+@functools.lru_cache(maxsize=None)
+def _spectral_locus(observer_key):
+    """(wavelengths, xy) of an observer's spectral locus, on the CMFs' own tabulation."""
+    wavelengths, xyz_bar = tables.cmfs_tabulated(observer_key)
+    xy = XYZ_to_xy(xyz_bar)
+    xy.setflags(write=False)
+    return wavelengths, xy
+
+
+def _extend_line_segment(a, b, distance=1.0):
+    """The point ``distance`` beyond ``b`` on the line from ``a`` through ``b`` (colour-science's
+    ``colour.geometry.extend_line_segment``, zero-division giving 0)."""
+    d = np.linalg.norm(a - b, axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        step = np.nan_to_num((b - a) / d[..., None], nan=0.0, posinf=0.0, neginf=0.0)
+    return b + step * distance
+
+
+def _intersect_line_segments(l_1, l_2):
+    """Intersections of every segment of ``l_1`` (n, 4) with every segment of ``l_2`` (m, 4).
+
+    Returns ``(xy (n, m, 2), intersect (n, m))``, NaN where they do not intersect. The standard
+    parametric solution, in the order of operations of colour-science's
+    ``colour.geometry.intersect_line_segments``.
+    """
+    x_1, y_1, x_2, y_2 = (l_1[:, i, None] for i in range(4))
+    x_3, y_3, x_4, y_4 = (l_2[None, :, i] for i in range(4))
+    x_4_x_3 = x_4 - x_3
+    y_1_y_3 = y_1 - y_3
+    y_4_y_3 = y_4 - y_3
+    x_1_x_3 = x_1 - x_3
+    x_2_x_1 = x_2 - x_1
+    y_2_y_1 = y_2 - y_1
+    numerator_a = x_4_x_3 * y_1_y_3 - y_4_y_3 * x_1_x_3
+    numerator_b = x_2_x_1 * y_1_y_3 - y_2_y_1 * x_1_x_3
+    denominator = y_4_y_3 * x_2_x_1 - x_4_x_3 * y_2_y_1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u_a = numerator_a / denominator
+        u_b = numerator_b / denominator
+    intersect = (u_a >= 0) & (u_a <= 1) & (u_b >= 0) & (u_b <= 1)
+    xy = np.stack([x_1 + x_2_x_1 * u_a, y_1 + y_2_y_1 * u_a], axis=-1)
+    xy[~intersect] = np.nan
+    return xy, intersect
+
+
+def _closest_locus_sample(xy, xy_n, locus_xy, inverse):
+    """Index of the locus sample nearest to where the ray from the white meets the closed locus.
+
+    The ray runs from the white ``xy_n`` through ``xy`` (away from ``xy``'s side if ``inverse``),
+    one unit long; the locus is closed by the purple line. As colour-science's
+    ``closest_spectral_locus_wavelength``, including its choice among several intersections (the
+    smallest x and the smallest y, sorted separately) and its nearest sample by Euclidean
+    distance (first on ties; a ray that meets nothing gives index 0 and a NaN point).
+    """
+    xy_e = _extend_line_segment(xy, xy_n) if inverse else _extend_line_segment(xy_n, xy)
+    closed = np.vstack([locus_xy, locus_xy[0]])
+    segments = np.hstack([closed, np.roll(closed, 1, axis=0)])
+    xy_wl, _ = _intersect_line_segments(np.concatenate([xy_n, xy_e], axis=-1), segments)
+    xy_wl = np.sort(xy_wl, axis=1)[:, 0, :]
+    d = xy_wl[:, None, :] - closed[None, :, :]
+    distance = np.sqrt(d[..., 0] * d[..., 0] + d[..., 1] * d[..., 1])
+    return np.argmin(distance, axis=-1), xy_wl
+
+
+def _dominant_wavelength_locus(xy, xy_n, locus_wavelengths, locus_xy):
+    """Dominant (or, for purples, negative complementary) wavelength of (n, 2) chromaticities.
+
+    CIE 15:2004 §9.1: the dominant wavelength is where the straight line from the white through
+    the colour, extended, meets the spectral locus; if it meets the purple line instead, the
+    complementary wavelength is where the line meets the locus on the opposite side of the white.
+    Reproduces ``colour.dominant_wavelength(xy, xy_n, cmfs)[:2]`` (colour-science 0.4) to the bit:
+    the wavelength is the nearest tabulated locus sample to the intersection.
+
+    Returns ``(wavelength (n,), boundary point xy_b (n, 2))``.
+    """
+    xy_n = np.resize(xy_n, xy.shape)
+    i_wl, xy_wl = _closest_locus_sample(xy, xy_n, locus_xy, inverse=False)
+    wl = np.asarray(locus_wavelengths)[i_wl]
+    xy_e = _extend_line_segment(xy_n, xy)
+    purple_line = np.hstack([locus_xy[0], locus_xy[-1]])[None, :]
+    _, purple = _intersect_line_segments(np.concatenate([xy_n, xy_e], axis=-1), purple_line)
+    purple = purple[:, 0]
+    if np.any(purple):
+        i_wl_c, _ = _closest_locus_sample(xy[purple], xy_n[purple], locus_xy, inverse=True)
+        wl[purple] = -np.asarray(locus_wavelengths)[i_wl_c]
+    return wl, xy_wl
+
+
+def _dominant_wavelength_robust(xy, xy_n, locus_wavelengths, locus_xy):
+    """:func:`_dominant_wavelength_locus`, robust to lines through a locus vertex.
 
     When the line from the white through ``xy`` passes exactly through a tabulated locus point
-    (e.g. a monochromatic stimulus), rounding can make colour-science's segment test miss both
-    adjoining locus segments: it then returns a NaN intersection and the first tabulated
-    wavelength. Those rows are recomputed with the direction from the white rotated by +-1e-9 rad,
-    which moves the intersection by ~1e-9 in xy and so cannot change the nearest locus sample.
+    (e.g. a monochromatic stimulus), rounding can make the segment test miss both adjoining locus
+    segments: colour-science then returns a NaN intersection and the first tabulated wavelength.
+    Those rows are recomputed with the direction from the white rotated by +-1e-9 rad, which moves
+    the intersection by ~1e-9 in xy and so cannot change the nearest locus sample.
     """
-    wl, xy_b, _xy_c = colour.dominant_wavelength(xy, xy_n, msds)
+    wl, xy_b = _dominant_wavelength_locus(xy, xy_n, locus_wavelengths, locus_xy)
     wl, xy_b = np.array(wl, dtype=np.float64).reshape(-1), np.reshape(xy_b, (-1, 2)).copy()
     for angle in (1e-9, -1e-9):
         failed = np.flatnonzero(np.any(np.isnan(xy_b), axis=-1))
@@ -375,7 +531,7 @@ def _dominant_wavelength_colour(xy, xy_n, msds):
         c, s = np.cos(angle), np.sin(angle)
         d = xy[failed] - xy_n
         xy_rotated = xy_n + np.stack([c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]], -1)
-        wl_f, xy_b_f, _ = colour.dominant_wavelength(xy_rotated, xy_n, msds)
+        wl_f, xy_b_f = _dominant_wavelength_locus(xy_rotated, xy_n, locus_wavelengths, locus_xy)
         wl[failed] = wl_f
         xy_b[failed] = np.reshape(xy_b_f, (-1, 2))
     wl[np.any(np.isnan(xy_b), axis=-1)] = np.nan

