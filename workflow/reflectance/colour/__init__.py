@@ -18,6 +18,7 @@ _EXPORTS = {
     "cmfs": "colorimetry",
     "illuminant_sd": "colorimetry",
     "tristimulus_weights": "colorimetry",
+    "tristimulus_weights_spd": "colorimetry",
     "white_XYZ": "colorimetry",
     "spectrum_to_XYZ": "colorimetry",
     "dominant_wavelength": "colorimetry",
