@@ -59,6 +59,7 @@ def _figure_materials(config):
                 walk(v, path + [i])
 
     walk(config.get("figures", {}), ["figures"])
+    walk(config.get("audits", {}), ["audits"])
     return found
 
 

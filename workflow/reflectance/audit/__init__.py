@@ -31,6 +31,8 @@ _EXPORTS = {
     "audit_weights": "shortcuts",
     "shortcut_XYZ": "shortcuts",
     "audit_table": "shortcuts",
+    "dE2000_against_angle": "shortcuts",
+    "first_angle_above": "shortcuts",
     "format_audit_csv": "shortcuts",
     "write_audit": "shortcuts",
 }

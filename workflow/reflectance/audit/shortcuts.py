@@ -52,6 +52,8 @@ __all__ = [
     "audit_weights",
     "shortcut_XYZ",
     "audit_table",
+    "dE2000_against_angle",
+    "first_angle_above",
     "format_audit_csv",
     "write_audit",
 ]
@@ -323,6 +325,37 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
         "dominant_nm": flat(wl), "purity": flat(purity),
         "dE2000_vs_exact": flat(dE2000), "dE_CAM16UCS_vs_exact": flat(dE_cam),
     }
+
+
+def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
+                         average_range_nm=(380, 780)):
+    """CIEDE2000 of each method's colour against the exact colour: array (method, angle).
+
+    The cheap core of :func:`audit_table` (no dominant wavelength, no CAM16), for fine grids.
+    """
+    import colour
+
+    cos_theta = np.cos(np.radians(np.asarray(angles_deg, dtype=np.float64)))
+    white_xy = colour.XYZ_to_xy(W.sum(axis=0))
+    lab_exact = colour.XYZ_to_Lab(shortcut_XYZ(material, cos_theta, W, "exact"), white_xy)
+    return np.stack([
+        colour.delta_E(colour.XYZ_to_Lab(
+            shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm), white_xy),
+            lab_exact, method="CIE 2000")
+        for m in methods])
+
+
+def first_angle_above(angles_deg, dE, level):
+    """The first angle of the (increasing) grid at which ``dE > level``; NaN if none.
+
+    Examples
+    --------
+    >>> float(first_angle_above([0, 10, 20, 30], [0.0, 0.5, 1.5, 0.9], 1.0))
+    20.0
+    """
+    above = np.asarray(dE) > level
+    return float(np.asarray(angles_deg, dtype=np.float64)[np.argmax(above)]) if above.any() \
+        else float("nan")
 
 
 def _cell(value):

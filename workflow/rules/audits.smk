@@ -1,0 +1,52 @@
+# Colour-accuracy audits: how far each shortcut of the papers (and of today's renderers) lies from
+# the exact spectral answer. One rule, one script, one caption per audit; results/audits/.
+
+AUDITS = config["audits"]
+AUDITS_OUT = "results/audits"
+
+TARGETS += [
+    f"{AUDITS_OUT}/{name}"
+    for name in ("fresnel_atlas.png", "fresnel_atlas.pdf", "fresnel_atlas.csv",
+                 "fresnel_atlas_thresholds.csv", "fresnel_atlas_answer.rst",
+                 "white_furnace.png", "white_furnace.pdf", "white_furnace.csv",
+                 "white_furnace_answer.rst")
+]
+
+
+rule audit_fresnel_atlas:
+    input:
+        spectra=[spectrum_csv(name) for name in AUDITS["fresnel_atlas"]["materials"]],
+    output:
+        png=report(f"{AUDITS_OUT}/fresnel_atlas.png", caption="../report/audit_fresnel_atlas.rst",
+                   category="Audits", subcategory="1. Fresnel shortcut atlas"),
+        pdf=f"{AUDITS_OUT}/fresnel_atlas.pdf",
+        csv=report(f"{AUDITS_OUT}/fresnel_atlas_thresholds.csv",
+                   caption="../report/audit_fresnel_atlas_table.rst",
+                   category="Audits", subcategory="1. Fresnel shortcut atlas"),
+        table=f"{AUDITS_OUT}/fresnel_atlas.csv",
+        answer=f"{AUDITS_OUT}/fresnel_atlas_answer.rst",
+    params:
+        audit=AUDITS["fresnel_atlas"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/audits/fresnel_atlas.log",
+    script:
+        "../scripts/audit_fresnel_atlas.py"
+
+
+rule audit_white_furnace:
+    output:
+        png=report(f"{AUDITS_OUT}/white_furnace.png", caption="../report/audit_white_furnace.rst",
+                   category="Audits", subcategory="6. Conventions: the factor 4"),
+        pdf=f"{AUDITS_OUT}/white_furnace.pdf",
+        csv=report(f"{AUDITS_OUT}/white_furnace.csv",
+                   caption="../report/audit_white_furnace_table.rst",
+                   category="Audits", subcategory="6. Conventions: the factor 4"),
+        answer=f"{AUDITS_OUT}/white_furnace_answer.rst",
+    params:
+        audit=AUDITS["white_furnace"],
+    log:
+        "logs/audits/white_furnace.log",
+    script:
+        "../scripts/audit_white_furnace.py"
