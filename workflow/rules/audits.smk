@@ -8,6 +8,8 @@ TARGETS += [
     f"{AUDITS_OUT}/{name}"
     for name in ("fresnel_atlas.png", "fresnel_atlas.pdf", "fresnel_atlas.csv",
                  "fresnel_atlas_thresholds.csv", "fresnel_atlas_answer.rst",
+                 "spectral_sampling.png", "spectral_sampling.pdf", "spectral_sampling.csv",
+                 "spectral_sampling_answer.rst",
                  "white_furnace.png", "white_furnace.pdf", "white_furnace.csv",
                  "white_furnace_answer.rst")
 ]
@@ -33,6 +35,27 @@ rule audit_fresnel_atlas:
         "logs/audits/fresnel_atlas.log",
     script:
         "../scripts/audit_fresnel_atlas.py"
+
+
+rule audit_spectral_sampling:
+    input:
+        spectra=[spectrum_csv(name) for name in AUDITS["spectral_sampling"]["materials"]],
+    output:
+        png=report(f"{AUDITS_OUT}/spectral_sampling.png",
+                   caption="../report/audit_spectral_sampling.rst",
+                   category="Audits", subcategory="4. Spectral sampling"),
+        pdf=f"{AUDITS_OUT}/spectral_sampling.pdf",
+        csv=report(f"{AUDITS_OUT}/spectral_sampling.csv",
+                   caption="../report/audit_spectral_sampling_table.rst",
+                   category="Audits", subcategory="4. Spectral sampling"),
+        answer=f"{AUDITS_OUT}/spectral_sampling_answer.rst",
+    params:
+        audit=AUDITS["spectral_sampling"],
+        colour=config["colour"],
+    log:
+        "logs/audits/spectral_sampling.log",
+    script:
+        "../scripts/audit_spectral_sampling.py"
 
 
 rule audit_white_furnace:
