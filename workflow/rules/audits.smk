@@ -10,6 +10,8 @@ TARGETS += [
                  "fresnel_atlas_thresholds.csv", "fresnel_atlas_answer.rst",
                  "spectral_sampling.png", "spectral_sampling.pdf", "spectral_sampling.csv",
                  "spectral_sampling_answer.rst",
+                 "spectral_recovery.png", "spectral_recovery.pdf", "spectral_recovery.csv",
+                 "spectral_recovery_answer.rst",
                  "white_furnace.png", "white_furnace.pdf", "white_furnace.csv",
                  "white_furnace_answer.rst")
 ]
@@ -56,6 +58,28 @@ rule audit_spectral_sampling:
         "logs/audits/spectral_sampling.log",
     script:
         "../scripts/audit_spectral_sampling.py"
+
+
+rule audit_spectral_recovery:
+    output:
+        png=report(f"{AUDITS_OUT}/spectral_recovery.png",
+                   caption="../report/audit_spectral_recovery.rst",
+                   category="Audits", subcategory="7. Judgement: spectral recovery"),
+        pdf=f"{AUDITS_OUT}/spectral_recovery.pdf",
+        csv=report(f"{AUDITS_OUT}/spectral_recovery.csv",
+                   caption="../report/audit_spectral_recovery_table.rst",
+                   category="Audits", subcategory="7. Judgement: spectral recovery"),
+        answer=f"{AUDITS_OUT}/spectral_recovery_answer.rst",
+    params:
+        audit=AUDITS["spectral_recovery"],
+        entries={name: config["materials"][name]
+                 for name in AUDITS["spectral_recovery"]["materials"]},
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/audits/spectral_recovery.log",
+    script:
+        "../scripts/audit_spectral_recovery.py"
 
 
 rule audit_white_furnace:
