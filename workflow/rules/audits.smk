@@ -12,6 +12,8 @@ TARGETS += [
                  "spectral_sampling_answer.rst",
                  "spectral_recovery.png", "spectral_recovery.pdf", "spectral_recovery.csv",
                  "spectral_recovery_answer.rst",
+                 "illuminant_observer.png", "illuminant_observer.pdf", "illuminant_observer.csv",
+                 "illuminant_observer_answer.rst",
                  "white_furnace.png", "white_furnace.pdf", "white_furnace.csv",
                  "white_furnace_answer.rst")
 ]
@@ -58,6 +60,27 @@ rule audit_spectral_sampling:
         "logs/audits/spectral_sampling.log",
     script:
         "../scripts/audit_spectral_sampling.py"
+
+
+rule audit_illuminant_observer:
+    input:
+        spectra=[spectrum_csv(name) for name in AUDITS["illuminant_observer"]["materials"]],
+    output:
+        png=report(f"{AUDITS_OUT}/illuminant_observer.png",
+                   caption="../report/audit_illuminant_observer.rst",
+                   category="Audits", subcategory="5. Illuminant and observer"),
+        pdf=f"{AUDITS_OUT}/illuminant_observer.pdf",
+        csv=report(f"{AUDITS_OUT}/illuminant_observer.csv",
+                   caption="../report/audit_illuminant_observer_table.rst",
+                   category="Audits", subcategory="5. Illuminant and observer"),
+        answer=f"{AUDITS_OUT}/illuminant_observer_answer.rst",
+    params:
+        audit=AUDITS["illuminant_observer"],
+        wavelengths=config["wavelengths"],
+    log:
+        "logs/audits/illuminant_observer.log",
+    script:
+        "../scripts/audit_illuminant_observer.py"
 
 
 rule audit_spectral_recovery:
