@@ -475,7 +475,11 @@ once everything is computed. Bad input: one line on standard error, exit 1, noth
 def _add_audit(sub):
     from reflectance.audit.shortcuts import AUDIT_METHODS, OBSERVERS
 
-    methods = "\n".join(f"  {name:<14}{text}" for name, text in AUDIT_METHODS.items())
+    import textwrap
+
+    methods = "\n".join(textwrap.fill(text, 96, initial_indent=f"  {name:<14}",
+                                       subsequent_indent=" " * 16)
+                         for name, text in AUDIT_METHODS.items())
     p = sub.add_parser(
         "audit", help="every Fresnel shortcut's colour error against exact, per angle (CSV)",
         description="Audit the Fresnel shortcuts of the papers and of today's renderers for one "
@@ -502,7 +506,8 @@ def _add_audit(sub):
                    help="wavelength grid in nm (default 360 830 5); the data must cover it")
     p.add_argument("--average-range", nargs=2, type=float, default=(380.0, 780.0),
                    metavar=("LO", "HI"),
-                   help="range (nm) of the average F0 of the approximation method")
+                   help="range (nm) of the average F0 of the approximation method "
+                        "(default 380 780)")
     p.add_argument("--spectra-dir", action="append", default=[], metavar="DIR",
                    help="a further folder of <name>.csv materials (repeatable; searched before "
                         "the bundled spectra)")
