@@ -27,6 +27,7 @@ include: "workflow/rules/blinn_1977.smk"
 include: "workflow/rules/lecture.smk"
 include: "workflow/rules/article.smk"
 include: "workflow/rules/renders.smk"
+include: "workflow/rules/audits.smk"
 
 
 rule all:

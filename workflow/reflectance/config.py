@@ -59,6 +59,7 @@ def _figure_materials(config):
                 walk(v, path + [i])
 
     walk(config.get("figures", {}), ["figures"])
+    walk(config.get("audits", {}), ["audits"])
     return found
 
 
@@ -87,6 +88,8 @@ def check_config(config, check_spectra=True):
 
     - the illuminant and observer are names colour-science knows;
     - every material a figure names is defined under ``materials``;
+    - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
+      the CSV the workflow writes from it;
     - the wavelength grid is ordered and inside every material's data range (taken from the
       data source, see :func:`reflectance.optics.spectra.coverage_nm`).
     """
@@ -115,6 +118,11 @@ def check_config(config, check_spectra=True):
             problems.append(
                 f"{_key(path)}: unknown material {name!r}; known: {', '.join(sorted(known))}"
             )
+    for name, entry in sorted(known.items()):
+        if entry.get("source") == "file" and Path(entry["path"]).resolve() == (
+                Path("spectra") / f"{name}.csv").resolve():
+            problems.append(f"materials.{name}.path: {entry['path']} is the file the workflow "
+                            f"writes from it; keep your own data outside spectra/ (e.g. data/)")
     problems += _table1_references(config)
     if check_spectra and w and not problems:
         from reflectance.optics.spectra import coverage_nm

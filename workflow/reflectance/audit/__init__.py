@@ -1,6 +1,7 @@
 """Audit: how far each shortcut of the papers lies from the exact spectral answer.
 
-Modules: colour_shift (a smooth material"s colour against angle, per Fresnel method).
+Modules: colour_shift (a smooth material"s colour against angle, per Fresnel method); shortcuts
+(the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS).
 
 Public names are loaded on first use (``from reflectance.audit import name``), so importing
 the package stays cheap.
@@ -9,7 +10,7 @@ the package stays cheap.
 from importlib import import_module
 
 #: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("colour_shift",)
+_MODULES = ("colour_shift", "shortcuts")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -21,6 +22,21 @@ _EXPORTS = {
     "COLOUR_TABLE_COLUMNS": "colour_shift",
     "colour_columns": "colour_shift",
     "colour_table": "colour_shift",
+    "AUDIT_METHODS": "shortcuts",
+    "AUDIT_COLUMNS": "shortcuts",
+    "OBSERVERS": "shortcuts",
+    "CAM16_VIEWING_CONDITIONS": "shortcuts",
+    "DEFAULT_ANGLES_DEG": "shortcuts",
+    "DE2000_LEVELS": "shortcuts",
+    "default_angles_deg": "shortcuts",
+    "resolve_material": "shortcuts",
+    "audit_weights": "shortcuts",
+    "shortcut_XYZ": "shortcuts",
+    "audit_table": "shortcuts",
+    "dE2000_against_angle": "shortcuts",
+    "first_angle_above": "shortcuts",
+    "format_audit_csv": "shortcuts",
+    "write_audit": "shortcuts",
 }
 
 __all__ = [*_MODULES, *_EXPORTS]

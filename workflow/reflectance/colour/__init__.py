@@ -20,6 +20,7 @@ _EXPORTS = {
     "cmfs": "colorimetry",
     "illuminant_sd": "colorimetry",
     "tristimulus_weights": "colorimetry",
+    "tristimulus_weights_spd": "colorimetry",
     "white_XYZ": "colorimetry",
     "spectrum_to_XYZ": "colorimetry",
     "XYZ_to_xy": "colorimetry",

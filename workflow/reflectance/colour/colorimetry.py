@@ -36,6 +36,7 @@ __all__ = [
     "cmfs",
     "illuminant_sd",
     "tristimulus_weights",
+    "tristimulus_weights_spd",
     "white_XYZ",
     "spectrum_to_XYZ",
     "XYZ_to_xy",
@@ -108,14 +109,53 @@ def _illuminant_cached(name, key):
 
 @functools.lru_cache(maxsize=64)
 def _weights_cached(key, illuminant, observer):
-    S = _illuminant_cached(illuminant, key)
-    xyz_bar = _cmfs_cached(observer, key)
+    W = _weights(_illuminant_cached(illuminant, key), _cmfs_cached(observer, key))
+    W.setflags(write=False)
+    return W
+
+
+def _weights(S, xyz_bar):
     # CIE 15:2004 §7.1: X = k sum S(l) R(l) x_bar(l) dl with k = 1 / sum S(l) y_bar(l) dl (the
     # interval dl cancels). Same sum, in the same order of operations, as colour-science's
     # sd_to_XYZ_integration.
-    W = S[:, None] * xyz_bar / np.sum(xyz_bar[:, 1] * S)
-    W.setflags(write=False)
-    return W
+    return S[:, None] * xyz_bar / np.sum(xyz_bar[:, 1] * S)
+
+
+def tristimulus_weights_spd(spd, wavelengths, observer=OBSERVER_DEFAULT):
+    """:func:`tristimulus_weights` for an illuminant given by its SPD values on the grid.
+
+    Parameters
+    ----------
+    spd : array_like
+        Relative spectral power at each wavelength of ``wavelengths`` (>= 0, not all 0).
+    wavelengths : array_like
+        Uniform grid in nm.
+    observer : str
+        A key of ``colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER``.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``(len(wavelengths), 3)``; ``spd`` of a CIE illuminant gives the same weights as its
+        name does in :func:`tristimulus_weights`.
+
+    Examples
+    --------
+    >>> wl = np.arange(360, 831, 5.0)
+    >>> bool(np.allclose(tristimulus_weights_spd(illuminant_sd("A", wl), wl),
+    ...                  tristimulus_weights(wl, "A")))
+    True
+    """
+    key = _grid_key(wavelengths)
+    S = np.asarray(spd, dtype=np.float64)
+    if S.shape != (len(key),) or not np.all(np.isfinite(S)) or np.any(S < 0):
+        raise ValueError(f"illuminant SPD: expected {len(key)} finite values >= 0 on the grid, "
+                         f"got shape {S.shape}")
+    _validate_observer(observer)
+    xyz_bar = _cmfs_cached(observer, key)
+    if not np.sum(xyz_bar[:, 1] * S) > 0:
+        raise ValueError("illuminant SPD: no power where the observer's y_bar is non-zero")
+    return _weights(S, xyz_bar)
 
 
 def cmfs(observer=OBSERVER_DEFAULT, wavelengths=None):

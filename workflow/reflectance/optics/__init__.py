@@ -77,6 +77,11 @@ _EXPORTS = {
     "write_sources_csv": "spectra",
     "list_materials": "spectra",
     "load_material": "spectra",
+    "material_from_table": "spectra",
+    "bundled_spectra_dir": "spectra",
+    "WAVELENGTH_HEADERS": "spectra",
+    "WAVELENGTH_UNITS": "spectra",
+    "SPECTRUM_FORMS": "spectra",
 }
 
 __all__ = [*_MODULES, *_EXPORTS]

