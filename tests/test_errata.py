@@ -231,7 +231,7 @@ def test_errata_blinn_triangle_angles_sum_to_pi():
     assert np.sin(2 * np.pi - (b + c)) == pytest.approx(-np.sin(b + c))
 
 
-def test_errata_blinn_projection_is_of_E_onto_the_N_H_plane():
+def test_errata_blinn_projects_E_not_B():
     """Blinn: 'Since E_p is the projection of B onto the N,H plane then N.E_p = N.E and H.E_p =
     H.E'. No B is defined; projecting E (his own E' of Fig. 4) onto the plane of N and H keeps its
     dot products with N and H, so G_b = 2(N.H)(N.E)/(E.H) from the 3-D E equals 1 - m/l of the
@@ -279,7 +279,7 @@ def test_errata_lecture_gaussian_puts_m_in_the_numerator():
     assert distribution_Gaussian_CookTorrance1982(np.cos(np.radians(14.3)), 0.3) == pytest.approx(0.5, abs=0.01)
 
 
-def test_errata_lecture_beckmann_4_in_cook_torrance_rs_is_the_normalised_brdf():
+def test_errata_lecture_beckmann_4_is_the_normalised_brdf():
     """The slide's D = exp(-(tan d/m)^2) / (4 m^2 cos^4 d) is Cook & Torrance's D / 4, so its
     projected-area integral is pi/4 (C&T's: pi; the normalised one's: 1). Put into C&T's
     R_s = (F/pi) D G / ((N.L)(N.V)) it is exactly the normalised F D G / (4 (N.L)(N.V)) with
