@@ -8,8 +8,8 @@ from pathlib import Path
 
 __all__ = ["project_file", "check_name"]
 
-#: a material name: letters, digits, '_', '-', '.', '+' and spaces, not starting with '.'
-_NAME = re.compile(r"[A-Za-z0-9_+\- ][A-Za-z0-9_+.\- ]*")
+#: a name: no path separator ('/' or '\\'), no control character, not starting with '.'
+_NAME = re.compile(r"[^/\\\x00-\x1f.][^/\\\x00-\x1f]*")
 
 
 def project_file(value, key, root):
