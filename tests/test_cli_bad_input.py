@@ -31,10 +31,10 @@ BAD = [
     (["colour", "Cu", "--angle", "0", "--average-range", "nan", "780"], "--average-range"),
     (["colour", "Cu", "--angle", "0", "--average-range", "700", "400"], "--average-range"),
     (["colour", "Cu", "--angle", "0", "--average-range", "-5", "780"], "--average-range"),
-    (["colour", "../x/Cu", "--angle", "0"], "'../x/Cu' is not a material name"),
-    (["colour", "/etc/passwd", "--angle", "0"], "'/etc/passwd' is not a material name"),
-    (["colour", "..", "--angle", "0"], "'..' is not a material name"),
-    (["colour", "sub\\Cu", "--angle", "0"], "is not a material name"),
+    (["colour", "../x/Cu", "--angle", "0"], "material '../x/Cu' is not a name"),
+    (["colour", "/etc/passwd", "--angle", "0"], "material '/etc/passwd' is not a name"),
+    (["colour", "..", "--angle", "0"], "material '..' is not a name"),
+    (["colour", "sub\\Cu", "--angle", "0"], "is not a name"),
     # reflectance brdf
     (["brdf", *CT, "--n", "nan"], "--n"),
     (["brdf", *CT, "--n", "1e160"], "--n"),
@@ -65,7 +65,7 @@ BAD = [
     (["brdf", "heidrich-seidel", "--incidence", "30", "--angles", "0", "--fibre-azimuth", "nan"],
      "--fibre-azimuth"),
     (["brdf", "lambert", "--incidence", "30", "--angles", "0", "--material", "../spectra/Cu"],
-     "is not a material name"),
+     "is not a name"),
     # reflectance render (numbers; output paths below)
     (["render", "s.yaml", "-o", "out.exr", "--width", "0"], "--width"),
     (["render", "s.yaml", "-o", "out.exr", "--height", "-1"], "--height"),
@@ -218,7 +218,7 @@ def test_camera_inside_an_object_or_empty_view_warns(workdir, root, capsys, move
 
 @pytest.mark.parametrize("args, named", [
     (["colour", "Cu", "--angle", "nan"], "--angle"),
-    (["colour", "../x/Cu", "--angle", "0"], "not a material name"),
+    (["colour", "../x/Cu", "--angle", "0"], "is not a name"),
     (["brdf", *PHONG, "--c1", "-5"], "--c1"),
     (["render", "s.yaml", "-o", "afile/out.exr"], "-o afile/out.exr"),
 ])

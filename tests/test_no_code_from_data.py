@@ -125,9 +125,9 @@ def test_a_symbolic_link_out_of_the_project_is_refused(tmp_path):
 
 @pytest.mark.parametrize("name", ["../x/Cu", "/etc/passwd", "..", ".", "a/b", "a\\b", ".hidden", ""])
 def test_a_material_is_a_name(name, root, grid):
-    with pytest.raises(ValueError, match="is not a material name"):
+    with pytest.raises(ValueError, match="is not a name"):
         check_name(name)
-    with pytest.raises(SpectraError, match="is not a material name.*known: .*Cu"):
+    with pytest.raises(SpectraError, match="material .* is not a name.*known: .*Cu"):
         load_material(name, grid, spectra_dir=root / "spectra")
 
 
@@ -278,3 +278,16 @@ def test_no_eval_exec_or_import_of_data_names_in_library_scripts_and_rules(root)
                 if re.search(r"\b(eval|exec|compile|__import__|import_module)\s*\(", code):
                     found.append(f"{relative}:{number}: {line.strip()}")
     assert found == []
+
+
+def test_a_scene_material_is_a_name_too(root):
+    from reflectance.render.scene import SceneError, scene_from_dict
+
+    doc = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30, "width": 8,
+                      "height": 6},
+           "objects": [{"geometry": {"type": "sphere", "radius": 1.0},
+                        "material": {"name": "../spectra/Cu", "m": 0.3}}],
+           "lights": [{"type": "directional", "direction": [0, -1, 1]}]}
+    with pytest.raises(SceneError, match=re.escape(
+            "s.yaml: objects[0].material.name: material '../spectra/Cu' is not a name")):
+        scene_from_dict(doc, source="s.yaml", spectra_dir=root / "spectra")

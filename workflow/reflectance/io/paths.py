@@ -48,9 +48,9 @@ def check_name(name, what="material"):
     >>> check_name("../x/Cu")
     Traceback (most recent call last):
     ...
-    ValueError: '../x/Cu' is not a material name (a name has no path separators or leading '.')
+    ValueError: material '../x/Cu' is not a name (a name has no path separators or leading '.')
     """
     if not isinstance(name, str) or not _NAME.fullmatch(name):
-        raise ValueError(f"{name!r} is not a {what} name (a name has no path separators or "
+        raise ValueError(f"{what} {name!r} is not a name (a name has no path separators or "
                          f"leading '.')")
     return name
