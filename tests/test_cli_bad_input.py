@@ -229,3 +229,14 @@ def test_as_a_process_exit_status_1_and_one_line(args, named, workdir, root):
     assert proc.returncode == 1
     assert named in proc.stderr and "Traceback" not in proc.stderr
     assert len(proc.stderr.strip().splitlines()) == 1 and proc.stdout == ""
+
+
+def test_implicit_config_yaml(workdir, root, capsys):
+    """./config.yaml is used when present: someone else's file without ``wavelengths`` falls back
+    to the built-in grid (as documented), a broken grid in it is refused naming it."""
+    (workdir / "config.yaml").write_text("other: 1\n")
+    assert main(["colour", "Cu", "--angle", "0", "--spectra-dir", str(root / "spectra")]) in (0, None)
+    assert capsys.readouterr().out.startswith("angle_deg,")
+    (workdir / "config.yaml").write_text("wavelengths: {start_nm: 360, end_nm: 830, step_nm: 0}\n")
+    message = refused(["colour", "Cu", "--angle", "0"], root)
+    assert "--config config.yaml: wavelengths.step_nm" in message

@@ -99,7 +99,10 @@ def _grid_and_colour(args):
         except yaml.YAMLError as err:
             raise _config_error(args, f"not valid YAML: {' '.join(str(err).split())}") from None
         if not isinstance(document, dict) or "wavelengths" not in document:
-            raise _config_error(args, "no 'wavelengths' mapping (start_nm, end_nm, step_nm)")
+            if args.config == DEFAULT_CONFIG and isinstance(document, dict):
+                document = {"wavelengths": grid}  # someone else's config.yaml: the built-in grid
+            else:
+                raise _config_error(args, "no 'wavelengths' mapping (start_nm, end_nm, step_nm)")
         grid = document["wavelengths"]
         keys = ("start_nm", "end_nm", "step_nm")
         if not isinstance(grid, dict) or any(k not in grid for k in keys):
