@@ -199,7 +199,7 @@ BAD = "bad.csv"
     ([BAD], {BAD: "wavelength_nm,n,k\n400,1,1\n500,one,1\n"},
      [BAD, "data row 2 (line 3)", "'one' is not a number"]),
     ([BAD], {BAD: "wl,n,k\n400,1,1\n500,1,1\n"}, [BAD, "micrometres", "wavelength_nm"]),
-    ([BAD], {BAD: b"\xff\xfe\x00garbage"}, [BAD, "unreadable"]),
+    ([BAD], {BAD: b"\xff\xfe\x00garbage"}, [BAD, "not a UTF-8 text file"]),
     ([BAD], {BAD: "wavelength_nm,n,k\n400,1,1\n700,1,1\n"},
      [BAD, "360-830 nm leaves the data range 400-700 nm"]),
     (["Cu", "--methods", "exact", "phong"], {}, ["unknown method(s) phong", "schlick, f82"]),

@@ -1,12 +1,9 @@
-"""The errata table (workflow/report/errata.yaml, workflow/scripts/errata.py), the symbol table of
-Cook & Torrance 1982 Fig. 1 (workflow/report/ct82_symbols.csv), and the errata that no library
-test shows: the article's worked Phong example, Blinn's triangle, the lecture's Gaussian and glare
-term."""
+"""The errata table (workflow/report/errata.yaml, text only; reflectance.papers.errata, one function
+per erratum), the symbol table of Cook & Torrance 1982 Fig. 1 (workflow/report/ct82_symbols.csv),
+and the errata that no library test shows: the article's worked Phong example, Blinn's triangle
+and projection, the lecture's Gaussian, Beckmann D and glare term."""
 
 import ast
-import importlib
-import importlib.util
-import inspect
 import re
 
 import numpy as np
@@ -16,6 +13,7 @@ import yaml
 
 from reflectance.optics.brdf import brdf
 from reflectance.optics.microfacet import distribution_Gaussian_CookTorrance1982, distribution_TorranceSparrow1967
+from reflectance.papers.errata import ERRATA, TEXT_KEYS, errata_table
 from reflectance.papers.vgroove import simulate_vgroove
 
 N_Z = np.array([0.0, 0.0, 1.0])
@@ -31,18 +29,10 @@ def errata(root):
 
 
 @pytest.fixture(scope="module")
-def script(root):
-    spec = importlib.util.spec_from_file_location("errata_script", root / "workflow" / "scripts" / "errata.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-@pytest.fixture(scope="module")
-def table(root, script):
+def table(root):
     config = yaml.safe_load((root / "config.yaml").read_text())["figures"]["errata"]
-    variables = {k: v for k, v in config.items() if k != "rows"}
-    return script.errata_table(root / config["rows"], variables)
+    settings = {k: v for k, v in config.items() if k != "rows"}
+    return errata_table(root / config["rows"], settings)
 
 
 def node_names(path):
@@ -70,13 +60,14 @@ def test_every_cited_test_exists(root, errata):
 
 
 def test_rows_are_complete(errata):
-    keys = {"text", "location", "printed", "correct", "let", "consequence", "value", "test"}
     for row in errata["rows"]:
-        assert keys <= set(row), row.get("location")
+        assert set(row) == set(TEXT_KEYS), row.get("id")
+        assert all(isinstance(row[k], str) for k in TEXT_KEYS), row["id"]
         assert row["text"] in errata["texts"]
-        assert row["value"] in row["let"]
-    # every text is represented
+    assert [row["id"] for row in errata["rows"]] == list(dict.fromkeys(r["id"] for r in errata["rows"]))
+    # every text is represented, and every registered erratum has its row
     assert {row["text"] for row in errata["rows"]} == set(errata["texts"])
+    assert {row["id"] for row in errata["rows"]} == set(ERRATA)
 
 
 def test_table_columns_and_finite_values(table):
@@ -119,12 +110,32 @@ FIG1_SYMBOLS = ("alpha", "theta", "lambda", "D", "d", "d omega_i", "E_i", "F", "
                 "I_ia", "I_r", "I_ra", "k", "L", "m", "N", "n", "R_a", "R", "R_d", "R_s", "s", "V", "w")
 
 
-def resolve(entry):
-    """Import ``module.name`` or ``module.name(argument)``; return (object, argument or None)."""
-    match = re.fullmatch(r"([\w.]+?)\.(\w+)(?:\((\w+)\))?", entry)
+def defined_names(path):
+    """Top-level functions and classes of a module's source, each with its parameters (a class's
+    are its annotated fields), read statically: the names of a data file are never imported."""
+    names = {}
+    for node in ast.parse(path.read_text()).body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            if isinstance(node, ast.FunctionDef):
+                a = node.args
+                params = [p.arg for p in a.posonlyargs + a.args + a.kwonlyargs]
+            else:
+                params = [f.target.id for f in node.body if isinstance(f, ast.AnnAssign)]
+            names[node.name] = set(params)
+    return names
+
+
+def resolve(root, entry):
+    """``module.name`` or ``module.name(argument)`` of the symbols table, looked up in the source
+    file of the module: (parameters of the name, argument or None)."""
+    match = re.fullmatch(r"reflectance((?:\.\w+)+?)\.(\w+)(?:\((\w+)\))?", entry)
     assert match, f"malformed code name {entry!r}"
     module, name, argument = match.groups()
-    return getattr(importlib.import_module(module), name), argument
+    path = root / "workflow" / "reflectance" / (module.strip(".").replace(".", "/") + ".py")
+    assert path.is_file(), f"{entry}: no module {path}"
+    names = defined_names(path)
+    assert name in names, f"{entry}: {path} defines no {name}"
+    return names[name], argument
 
 
 def test_ct82_fig1_symbols_resolve(root):
@@ -133,10 +144,17 @@ def test_ct82_fig1_symbols_resolve(root):
     assert (table.meaning != "").all() and (table.mathtext != "").all()
     for symbol, code in zip(table.symbol, table.code):
         for entry in code.split(";"):
-            obj, argument = resolve(entry.strip())
-            assert callable(obj), entry
+            parameters, argument = resolve(root, entry.strip())
             if argument is not None:
-                assert argument in inspect.signature(obj).parameters, f"{symbol}: {entry}"
+                assert argument in parameters, f"{symbol}: {entry}"
+
+
+def test_symbol_lookup_can_fail(root):
+    """The static lookup refuses a name the module does not define and an argument it lacks."""
+    with pytest.raises(AssertionError, match="defines no"):
+        resolve(root, "reflectance.optics.fresnel.system")
+    parameters, argument = resolve(root, "reflectance.optics.brdf.brdf(nonsense)")
+    assert argument not in parameters and "L" in parameters
 
 
 # --- the article's worked Phong example -----------------------------------------------------------
@@ -213,20 +231,84 @@ def test_errata_blinn_triangle_angles_sum_to_pi():
     assert np.sin(2 * np.pi - (b + c)) == pytest.approx(-np.sin(b + c))
 
 
+def test_errata_blinn_projects_E_not_B():
+    """Blinn: 'Since E_p is the projection of B onto the N,H plane then N.E_p = N.E and H.E_p =
+    H.E'. No B is defined; projecting E (his own E' of Fig. 4) onto the plane of N and H keeps its
+    dot products with N and H, so G_b = 2(N.H)(N.E)/(E.H) from the 3-D E equals 1 - m/l of the
+    plane figure: checked against the ray simulation of the groove for eyes off the plane. The
+    projection of L (the only other vector of the figure) does not give N.E."""
+    rng = np.random.default_rng(7)
+    off_plane = []
+    for _ in range(20):
+        L = direction(rng.uniform(0.0, 0.6), np.pi)
+        E = direction(rng.uniform(1.2, 1.5), rng.uniform(-2.0, 2.0))
+        H = (L + E) / np.linalg.norm(L + E)
+        axis = np.cross(N_Z, H) / np.linalg.norm(np.cross(N_Z, H))
+        E_p = E - (E @ axis) * axis
+        assert E_p @ axis == pytest.approx(0.0, abs=1e-15)  # in the N,H plane
+        assert N_Z @ E_p == pytest.approx(N_Z @ E, abs=1e-15)
+        assert H @ E_p == pytest.approx(H @ E, abs=1e-15)
+        L_p = L - (L @ axis) * axis
+        assert N_Z @ L_p != pytest.approx(N_Z @ E, abs=1e-3)
+        # the plane figure, from the unit in-plane eye vector: 1 - m/l, simulated
+        result = simulate_vgroove(L, E, n_rays=20_000)
+        G_b = 2 * (N_Z @ H) * (N_Z @ E) / (E @ H)
+        if result.case == "b":
+            assert result.G_masking == pytest.approx(G_b, abs=2e-4)
+            off_plane.append(np.degrees(np.arcsin(abs(E @ axis))))
+    assert len(off_plane) >= 5 and max(off_plane) > 20  # eyes well off the plane were checked
+    numbers = ERRATA["blinn-projection-of-B"]().numbers
+    assert numbers["G_b"] == pytest.approx(numbers["simulated"], abs=2e-4)
+    assert numbers["off_plane_deg"] > 20
+
+
 # --- the lecture ------------------------------------------------------------------------------------
 
 def test_errata_lecture_gaussian_puts_m_in_the_numerator():
-    """The lecture's Torrance-Sparrow D = exp(-(alpha m)^2) is Blinn's D2 with c2 = m, i.e. Cook &
-    Torrance's exp(-(alpha/m')^2) with m' = 1/m: with the lecture's 'm near 0.2 ... nearly smooth'
-    it is nearly uniform over the hemisphere, where Cook & Torrance's m = 0.2 lobe halves at 9.5 deg."""
+    """The lecture's Torrance-Sparrow D = exp(-(alpha m)^2), 'm is standard deviation', is Blinn's
+    D2 with c2 = m, i.e. Cook & Torrance's exp(-(alpha/m')^2) with m' = 1/m: an inverse width, so
+    a small m is nearly uniform over the hemisphere where Cook & Torrance's m = 0.3 lobe halves at
+    14.3 deg. (The slide's 'm near 0.2 ... nearly smooth' is said of the Beckmann m, not this one.)"""
     alpha = np.radians(np.linspace(0, 90, 19))
     for m in (0.2, 0.6):
         lecture = np.exp(-((alpha * m) ** 2))  # the slide as printed
         np.testing.assert_allclose(distribution_TorranceSparrow1967(np.cos(alpha), m), lecture, rtol=1e-12)
         np.testing.assert_allclose(distribution_Gaussian_CookTorrance1982(np.cos(alpha), 1 / m), lecture, rtol=1e-12)
         assert not np.allclose(distribution_Gaussian_CookTorrance1982(np.cos(alpha), m), lecture, rtol=0.1)
-    assert np.exp(-((np.pi / 2 * 0.2) ** 2)) > 0.9
-    assert distribution_Gaussian_CookTorrance1982(np.cos(np.radians(9.5)), 0.2) == pytest.approx(0.5, abs=0.01)
+    assert np.exp(-((np.pi / 2 * 0.3) ** 2)) == pytest.approx(0.801, abs=5e-4)
+    assert distribution_Gaussian_CookTorrance1982(np.cos(np.radians(14.3)), 0.3) == pytest.approx(0.5, abs=0.01)
+
+
+def test_errata_lecture_beckmann_4_is_the_normalised_brdf():
+    """The slide's D = exp(-(tan d/m)^2) / (4 m^2 cos^4 d) is Cook & Torrance's D / 4, so its
+    projected-area integral is pi/4 (C&T's: pi; the normalised one's: 1). Put into C&T's
+    R_s = (F/pi) D G / ((N.L)(N.V)) it is exactly the normalised F D G / (4 (N.L)(N.V)) with
+    D = exp(-(tan a/m)^2) / (pi m^2 cos^4 a): written out here for random geometries, F = 1."""
+    from scipy.integrate import quad
+
+    m = 0.3
+    slide = lambda c: np.exp(-((1 - c * c) / (c * c)) / m**2) / (4 * m**2 * c**4)  # noqa: E731
+    walter = lambda c: np.exp(-((1 - c * c) / (c * c)) / m**2) / (np.pi * m**2 * c**4)  # noqa: E731
+    integral, _ = quad(lambda a: 2 * np.pi * slide(np.cos(a)) * np.cos(a) * np.sin(a), 0, np.pi / 2,
+                       points=[m])
+    assert integral == pytest.approx(np.pi / 4, rel=1e-8)
+    rng = np.random.default_rng(4)
+    for _ in range(50):
+        L = direction(rng.uniform(0, 1.4), rng.uniform(0, 2 * np.pi))
+        V = direction(rng.uniform(0, 1.4), rng.uniform(0, 2 * np.pi))
+        H = (L + V) / np.linalg.norm(L + V)
+        NL, NV, NH, VH = N_Z @ L, N_Z @ V, N_Z @ H, V @ H
+        G = min(1.0, 2 * NH * NV / VH, 2 * NH * NL / VH)
+        rs_with_slide_D = 1.0 / np.pi * slide(NH) * G / (NL * NV)
+        normalised = walter(NH) * G / (4 * NL * NV)
+        assert rs_with_slide_D == pytest.approx(normalised, rel=1e-12)
+        assert brdf(L, V, N_Z, "CookTorrance1982", F=1.0, m=m, convention="physical") == (
+            pytest.approx(normalised, rel=1e-9))
+        # C&T's own D in the same R_s is four times the normalised BRDF
+        assert brdf(L, V, N_Z, "CookTorrance1982", F=1.0, m=m) == pytest.approx(4 * normalised, rel=1e-9)
+    numbers = ERRATA["lecture-beckmann-4"](m=m).numbers
+    assert numbers["ratio"] == pytest.approx(0.25, rel=1e-12)
+    assert numbers["brdf_ratio"] == pytest.approx(1.0, rel=1e-9)
 
 
 def projected_area(polygon, view):

@@ -6,6 +6,7 @@ Each sub-command is registered once in :data:`COMMANDS` by a function that adds 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 from pathlib import Path
@@ -15,8 +16,74 @@ __all__ = ["main", "COMMANDS"]
 DEFAULT_CONFIG = "config.yaml"
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors and exit status 1 (as every other refusal of this command)."""
+
+    def error(self, message):
+        raise SystemExit(f"{self.prog}: {message} (see {self.prog} --help)")
+
+
+def _interval(lo, hi, lo_open, hi_open):
+    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+
+def _real(lo, hi, lo_open=False, hi_open=False):
+    """An argparse type: a finite number in the interval from ``lo`` to ``hi`` (open ends as
+    asked); argparse names the option in its message."""
+    def real(text):
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+        if not math.isfinite(value):
+            raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+        if value < lo or value > hi or (lo_open and value == lo) or (hi_open and value == hi):
+            raise argparse.ArgumentTypeError(
+                f"{text} is out of range: must be in {_interval(lo, hi, lo_open, hi_open)}")
+        return value
+    real.__name__ = "number"
+    return real
+
+
+def _whole(lo, hi):
+    """An argparse type: an integer from ``lo`` to ``hi``."""
+    def whole(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        if not lo <= value <= hi:
+            raise argparse.ArgumentTypeError(f"{text} is out of range: must be {lo} to {hi}")
+        return value
+    whole.__name__ = "integer"
+    return whole
+
+
+#: the numeric options' types (the ranges are also said in each option's help)
+ANGLE_0_90 = _real(0.0, 90.0)                      # incidence for colour, degrees
+INCIDENCE = _real(0.0, 90.0, hi_open=True)         # brdf light, degrees from N
+VIEW_ANGLE = _real(-90.0, 90.0)                    # brdf view, degrees, signed
+AZIMUTH = _real(-360.0, 360.0)                     # degrees
+WAVELENGTH = _real(0.0, 10000.0, lo_open=True)     # nm
+INDEX_N = _real(0.0, 1000.0, lo_open=True)         # refractive index (measured metals: < 100)
+INDEX_K = _real(0.0, 1000.0)                       # extinction coefficient
+RMS_SLOPE = _real(1e-3, 10.0)                      # Beckmann m, Ward alpha
+EXPONENT = _real(0.0, 1e4)                         # Phong-like exponents
+ECCENTRICITY = _real(1e-3, 1.0)                    # Blinn's c3 (D3 peaks at grazing past 1)
+HALF_ANGLE = _real(0.1, 90.0, hi_open=True)        # Blinn's beta, degrees
+FRACTION = _real(0.0, 1.0)                         # s, d and the other weights
+PIXELS = _whole(1, 16384)
+SUPERSAMPLE = _whole(1, 16)
+RUNS = _whole(1, 1000)
+STEP_NM = _real(0.0, 100.0, lo_open=True)
+
+
+def _config_error(args, message):
+    return SystemExit(f"reflectance: --config {args.config}: {message}")
+
+
 def _grid_and_colour(args):
-    """Wavelength grid and colour defaults: from --config if it exists, else the built-in ones."""
+    """Wavelength grid: from --config if it exists (its ``wavelengths``), else the built-in one."""
     from reflectance.optics.spectra import wavelength_grid
 
     grid = {"start_nm": 360, "end_nm": 830, "step_nm": 5}
@@ -24,10 +91,36 @@ def _grid_and_colour(args):
     if path.exists():
         import yaml
 
-        grid = (yaml.safe_load(path.read_text()) or {}).get("wavelengths", grid)
+        try:
+            document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
+        except (OSError, UnicodeDecodeError) as err:
+            raise _config_error(args, f"cannot read: {getattr(err, 'strerror', None) or err}") \
+                from None
+        except yaml.YAMLError as err:
+            raise _config_error(args, f"not valid YAML: {' '.join(str(err).split())}") from None
+        if not isinstance(document, dict) or "wavelengths" not in document:
+            if args.config == DEFAULT_CONFIG and isinstance(document, dict):
+                document = {"wavelengths": grid}  # someone else's config.yaml: the built-in grid
+            else:
+                raise _config_error(args, "no 'wavelengths' mapping (start_nm, end_nm, step_nm)")
+        grid = document["wavelengths"]
+        keys = ("start_nm", "end_nm", "step_nm")
+        if not isinstance(grid, dict) or any(k not in grid for k in keys):
+            raise _config_error(args, f"wavelengths: must give {', '.join(keys)}, got {grid!r}")
+        for key in keys:
+            value = grid[key]
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value) or value <= 0:
+                raise _config_error(args, f"wavelengths.{key}: {value!r} is not a positive number")
+        if grid["start_nm"] >= grid["end_nm"]:
+            raise _config_error(args, f"wavelengths: start_nm {grid['start_nm']} must be below "
+                                      f"end_nm {grid['end_nm']}")
     elif args.config != DEFAULT_CONFIG:
-        raise SystemExit(f"reflectance: --config {args.config}: no such file")
-    return wavelength_grid(grid["start_nm"], grid["end_nm"], grid["step_nm"])
+        raise _config_error(args, "no such file")
+    try:
+        return wavelength_grid(grid["start_nm"], grid["end_nm"], grid["step_nm"])
+    except ValueError as err:
+        raise _config_error(args, f"wavelengths: {err}") from None
 
 
 def _common(parser):
@@ -60,7 +153,7 @@ def _add_colour(sub):
                     "B (display values after gamut clipping; not rescaled: white is Y = 1), "
                     "dE2000_vs_exact (CIEDE2000 against the exact spectral Fresnel colour).")
     p.add_argument("material", help="a material of spectra/ (see `reflectance spectra`)")
-    p.add_argument("--angle", nargs="+", type=float, required=True, metavar="DEG",
+    p.add_argument("--angle", nargs="+", type=ANGLE_0_90, required=True, metavar="DEG",
                    help="incidence angles in degrees, 0 to 90")
     p.add_argument("--fresnel", default="exact", choices=list(COLOUR_METHODS),
                    help="how F is computed: " + "; ".join(f"{k}: {v}"
@@ -71,7 +164,7 @@ def _add_colour(sub):
     p.add_argument("--space", default="sRGB", help="display colour space: sRGB or SMPTE-C")
     p.add_argument("--clip", default="dominant-wavelength",
                    help="gamut clipping: dominant-wavelength, clip or css-oklch")
-    p.add_argument("--average-range", nargs=2, type=float, default=(380.0, 780.0),
+    p.add_argument("--average-range", nargs=2, type=WAVELENGTH, default=(380.0, 780.0),
                    metavar=("LO", "HI"),
                    help="wavelength range (nm) of the average F0 for --fresnel approximation")
     _common(p)
@@ -82,6 +175,9 @@ def _run_colour(args):
     from reflectance.colour.colorimetry import tristimulus_weights
     from reflectance.audit.colour_shift import colour_columns
 
+    lo, hi = args.average_range
+    if not lo < hi:
+        raise SystemExit(f"reflectance: --average-range {lo:g} {hi:g}: LO must be below HI")
     grid = _grid_and_colour(args)
     material = _load(args, args.material, grid)
     try:
@@ -191,29 +287,34 @@ def _add_brdf(sub):
         epilog=_BRDF_EPILOG, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("model", metavar="MODEL",
                    help=f"one of {names} (or a key of reflectance.optics.brdf.BRDF_METHODS)")
-    p.add_argument("--incidence", type=float, required=True, metavar="DEG",
+    p.add_argument("--incidence", type=INCIDENCE, required=True, metavar="DEG",
                    help="angle of the light from the normal, 0 <= DEG < 90")
-    p.add_argument("--angles", type=float, nargs="+", required=True, metavar="DEG",
+    p.add_argument("--angles", type=VIEW_ANGLE, nargs="+", required=True, metavar="DEG",
                    help="view angles from the normal, -90..90, positive on the specular side")
-    p.add_argument("--azimuth", type=float, default=0.0, metavar="DEG",
-                   help="azimuth of the viewing plane from the plane of incidence (default 0)")
+    p.add_argument("--azimuth", type=AZIMUTH, default=0.0, metavar="DEG",
+                   help="azimuth of the viewing plane from the plane of incidence, -360..360 "
+                        "(default 0)")
     source = p.add_mutually_exclusive_group()
     source.add_argument("--material", help="a material of spectra/ (spectral: X, Y, Z columns)")
-    source.add_argument("--n", type=float, help="refractive index (one for all wavelengths)")
-    p.add_argument("--k", type=float, default=0.0, help="extinction coefficient with --n")
+    source.add_argument("--n", type=INDEX_N,
+                        help="refractive index (one for all wavelengths), 0 < n <= 1000")
+    p.add_argument("--k", type=INDEX_K, default=0.0,
+                   help="extinction coefficient with --n, 0 <= k <= 1000")
     rough = p.add_mutually_exclusive_group()
-    rough.add_argument("--m", type=float, help="rms slope (Beckmann; Ward's alpha)")
-    rough.add_argument("--c1", type=float, help="exponent (Phong, Blinn-Phong, ...)")
-    rough.add_argument("--c3", type=float, help="Blinn's D3 eccentricity")
-    rough.add_argument("--beta", type=float, metavar="DEG", help="Blinn's half-angle beta")
-    p.add_argument("--s", type=float, help="specular fraction / weight")
-    p.add_argument("--d", type=float, help="diffuse fraction / weight")
+    rough.add_argument("--m", type=RMS_SLOPE,
+                       help="rms slope (Beckmann; Ward's alpha), 0.001 to 10")
+    rough.add_argument("--c1", type=EXPONENT, help="exponent (Phong, Blinn-Phong, ...), 0 to 1e4")
+    rough.add_argument("--c3", type=ECCENTRICITY, help="Blinn's D3 eccentricity, 0.001 to 1")
+    rough.add_argument("--beta", type=HALF_ANGLE, metavar="DEG",
+                       help="Blinn's half-angle beta, 0.1 <= DEG < 90")
+    p.add_argument("--s", type=FRACTION, help="specular fraction / weight, 0 to 1")
+    p.add_argument("--d", type=FRACTION, help="diffuse fraction / weight, 0 to 1")
     p.add_argument("--convention", choices=["paper", "physical"],
                    help="'paper' (as printed) or 'physical' (normalised), for lambert and "
                         "cook-torrance (default: the library's, paper for cook-torrance)")
     p.add_argument("--fresnel", default="exact", choices=list(FRESNEL_METHODS),
                    help="how F is computed from n, k (default exact)")
-    p.add_argument("--fibre-azimuth", type=float, default=0.0, metavar="DEG",
+    p.add_argument("--fibre-azimuth", type=AZIMUTH, default=0.0, metavar="DEG",
                    help="Heidrich-Seidel fibre direction in the surface, from the plane of "
                         "incidence (default 0: along it)")
     p.add_argument("--illuminant", default="D65", help="a colour-science illuminant name")
@@ -254,7 +355,9 @@ def _brdf_parameters(method, args, albedo):
         target = roughness[option]
         if isinstance(target, tuple):
             target, convert = target
-            value = getattr(microfacet, convert)(np.radians(value))
+            converters = {"beta_to_c1_Blinn1977": microfacet.beta_to_c1_Blinn1977,
+                          "beta_to_c3_Blinn1977": microfacet.beta_to_c3_Blinn1977}
+            value = converters[convert](np.radians(value))
         if method == "CookTorrance1982" and option == "c3":
             parameters["distribution"] = "TrowbridgeReitz1975"
         if target == "alpha":
@@ -293,11 +396,7 @@ def _run_brdf(args):
     from reflectance.optics.fresnel import F0_from_nk
 
     method = _brdf_method(args.model)
-    angles = np.asarray(args.angles, dtype=np.float64)
-    if not 0.0 <= args.incidence < 90.0:
-        raise SystemExit(f"reflectance: --incidence {args.incidence:g}: must be in [0, 90)")
-    if np.any(np.abs(angles) > 90.0):
-        raise SystemExit(f"reflectance: --angles {args.angles}: each must be in [-90, 90]")
+    angles = np.asarray(args.angles, dtype=np.float64)  # each in [-90, 90] (VIEW_ANGLE)
     has_fresnel = method in ("CookTorrance1982", "TorranceSparrow_Blinn1977")
     if has_fresnel and args.material is None and args.n is None:
         raise SystemExit(f"reflectance: {method} needs --material or --n for its Fresnel term")
@@ -363,9 +462,11 @@ def _add_render(sub):
     p.add_argument("scene", metavar="SCENE.yaml", help="scene file")
     p.add_argument("-o", "--output", required=True, metavar="OUT.exr", help="linear XYZ image")
     p.add_argument("--png", metavar="OUT.png", help="display image")
-    p.add_argument("--width", type=int, help="override the camera's width (pixels)")
-    p.add_argument("--height", type=int, help="override the camera's height (pixels)")
-    p.add_argument("--supersample", type=int, help="override n of the n x n samples per pixel")
+    p.add_argument("--width", type=PIXELS, help="override the camera's width (pixels, 1 to 16384)")
+    p.add_argument("--height", type=PIXELS,
+                   help="override the camera's height (pixels, 1 to 16384)")
+    p.add_argument("--supersample", type=SUPERSAMPLE,
+                   help="override n of the n x n samples per pixel (1 to 16)")
     p.add_argument("--spectral", choices=["table", "brute-force"],
                    help="override the scene's wavelength integration (default: the scene's, "
                         "table)")
@@ -375,22 +476,49 @@ def _add_render(sub):
     p.set_defaults(run=_run_render)
 
 
+def _writable(option, path):
+    """SystemExit naming ``option`` unless ``path`` can be written: not a folder, and its
+    nearest existing ancestor a folder we may write into (missing folders are created)."""
+    path = Path(path)
+    if path.is_dir():
+        raise SystemExit(f"reflectance: {option} {path}: is a folder")
+    parent = path.parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir():
+        raise SystemExit(f"reflectance: {option} {path}: {parent} is a file, not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise SystemExit(f"reflectance: {option} {path}: cannot write in folder {parent}")
+
+
 def _run_render(args):
-    from reflectance.render.pipeline import render, write_render
+    from reflectance.render.pipeline import render, render_warnings, write_render
     from reflectance.render.scene import load_scene
 
     if Path(args.output).suffix.lower() != ".exr":
         raise SystemExit(f"reflectance: -o {args.output}: the output must end in .exr")
     if args.png is not None and Path(args.png).suffix.lower() != ".png":
         raise SystemExit(f"reflectance: --png {args.png}: must end in .png")
+    _writable("-o", args.output)
+    if args.png is not None:
+        _writable("--png", args.png)
     try:
         scene = load_scene(args.scene, spectra_dir=args.spectra_dir, width=args.width,
                            height=args.height, supersample=args.supersample,
                            spectral=args.spectral)
         result = render(scene)
-        write_render(result, args.output, args.png)
     except ValueError as err:
         raise SystemExit(f"reflectance: {err}") from None
+    for warning in render_warnings(result):
+        print(f"reflectance: warning: {warning}", file=sys.stderr)
+    try:
+        write_render(result, args.output, args.png)  # both files or neither
+    except (OSError, ValueError) as err:
+        where = f" {err.filename}" if getattr(err, "filename", None) else ""
+        reason = getattr(err, "strerror", None) or " ".join(str(err).split())
+        raise SystemExit(f"reflectance: cannot write{where} (-o {args.output}"
+                         f"{'' if args.png is None else f', --png {args.png}'}): {reason}; "
+                         f"nothing written") from None
     if not args.quiet:
         t = result.timings
         print(f"{args.output}: {scene.camera.width} x {scene.camera.height} pixels, "
@@ -412,15 +540,17 @@ def _add_bench(sub):
                     "the per-angle table (speed ratio, CIEDE2000), and the shading time on 5 nm "
                     "and 1 nm wavelength grids.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
-    p.add_argument("--sizes", type=int, nargs="+", default=[256, 512, 1024], metavar="N",
-                   help="image sides in pixels (default 256 512 1024)")
-    p.add_argument("--supersample", type=int, default=2, help="n x n samples per pixel")
-    p.add_argument("--runs", type=int, default=5, help="renders per size (median)")
-    p.add_argument("--brute-force-runs", type=int, default=1,
+    p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
+                   help="image sides in pixels, 1 to 16384 (default 256 512 1024)")
+    p.add_argument("--supersample", type=SUPERSAMPLE, default=2,
+                   help="n x n samples per pixel (1 to 16)")
+    p.add_argument("--runs", type=RUNS, default=5, help="renders per size (median; 1 to 1000)")
+    p.add_argument("--brute-force-runs", type=_whole(0, 1000), default=1,
                    help="brute-force shadings per size (0: skip)")
-    p.add_argument("--grids", type=float, nargs="*", default=[5.0, 1.0], metavar="NM",
-                   help="wavelength steps compared at --grid-size (default 5 1)")
-    p.add_argument("--grid-size", type=int, default=512, help="size of the grid comparison")
+    p.add_argument("--grids", type=STEP_NM, nargs="*", default=[5.0, 1.0], metavar="NM",
+                   help="wavelength steps compared at --grid-size, 0 < NM <= 100 (default 5 1)")
+    p.add_argument("--grid-size", type=PIXELS, default=512,
+                   help="size of the grid comparison (1 to 16384)")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.set_defaults(run=_run_bench)
@@ -589,7 +719,7 @@ def build_parser(command=None):
     """The argument parser; only ``command``'s sub-parser is built in full (all with None)."""
     from reflectance import __version__
 
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="reflectance",
         description="Spectral audits of the classic reflectance papers (Blinn 1977, Cook & "
                     "Torrance 1982). Each command prints CSV.")

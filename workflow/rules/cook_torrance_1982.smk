@@ -1,5 +1,8 @@
 # Cook & Torrance 1982, "A reflectance model for computer graphics": Figs. 4 and 5.
 
+from reflectance.io.paths import project_file
+from reflectance.papers.errata import errata_rows
+
 CT82_OUT = "results/cook_torrance_1982"
 
 TARGETS += [
@@ -69,6 +72,17 @@ rule ct82_fig5bc:
 
 CT82_ERRATA = config["figures"]["errata"]
 
+# The symbols table and the errata rows are the project's own files (a path leaving the project
+# is refused, naming its key); the errata rows are text, checked here (file and row named) before
+# any job: an unknown id or a key other than the text ones stops the run.
+try:
+    CT82_SYMBOLS = project_file(CT82["fig1"]["symbols"], "figures.cook_torrance_1982.fig1.symbols",
+                                workflow.basedir)
+    CT82_ERRATA_ROWS = project_file(CT82_ERRATA["rows"], "figures.errata.rows", workflow.basedir)
+    errata_rows(CT82_ERRATA_ROWS)
+except ValueError as err:
+    raise WorkflowError(f"config.yaml: {err}") from None
+
 TARGETS += [
     f"{CT82_OUT}/{name}"
     for name in ("fig1.png", "fig1.pdf", "fig1.csv", "fig2.png", "fig2.csv", "fig3.png",
@@ -78,7 +92,7 @@ TARGETS += [
 
 rule ct82_fig1:
     input:
-        symbols=CT82["fig1"]["symbols"],
+        symbols=CT82_SYMBOLS,
     output:
         png=report(f"{CT82_OUT}/fig1.png", caption="../report/ct82_fig1.rst",
                    category="Cook & Torrance 1982", subcategory="Fig. 1"),
@@ -140,7 +154,7 @@ rule ct82_table1:
 
 rule errata:
     input:
-        rows=CT82_ERRATA["rows"],
+        rows=CT82_ERRATA_ROWS,
     output:
         csv=report("results/errata/errata.csv", caption="../report/errata.rst",
                    category="Errata", subcategory="All texts"),

@@ -1,51 +1,12 @@
-"""Errata of the four texts: every place where they disagree with each other or with arithmetic, with
-the consequence computed here (from workflow/report/errata.yaml) and the test that shows it."""
+"""Errata of the four texts: every place where they disagree with each other or with arithmetic: the
+text of workflow/report/errata.yaml (read as text only) with the consequence computed by each
+row's function in reflectance.papers.errata, and the test that shows it."""
 
-import importlib
 import textwrap
 
 import numpy as np
-import pandas as pd
-import yaml
 
-NUMPY_NAMES = ("pi", "sqrt", "cos", "sin", "tan", "arccos", "radians", "degrees", "log", "exp",
-               "array", "dot", "maximum")
-COLUMNS = ["text", "location", "printed", "correct", "consequence", "value", "test"]
-
-
-def load_errata(path):
-    """The errata file: its rows and the namespace (numpy + library imports) they evaluate in."""
-    data = yaml.safe_load(open(path))
-    namespace = {name: getattr(np, name) for name in NUMPY_NAMES} | {"norm": np.linalg.norm}
-    for dotted in data["imports"]:
-        module, _, name = dotted.rpartition(".")
-        namespace[name] = getattr(importlib.import_module(module), name)
-    return data, namespace
-
-
-def evaluate(row, namespace, variables):
-    """Evaluate a row's ``let`` expressions in order; return (consequence text, value, names)."""
-    scope = dict(variables)
-    for name, expression in row["let"].items():
-        try:
-            value = eval(expression, {"__builtins__": {}, **namespace}, scope)  # noqa: S307
-        except Exception as err:
-            raise ValueError(f"errata row {row['location']!r}: let {name} = {expression!r}: "
-                             f"{err}") from None
-        scope[name] = float(value) if np.ndim(value) == 0 else value
-    return row["consequence"].format(**scope), scope[row["value"]], scope
-
-
-def errata_table(path, variables):
-    """The errata as a DataFrame with the columns of :data:`COLUMNS`."""
-    data, namespace = load_errata(path)
-    records = []
-    for row in data["rows"]:
-        consequence, value, _ = evaluate(row, namespace, variables)
-        records.append({"text": data["texts"][row["text"]], "location": row["location"],
-                        "printed": row["printed"], "correct": row["correct"],
-                        "consequence": consequence, "value": value, "test": row["test"]})
-    return pd.DataFrame(records, columns=COLUMNS)
+from reflectance.papers.errata import errata_table
 
 
 def render(table, png, pdf):
@@ -87,9 +48,8 @@ if "snakemake" in globals():
     from reflectance.scripting import script_log
 
     with script_log(snakemake) as log:
-        settings = dict(snakemake.params.errata)
-        variables = {k: v for k, v in settings.items() if k != "rows"}
-        table = errata_table(snakemake.input.rows, variables)
+        settings = {k: v for k, v in snakemake.params.errata.items() if k != "rows"}
+        table = errata_table(snakemake.input.rows, settings)
         table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
         render(table, snakemake.output.png, snakemake.output.pdf)
         for r in table.itertuples():

@@ -1,6 +1,7 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), figures (the shared matplotlib style and saving).
+Modules: atomic (write-then-rename), images (PNG, EXR), figures (the shared matplotlib style and saving),
+paths (paths from data: inside the project; names that are names).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -9,7 +10,7 @@ the package stays cheap.
 from importlib import import_module
 
 #: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("atomic", "figures", "images")
+_MODULES = ("atomic", "figures", "images", "paths")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -23,6 +24,8 @@ _EXPORTS = {
     "XYZ_CHROMATICITIES": "images",
     "write_exr_XYZ": "images",
     "read_exr": "images",
+    "project_file": "paths",
+    "check_name": "paths",
 }
 
 __all__ = [*_MODULES, *_EXPORTS]

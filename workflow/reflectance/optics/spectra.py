@@ -262,12 +262,14 @@ def _parse_spectrum_text(text, source, units=None):
 def _read_spectrum(path, units=None):
     path = Path(path)
     try:
-        text = path.read_text()
+        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark, if any, is not data
     except FileNotFoundError:
         raise SpectraError(f"{path}: no such spectrum file") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise SpectraError(f"{path}: unreadable ({err.__class__.__name__}: {err}); "
-                           f"{_expected_forms()}") from None
+    except UnicodeDecodeError as err:
+        raise SpectraError(f"{path}: not a UTF-8 text file (byte {err.start}: "
+                           f"{err.object[err.start:err.start + 1]!r}); {_expected_forms()}") from None
+    except OSError as err:
+        raise SpectraError(f"{path}: cannot read: {err.strerror}") from None
     return _parse_spectrum_text(text, path, units)
 
 
@@ -597,7 +599,12 @@ def list_materials(spectra_dir="spectra"):
     path = Path(spectra_dir) / "sources.csv"
     if not path.exists():
         raise SpectraError(f"{path}: no sources table (built by the workflow's sources_table rule)")
-    table = pd.read_csv(path, dtype=str, keep_default_na=False)
+    try:
+        table = pd.read_csv(path, dtype=str, keep_default_na=False, encoding="utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise SpectraError(f"{path}: not a UTF-8 text file (byte {err.start})") from None
+    except (pd.errors.ParserError, OSError) as err:
+        raise SpectraError(f"{path}: cannot read: {' '.join(str(err).split())}") from None
     missing = [c for c in SOURCES_COLUMNS if c not in table.columns]
     if missing:
         raise SpectraError(f"{path}, line 1 (header): missing column(s) {missing}")
@@ -773,7 +780,14 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
         Unknown material (lists the known ones), malformed CSV (file and row), or a grid that
         leaves the data range (material, file, both ranges).
     """
+    from reflectance.io.paths import check_name
+
     spectra_dir = Path(spectra_dir)
+    try:
+        check_name(name)  # a material is a name: ../x/Cu must not read outside spectra_dir
+    except ValueError as err:
+        raise SpectraError(f"{err}; known: {', '.join(_known_materials(spectra_dir)) or 'none'}") \
+            from None
     path = spectra_dir / f"{name}.csv"
     if not path.is_file():
         known = _known_materials(spectra_dir)

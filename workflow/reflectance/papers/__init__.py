@@ -1,7 +1,8 @@
 """Papers: what only one text needs: its simulations, plots and scenes from config.yaml.
 
 Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn"s V-groove), profile (random-surface
-shadowing), polar (plane-of-incidence curves), scenes (the rendered figures" scenes).
+shadowing), polar (plane-of-incidence curves), scenes (the rendered figures" scenes), errata (the
+computed consequence of each erratum of the four texts, by id).
 
 Public names are loaded on first use (``from reflectance.papers import name``), so importing
 the package stays cheap.
@@ -10,10 +11,13 @@ the package stays cheap.
 from importlib import import_module
 
 #: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
+_MODULES = ("errata", "polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
+    "ERRATA": "errata",
+    "errata_rows": "errata",
+    "errata_table": "errata",
     "direction_from_angles": "polar",
     "plane_of_incidence_vectors": "polar",
     "intensity_in_plane_of_incidence": "polar",

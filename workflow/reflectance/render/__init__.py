@@ -44,6 +44,8 @@ _EXPORTS = {
     "display_image": "pipeline",
     "software_versions": "pipeline",
     "write_render": "pipeline",
+    "render_warnings": "pipeline",
+    "BACK_FRACTION_WARNING": "pipeline",
     "image_difference_CIEDE2000": "pipeline",
     "ray_triangle_MollerTrumbore1997": "rays",
     "ray_sphere": "rays",

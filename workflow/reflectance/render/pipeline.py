@@ -18,6 +18,7 @@ same scene gives byte-identical files.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import time
 from dataclasses import dataclass, field
@@ -25,6 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982
+from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.shading import shade
 from reflectance.render.shadows import shadow_masks
@@ -40,6 +42,8 @@ __all__ = [
     "display_image",
     "software_versions",
     "write_render",
+    "render_warnings",
+    "BACK_FRACTION_WARNING",
     "image_difference_CIEDE2000",
 ]
 
@@ -142,8 +146,41 @@ def render(scene, spectral=None, components=False):
     timings.update(shading=t2 - t1, total=t2 - t0)
     hit = samples.hit
     stats = dict(samples.stats, hit=float(hit.mean()),
-                 shadowed=[float(s[hit].mean()) if hit.any() else 0.0 for s in shadowed])
+                 shadowed=[float(s[hit].mean()) if hit.any() else 0.0 for s in shadowed],
+                 seen_from_back=_seen_from_back(scene, samples))
     return RenderResult(image, parts, timings, stats, scene)
+
+
+def _seen_from_back(scene, samples):
+    """Per object: the fraction of its visible samples seen from the back of the surface (None
+    where it is not visible)."""
+    fractions = []
+    for i in range(len(scene.objects)):
+        mine = samples.hit & (samples.object_id == i)
+        fractions.append(float(samples.flipped[mine].mean()) if mine.any() else None)
+    return fractions
+
+
+#: an object more than this fraction of whose visible surface is seen from the back is reported
+#: as possibly enclosing the camera
+BACK_FRACTION_WARNING = 0.5
+
+
+def render_warnings(result):
+    """Plain-language warnings about a render that worked but is probably not what was meant:
+    an empty view (no object in the image) and a camera inside an object (most of the object's
+    visible surface seen from its back). Each names the camera (position and look_at)."""
+    camera = result.scene.camera
+    where = (f"the camera at position {list(camera.position)} looking at {list(camera.look_at)} "
+             f"(scene {result.scene.source})")
+    warnings = []
+    if result.stats["hit"] == 0.0:
+        warnings.append(f"{where} sees no object: the image is empty (black)")
+    for obj, back in zip(result.scene.objects, result.stats["seen_from_back"]):
+        if back is not None and back > BACK_FRACTION_WARNING:
+            warnings.append(f"{where} sees {100 * back:.0f} % of object {obj.name!r} from the back "
+                            f"of its surface: the camera is probably inside it")
+    return warnings
 
 
 def display_image(result):
@@ -188,9 +225,14 @@ def write_render(result, exr_path, png_path=None):
         "visibility_stats": json.dumps(result.stats, sort_keys=True),
         "software": json.dumps(software_versions(), sort_keys=True),
     }
-    write_exr_XYZ(exr_path, result.XYZ, attributes)
-    if png_path is not None:
-        write_png(png_path, rgb, bit_depth=scene.display.png_bit_depth)
+    # both files are written to temporary files first and moved into place only when both
+    # succeeded: a failed PNG leaves no EXR (and no earlier file is replaced)
+    with contextlib.ExitStack() as stack:
+        exr_tmp = stack.enter_context(atomic_write(exr_path))
+        png_tmp = None if png_path is None else stack.enter_context(atomic_write(png_path))
+        write_exr_XYZ(exr_tmp, result.XYZ, attributes)
+        if png_tmp is not None:
+            write_png(png_tmp, rgb, bit_depth=scene.display.png_bit_depth)
 
 
 def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,

@@ -508,9 +508,13 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     if not path.is_file():
         raise SceneError(f"{path}: no such scene file")
     try:
-        document = yaml.safe_load(path.read_text())
+        document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
     except yaml.YAMLError as err:
         raise SceneError(f"{path}: not valid YAML: {err}") from None
+    except UnicodeDecodeError as err:
+        raise SceneError(f"{path}: not a UTF-8 text file (byte {err.start})") from None
+    except OSError as err:
+        raise SceneError(f"{path}: cannot read: {err.strerror}") from None
     if isinstance(document, dict):
         camera = document.get("camera")
         for key, value in (("width", width), ("height", height), ("supersample", supersample)):

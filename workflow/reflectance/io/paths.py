@@ -1,0 +1,56 @@
+"""Paths taken from data: a file named in config.yaml stays inside the project; a material is a
+name, not a path."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+__all__ = ["project_file", "check_name"]
+
+#: a name: no path separator ('/' or '\\'), no control character, not starting with '.'
+_NAME = re.compile(r"[^/\\\x00-\x1f.][^/\\\x00-\x1f]*")
+
+
+def project_file(value, key, root):
+    """``value`` (a path from config ``key``) as a path relative to the project folder ``root``.
+
+    Refuses, naming ``key``, an absolute path or one that leaves ``root`` (through ``..`` or a
+    symbolic link): data files named in the config are the project's own.
+
+    Examples
+    --------
+    >>> project_file("workflow/report/errata.yaml", "figures.errata.rows", ".")
+    'workflow/report/errata.yaml'
+    >>> project_file("../x.yaml", "figures.errata.rows", ".")
+    Traceback (most recent call last):
+    ...
+    ValueError: figures.errata.rows: '../x.yaml' leaves the project folder; give a path inside it
+    """
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError(f"{key}: {value!r} is not a file path")
+    path = Path(value)
+    if path.is_absolute() or path.drive:
+        raise ValueError(f"{key}: {value!r} is absolute; give a path inside the project folder")
+    root = Path(root).resolve()
+    if ".." in path.parts or not (root / path).resolve().is_relative_to(root):
+        raise ValueError(f"{key}: {value!r} leaves the project folder; give a path inside it")
+    return path.as_posix()
+
+
+def check_name(name, what="material"):
+    """``name`` if it is a plain name (no path separator, not '.' or '..'), else ValueError.
+
+    Examples
+    --------
+    >>> check_name("Cu")
+    'Cu'
+    >>> check_name("../x/Cu")
+    Traceback (most recent call last):
+    ...
+    ValueError: material '../x/Cu' is not a name (a name has no path separators or leading '.')
+    """
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise ValueError(f"{what} {name!r} is not a name (a name has no path separators or "
+                         f"leading '.')")
+    return name

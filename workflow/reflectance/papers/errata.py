@@ -1,0 +1,450 @@
+"""Errata of the four texts: the computed consequence of each, one function per erratum.
+
+The text of each erratum (which paper, where, what is printed, what is correct, the test that
+shows it) lives in ``workflow/report/errata.yaml`` under the erratum's id; the numbers live here,
+in a function registered under the same id in :data:`ERRATA`. The YAML is read as text only: an
+id that is not registered here, or a row with any key but the text ones, is refused
+(:func:`errata_rows`), so no data file can make the workflow run code.
+
+Each function takes the settings of config.yaml ``figures.errata`` (``n``, ``theta_deg``, ``m``,
+``s``) as keywords and returns a :class:`Consequence`: the sentence with its numbers, the headline
+number, and every number computed. Numbers written in the functions are the texts' own (their
+printed examples) or plain geometry.
+
+References
+----------
+- Blinn, J. F. (1977). Models of light reflection for computer synthesized pictures.
+- Cook, R. L., & Torrance, K. E. (1982). A reflectance model for computer graphics.
+- Russin, Advanced reflection models (lecture, Module 3B).
+- Wikipedia, "Specular highlight", oldid 793299363.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Consequence", "ERRATA", "TEXT_KEYS", "errata_rows", "errata_table", "ErrataError"]
+
+#: the keys an errata row may hold: all text, none of it evaluated
+TEXT_KEYS = ("id", "text", "location", "printed", "correct", "test")
+#: the columns of the errata table
+COLUMNS = ["text", "location", "printed", "correct", "consequence", "value", "test"]
+
+
+class ErrataError(ValueError):
+    """A malformed errata file: the message names the file and the row."""
+
+
+@dataclass(frozen=True)
+class Consequence:
+    """What an erratum changes, computed: ``text`` (a sentence with the numbers), ``value`` (the
+    headline number) and ``numbers`` (every number computed, by name)."""
+
+    text: str
+    value: float
+    numbers: dict = field(default_factory=dict)
+
+
+#: erratum id -> function(**settings) -> Consequence; filled by :func:`_erratum`
+ERRATA = {}
+
+
+def _erratum(erratum_id):
+    def register(function):
+        if erratum_id in ERRATA:
+            raise RuntimeError(f"erratum {erratum_id!r} registered twice")
+        ERRATA[erratum_id] = function
+        return function
+    return register
+
+
+def _result(text, value, **numbers):
+    return Consequence(text, float(value), {k: np.asarray(v).tolist() for k, v in numbers.items()})
+
+
+# -- Blinn 1977 ---------------------------------------------------------------------------------
+
+@_erratum("blinn-fresnel-half")
+def blinn_fresnel_half(*, n, theta_deg, **_):
+    """Blinn's F in terms of g and c lacks Cook & Torrance's 1/2."""
+    from reflectance.optics.fresnel import fresnel_Blinn1977, fresnel_conductor
+
+    c = np.cos(np.radians(theta_deg))
+    printed_F = fresnel_Blinn1977(c, n)
+    exact_F = fresnel_conductor(c, n, 0.0)
+    ratio = printed_F / exact_F
+    return _result(f"at theta = {theta_deg:g} deg, n = {n:g}: F = {printed_F:.4f} as printed, "
+                   f"{exact_F:.4f} exact: {ratio:.4g} times too large", ratio,
+                   c=c, printed_F=printed_F, exact_F=exact_F, ratio=ratio)
+
+
+@_erratum("blinn-c2-inverse-width")
+def blinn_c2_inverse_width(**_):
+    """Blinn calls c2 a standard deviation with large values dull; it is an inverse width."""
+    from reflectance.optics.microfacet import distribution_TorranceSparrow1967
+
+    a = np.radians(10.0)
+    D_c2_1 = distribution_TorranceSparrow1967(np.cos(a), 1.0)
+    D_c2_10 = distribution_TorranceSparrow1967(np.cos(a), 10.0)
+    beta_1 = np.degrees(np.sqrt(np.log(2.0)) / 1.0)  # Blinn: D2 = 1/2 at beta = sqrt(ln 2)/c2
+    beta_10 = np.degrees(np.sqrt(np.log(2.0)) / 10.0)
+    return _result(f"D2 at alpha = 10 deg: {D_c2_1:.3f} for c2 = 1, {D_c2_10:.3f} for c2 = 10; "
+                   f"half-angles {beta_1:.1f} and {beta_10:.2f} deg: large c2 is the narrow, "
+                   f"shiny lobe", beta_10,
+                   D_c2_1=D_c2_1, D_c2_10=D_c2_10, beta_1=beta_1, beta_10=beta_10)
+
+
+def _direction(polar_deg, azimuth_deg=0.0):
+    t, p = np.radians(polar_deg), np.radians(azimuth_deg)
+    return np.array([np.sin(t) * np.cos(p), np.sin(t) * np.sin(p), np.cos(t)])
+
+
+@_erratum("blinn-triangle-2pi")
+def blinn_triangle_2pi(**_):
+    """Blinn's triangle 'must sum to 2 pi'; it sums to pi."""
+    from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977
+    from reflectance.papers.vgroove import simulate_vgroove
+
+    L = np.array([-np.sin(np.radians(10.0)), 0.0, np.cos(np.radians(10.0))])
+    E = np.array([np.sin(np.radians(85.0)), 0.0, np.cos(np.radians(85.0))])
+    N = np.array([0.0, 0.0, 1.0])
+    H = (L + E) / np.linalg.norm(L + E)
+    G_b = shadowing_VCavity_Blinn1977(N @ L, N @ E, N @ H, E @ H)
+    simulated = simulate_vgroove(L, E, n_rays=20000).G_masking
+    with_2pi = 2 - G_b  # f = 2 pi - (b + c): sin f = -sin(b + c), 1 - m/l = 2 - G_b
+    return _result(f"Blinn's case b (light 10 deg, eye 85 deg from N): G_b = {G_b:.4f}, ray "
+                   f"simulation {simulated:.4f}; the 2 pi reading gives {with_2pi:.4f} > 1",
+                   with_2pi, G_b=G_b, simulated=simulated, with_2pi=with_2pi)
+
+
+@_erratum("blinn-projection-of-B")
+def blinn_projection_of_B(**_):
+    """Blinn: 'E_p is the projection of B onto the N,H plane'; no B is defined: it is E (his
+    Fig. 4 text: 'project E onto the plane containing N and H ... Calling this projection E'')."""
+    from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977
+    from reflectance.papers.vgroove import simulate_vgroove
+
+    # light 30 deg from N, eye 80 deg from N and 100 deg round from the light's side: E off the
+    # N,H plane (Blinn Fig. 2), masking (case b)
+    L, E, N = _direction(30.0, 180.0), _direction(80.0, 100.0), np.array([0.0, 0.0, 1.0])
+    H = (L + E) / np.linalg.norm(L + E)
+    axis = np.cross(N, H) / np.linalg.norm(np.cross(N, H))  # the groove's direction
+    E_p = E - (E @ axis) * axis  # the projection of E onto the N,H plane
+    off_plane_deg = np.degrees(np.arcsin(abs(E @ axis)))
+    NE_p, HE_p = N @ E_p, H @ E_p
+    error = max(abs(NE_p - N @ E), abs(HE_p - H @ E))
+    G_b = shadowing_VCavity_Blinn1977(N @ L, N @ E, N @ H, E @ H)
+    simulated = simulate_vgroove(L, E, n_rays=20000).G_masking
+    return _result(f"eye {off_plane_deg:.1f} deg off the N,H plane (light 30 deg, eye 80 deg from "
+                   f"N): with E_p the projection of E, N.E_p = {NE_p:.4f} = N.E and H.E_p = "
+                   f"{HE_p:.4f} = H.E; G_b = 2(N.H)(N.E)/(E.H) = {G_b:.4f}, ray simulation in the "
+                   f"N,H plane {simulated:.4f}", G_b, off_plane_deg=off_plane_deg, NE_p=NE_p,
+                   HE_p=HE_p, error=error, G_b=G_b, simulated=simulated)
+
+
+@_erratum("blinn-division-free-grouping")
+def blinn_division_free_grouping(**_):
+    """Blinn's last branch G := 2(N.H)(N.L)/(E.H)(N.E) read left to right."""
+    from reflectance.optics.shadowing import G_over_NE_Blinn1977
+
+    NL, NE, NH, EH = 0.1, 0.6, 0.8, 0.7
+    left_to_right = 2 * NH * NL / EH * NE
+    grouped = G_over_NE_Blinn1977(NL, NE, NH, EH)
+    ratio = left_to_right / grouped
+    return _result(f"N.L = 0.1, N.E = 0.6, N.H = 0.8, E.H = 0.7: {left_to_right:.4f} left to "
+                   f"right, {grouped:.4f} grouped: off by (N.E)^2 = {ratio:.4g}", ratio,
+                   left_to_right=left_to_right, grouped=grouped, ratio=ratio)
+
+
+# -- Cook & Torrance 1982 -----------------------------------------------------------------------
+
+@_erratum("ct-rs-factor-4")
+def ct_rs_factor_4(*, theta_deg, m, **_):
+    """C&T's R_s with their D (no 1/pi) against the normalised BRDF: a factor 4."""
+    from reflectance.optics.brdf import directional_albedo
+
+    L = np.array([np.sin(np.radians(theta_deg)), 0.0, np.cos(np.radians(theta_deg))])
+    paper = directional_albedo(L, "CookTorrance1982", F=1.0, m=m)
+    physical = directional_albedo(L, "CookTorrance1982", F=1.0, m=m, convention="physical")
+    ratio = paper / physical
+    return _result(f"white furnace (F = 1, V-cavity G), incidence {theta_deg:g} deg, m = {m:g}: "
+                   f"albedo {paper:.4f} as printed (reflects more than it receives), "
+                   f"{physical:.4f} normalised; ratio {ratio:.4g}", ratio,
+                   paper=paper, physical=physical, ratio=ratio)
+
+
+# -- the lecture --------------------------------------------------------------------------------
+
+@_erratum("lecture-fresnel-denominator")
+def lecture_fresnel_denominator(*, n, **_):
+    """The slide's Fresnel has c(g-c) - 1 where Cook & Torrance have + 1."""
+    from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
+
+    c = 1.0
+    g = np.sqrt(n**2 + c**2 - 1)
+    # the slide 'Fresnel Reflectance' as printed
+    slide = 0.5 * (g - c) ** 2 / (g + c) ** 2 * (1 + (c * (g + c) - 1) ** 2 / (c * (g - c) - 1) ** 2)
+    paper = fresnel_dielectric_CookTorrance1982(c, n)
+    ratio = slide / paper
+    return _result(f"at normal incidence, n = {n:g}: the slide gives F0 = {slide:.4f}, the paper "
+                   f"{paper:.4f} ({ratio:.3g} x); both reach 1 at grazing", ratio,
+                   g=g, slide=slide, paper=paper, ratio=ratio)
+
+
+@_erratum("lecture-gaussian-m")
+def lecture_gaussian_m(*, m, **_):
+    """The slide's Torrance-Sparrow Gaussian exp(-(alpha m)^2) with 'm is standard deviation'."""
+    from reflectance.optics.microfacet import (distribution_Gaussian_CookTorrance1982,
+                                               distribution_TorranceSparrow1967)
+
+    lecture_90 = distribution_TorranceSparrow1967(0.0, m)  # exp(-(alpha m)^2) at alpha = 90 deg
+    ct_90 = distribution_Gaussian_CookTorrance1982(0.0, m)
+    beta_lecture = np.degrees(np.sqrt(np.log(2.0)) / m)
+    beta_ct = np.degrees(m * np.sqrt(np.log(2.0)))
+    return _result(f"the same m = {m:g} in both: the lecture's D is still {lecture_90:.3f} at "
+                   f"alpha = 90 deg (half-angle {beta_lecture:.0f} deg, past the horizon); C&T's "
+                   f"is {ct_90:.1e} there and halves at {beta_ct:.1f} deg", lecture_90,
+                   lecture_90=lecture_90, ct_90=ct_90, beta_lecture=beta_lecture, beta_ct=beta_ct)
+
+
+@_erratum("lecture-beckmann-4")
+def lecture_beckmann_4(*, m, **_):
+    """The slide's Beckmann D carries 1/4: with C&T's R_s = (F/pi) D G / ((N.L)(N.V)) it gives
+    the normalised F D G / (4 (N.L)(N.V)) with D carrying 1/pi."""
+    from reflectance.optics.brdf import brdf
+    from reflectance.optics.microfacet import distribution_Beckmann1963
+
+    c = np.cos(np.radians(20.0))
+    # the slide 'Distribution of Microfacet Orientations' as printed
+    lecture = np.exp(-((1 - c * c) / (c * c)) / m**2) / (4 * m**2 * c**4)
+    ct = distribution_Beckmann1963(c, m)
+    normalised = distribution_Beckmann1963(c, m, convention="physical")
+    ratio = lecture / ct
+    # the BRDF: C&T's R_s (F/pi, D G / ((N.L)(N.V))) with the slide's D, against the normalised
+    # BRDF, at a light 30 deg and a view 50 deg from N in the plane of incidence, F = 1
+    L, V, N = _direction(30.0, 180.0), _direction(50.0), np.array([0.0, 0.0, 1.0])
+    physical = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m, convention="physical")
+    paper = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m)  # C&T's R_s with C&T's D
+    with_slide_D = paper * ratio  # R_s is linear in D
+    brdf_ratio = with_slide_D / physical
+    return _result(f"alpha = 20 deg, m = {m:g}: D = {lecture:.4g} (lecture), {ct:.4g} (C&T), "
+                   f"{normalised:.4g} (normalised); lecture / C&T = {ratio:.4g} at every alpha "
+                   f"(D cos alpha integrates to pi/4); in C&T's R_s the lecture's D gives "
+                   f"{brdf_ratio:.4f} x the normalised BRDF (light 30, view 50 deg)", ratio,
+                   lecture=lecture, ct=ct, normalised=normalised, ratio=ratio,
+                   brdf_ratio=brdf_ratio)
+
+
+@_erratum("lecture-specular-term")
+def lecture_specular_term(*, theta_deg, m, **_):
+    """The slides' 'Cook & Torrance' R_s = DGF/(N.V) is Blinn's s."""
+    from reflectance.optics.brdf import brdf
+    from reflectance.optics.microfacet import distribution_Beckmann1963
+    from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977
+
+    mu = np.cos(np.radians(theta_deg))
+    L = np.array([-np.sqrt(1 - mu * mu), 0.0, mu])
+    V = np.array([np.sqrt(1 - mu * mu), 0.0, mu])
+    N = np.array([0.0, 0.0, 1.0])
+    ct = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m)
+    lecture = distribution_Beckmann1963(1.0, m) * shadowing_VCavity_Blinn1977(mu, mu, 1.0, mu) * 1.0 / mu
+    ratio = lecture / ct
+    return _result(f"mirror direction, incidence {theta_deg:g} deg, m = {m:g}, F = 1: "
+                   f"{lecture:.4g} (lecture) against {ct:.4g} (C&T): a factor {ratio:.4g} = "
+                   f"pi cos(theta_i), which changes with the light", ratio,
+                   ct=ct, lecture=lecture, ratio=ratio)
+
+
+@_erratum("lecture-blinn-phong-factor")
+def lecture_blinn_phong_factor(**_):
+    """The slide's (m+8)/m is (m+8)/8 against its own normalised shading equation."""
+    from reflectance.optics.brdf import brdf_BlinnPhong_AkenineMoller2008
+
+    exponent = 50.0
+    normalised_over_blinn_phong = np.pi * brdf_BlinnPhong_AkenineMoller2008(1.0, 1.0, 1.0, 0.0, 1.0,
+                                                                            exponent)
+    printed_factor = (exponent + 8) / exponent
+    ratio = normalised_over_blinn_phong / printed_factor
+    return _result(f"m = 50 (Blinn's typical exponent), normal incidence: normalised / "
+                   f"Blinn-Phong = {normalised_over_blinn_phong:.4g} = (m+8)/8, the printed "
+                   f"(m+8)/m = {printed_factor:.4g}: {ratio:.4g} x too small", ratio,
+                   normalised_over_blinn_phong=normalised_over_blinn_phong,
+                   printed_factor=printed_factor, ratio=ratio)
+
+
+@_erratum("lecture-glare-inverse-angle")
+def lecture_glare_inverse_angle(*, theta_deg, **_):
+    """The slide's 'inversely proportional to the angle' is to its cosine."""
+    t = np.radians(theta_deg)
+    inverse_cosine, inverse_angle = 1 / np.cos(t), 1 / t
+    return _result(f"viewed {theta_deg:g} deg from N: area factor 1/cos = {inverse_cosine:.4g}; "
+                   f"1/angle would give {inverse_angle:.4g} (per radian), and infinity at normal "
+                   f"view", inverse_cosine, inverse_cosine=inverse_cosine, inverse_angle=inverse_angle)
+
+
+# -- the article --------------------------------------------------------------------------------
+
+# Wikipedia, "Specular highlight", "Phong distribution": the worked example's vectors.
+_L_ART = np.array([-0.6, 0.8, 0.0])
+_E_ART = np.array([np.sqrt(3) / 2, 0.5, 0.0])
+_N_ART = np.array([0.0, 1.0, 0.0])
+
+
+def _phong_k(L, E, N, exponent):
+    from reflectance.optics.brdf import brdf
+
+    return N @ L * brdf(L, E, N, "Phong1975", p_d=0.0, p_s=1.0, c1=exponent)
+
+
+@_erratum("article-phong-example-cube")
+def article_phong_example_cube(**_):
+    """The article's (-0.5196 - 0.4)^3 = 0.9196."""
+    L, E, N = _L_ART, _E_ART, _N_ART
+    base = L @ (E - 2 * N * (N @ E))
+    cubed = base**3
+    return _result(f"the printed vectors give ({base:.4f})^3 = {cubed:.4f}, not 0.9196", cubed,
+                   base=base, cubed=cubed)
+
+
+@_erratum("article-phong-reflection-sign")
+def article_phong_reflection_sign(**_):
+    """The article's eye reflection vector E - 2N(N.E) is minus the mirror image of E."""
+    L, E, N = _L_ART, _E_ART, _N_ART
+    printed_k = (L @ (E - 2 * N * (N @ E))) ** 3
+    clamped_k = max(0.0, L @ (E - 2 * N * (N @ E))) ** 3
+    phong_k = _phong_k(L, E, N, 3.0)
+    return _result(f"the article's example (n = 3): printed form {printed_k:.4f} ({clamped_k:.4g} "
+                   f"with the article's own max(0, A.B) note), Phong's (R.V)^n = {phong_k:.4f}",
+                   phong_k, printed_k=printed_k, clamped_k=clamped_k, phong_k=phong_k)
+
+
+@_erratum("article-phong-h-norm")
+def article_phong_h_norm(**_):
+    """The article's |(0.133, 0.65)| printed as 0.668."""
+    length = np.linalg.norm(np.array([0.133, 0.65]))
+    x_with_printed_norm = 0.133 / 0.668
+    return _result(f"|(0.133, 0.65)| = {length:.5f}; dividing by the printed 0.668 would give "
+                   f"x = {x_with_printed_norm:.5f}, not the printed 0.20048", length,
+                   length=length, x_with_printed_norm=x_with_printed_norm)
+
+
+@_erratum("article-half-vector-exponent")
+def article_half_vector_exponent(**_):
+    """The article's (N.H)^n approximates (R.V)^n only with about 4n."""
+    L, E, N = _L_ART, _E_ART, _N_ART
+    H = (L + E) / np.linalg.norm(L + E)
+    k_half, k_half_4n = (N @ H) ** 3, (N @ H) ** 12
+    k_phong = _phong_k(L, E, N, 3.0)
+    return _result(f"(N.H)^3 = {k_half:.4f} against (R.V)^3 = {k_phong:.4f}; (N.H)^12 = "
+                   f"{k_half_4n:.4f}", k_half, k_half=k_half, k_half_4n=k_half_4n, k_phong=k_phong)
+
+
+@_erratum("article-heidrich-seidel-r")
+def article_heidrich_seidel_r(*, s, **_):
+    """The article's Heidrich-Seidel R mirrors -L; the condition 0 < R.V zeroes the highlight."""
+    from reflectance.optics.brdf import brdf
+
+    L = np.array([np.sin(0.7) * np.cos(0.5), np.sin(0.7) * np.sin(0.5), np.cos(0.7)])
+    T = np.array([1.0, 0.0, 0.0])
+    N = np.array([0.0, 0.0, 1.0])
+    V = -(L @ T) * T + (L - (L @ T) * T)  # on the mirror cone V.T = -L.T
+    R = (-L + 2 * (L @ T) * T) / np.linalg.norm(-L + 2 * (L @ T) * T)
+    VR = V @ R
+    printed_k = N @ L * brdf(L, V, N, "HeidrichSeidel1998", s=s, T=T, form="as_printed")
+    optimised_k = N @ L * brdf(L, V, N, "HeidrichSeidel1998", s=s, T=T)
+    return _result(f"V on the mirror cone, s = {s}: V.R = {VR:.3g} and k_spec = {printed_k:.3g} "
+                   f"as printed; the optimised form gives {optimised_k:.3g}", printed_k,
+                   VR=VR, printed_k=printed_k, optimised_k=optimised_k)
+
+
+@_erratum("article-heidrich-seidel-sign")
+def article_heidrich_seidel_sign(*, s, **_):
+    """The article's last optimisation step drops a minus sign."""
+    a_plus_b = np.pi
+    correct_k = (-np.cos(a_plus_b)) ** s
+    printed_k = np.cos(a_plus_b) ** s
+    return _result(f"on the mirror cone (a + b = pi), s = {s}: {printed_k:.3g} as printed, "
+                   f"{correct_k:.3g} correct", printed_k, correct_k=correct_k, printed_k=printed_k)
+
+
+@_erratum("article-heidrich-seidel-t")
+def article_heidrich_seidel_t(**_):
+    """The article's T divides by |D + (-D.T) N|, using T before it is known."""
+    D = np.array([0.6, 0.0, 0.8])
+    N = np.array([0.0, 0.0, 1.0])
+    T_unit = (D - (D @ N) * N) / np.linalg.norm(D - (D @ N) * N)
+    T_printed = (D - (D @ N) * N) / np.linalg.norm(D - (D @ T_unit) * N)
+    length = np.linalg.norm(T_printed)
+    return _result(f"D = (0.6, 0, 0.8): the printed T has length {length:.4f}, not 1", length,
+                   length=length)
+
+
+# -- the table ----------------------------------------------------------------------------------
+
+def _bad(path, where, message):
+    return ErrataError(f"{path}: {where}: {message}")
+
+
+def errata_rows(path):
+    """The errata file's texts and rows, checked: every row holds only text keys, has a
+    registered id, and names one of the file's texts. Raises :class:`ErrataError` naming the file
+    and the row otherwise."""
+    import yaml
+
+    try:
+        with open(path, encoding="utf-8-sig") as stream:
+            data = yaml.safe_load(stream)
+    except (OSError, UnicodeDecodeError, yaml.YAMLError) as err:
+        raise ErrataError(f"{path}: cannot read the errata rows: "
+                          f"{' '.join(str(err).split())}") from None
+    if not isinstance(data, dict) or set(data) != {"texts", "rows"}:
+        keys = sorted(data) if isinstance(data, dict) else type(data).__name__
+        raise _bad(path, "top level", f"must be a mapping with exactly 'texts' and 'rows', "
+                                      f"got {keys}")
+    texts, rows = data["texts"], data["rows"]
+    if not isinstance(texts, dict) or not all(isinstance(v, str) for v in texts.values()):
+        raise _bad(path, "texts", "must map each text's key to its name (a string)")
+    if not isinstance(rows, list) or not rows:
+        raise _bad(path, "rows", "must be a non-empty list")
+    seen = set()
+    for i, row in enumerate(rows, start=1):
+        where = f"row {i}" + (f" ({row.get('id')!r})" if isinstance(row, dict) else "")
+        if not isinstance(row, dict):
+            raise _bad(path, where, "must be a mapping")
+        unknown = sorted(set(row) - set(TEXT_KEYS), key=str)
+        if unknown:
+            raise _bad(path, where, f"unknown key(s) {unknown}; a row holds only text: "
+                                    f"{', '.join(TEXT_KEYS)}")
+        missing = [k for k in TEXT_KEYS if k not in row]
+        if missing:
+            raise _bad(path, where, f"missing {', '.join(missing)}")
+        not_text = [k for k in TEXT_KEYS if not isinstance(row[k], str)]
+        if not_text:
+            raise _bad(path, where, f"{', '.join(not_text)} must be text")
+        if row["id"] not in ERRATA:
+            raise _bad(path, where, f"unknown erratum id {row['id']!r}; known: "
+                                    f"{', '.join(ERRATA)}")
+        if row["id"] in seen:
+            raise _bad(path, where, f"erratum id {row['id']!r} appears twice")
+        seen.add(row["id"])
+        if row["text"] not in texts:
+            raise _bad(path, where, f"unknown text {row['text']!r}; known: {', '.join(texts)}")
+    return texts, rows
+
+
+def errata_table(path, settings):
+    """The errata as a DataFrame (columns :data:`COLUMNS`): the text of each row of ``path`` with
+    the consequence computed by its registered function from ``settings`` (config.yaml
+    ``figures.errata`` without ``rows``)."""
+    import pandas as pd
+
+    texts, rows = errata_rows(path)
+    records = []
+    for row in rows:
+        result = ERRATA[row["id"]](**settings)
+        records.append({"text": texts[row["text"]], "location": row["location"],
+                        "printed": row["printed"], "correct": row["correct"],
+                        "consequence": result.text, "value": result.value, "test": row["test"]})
+    return pd.DataFrame(records, columns=COLUMNS)
