@@ -4,7 +4,16 @@
 
 from snakemake.utils import min_version, validate
 
+from reflectance.config import ConfigError, read_config
+
 min_version("8.0")
+
+# A YAML syntax error or a key given twice, named with its line (Snakemake's own reading of the
+# config file says neither).
+try:
+    read_config("config.yaml")
+except ConfigError as err:
+    raise WorkflowError(str(err)) from None
 
 
 configfile: "config.yaml"
