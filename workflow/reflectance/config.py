@@ -38,6 +38,10 @@ __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unk
 #: The JSON schema of config.yaml (also used by the Snakefile's ``validate()``).
 SCHEMA_PATH = Path(__file__).resolve().parents[1] / "schemas" / "config.schema.yaml"
 
+#: The JSON schema of scene files (reflectance.render.scene reads it too; named here so that
+#: checking keys needs no renderer).
+SCENE_SCHEMA_PATH = SCHEMA_PATH.parent / "scene.schema.yaml"
+
 SOURCE = "config.yaml"
 
 
@@ -252,8 +256,6 @@ def unknown_keys(config, schema=None):
                 sroot = s
         for pattern, name in SCENE_MAPPINGS.items():
             if _matches(pattern, path):
-                from reflectance.render.scene import SCENE_SCHEMA_PATH
-
                 sroot = _schema(str(SCENE_SCHEMA_PATH))
                 s = sroot["$defs"][name]
         s = _deref(s, sroot)
@@ -537,9 +539,9 @@ def _munsell_notations(config):
             problems.append(f"{key}: {notation!r} is not a usable Munsell notation "
                             f"(e.g. '5R 4/14', 'N2'): {str(err).strip()}")
             continue
-        if not 0.0 < Y <= 1.0:
+        if not 0.0 <= Y <= 1.0:
             problems.append(f"{key}: {notation!r} has luminance factor Y = {Y:g}; a reflectance "
-                            f"needs 0 < Y <= 1")
+                            f"needs 0 <= Y <= 1")
     return problems
 
 
