@@ -466,6 +466,19 @@ def _cross_field(config):
         problems.append(f"figures.lecture.shadowing_masking.window: [{first}, {last}) must satisfy "
                         f"0 <= first < last <= n_samples = {sm['n_samples']}")
 
+    # Blinn 1977 Fig. 1: each case's L and E must show that case (geometry alone: a few rays)
+    from reflectance.papers.vgroove_derivation import vgroove_case
+
+    for name, case in figures["blinn_1977"]["fig1_4"]["cases"].items():
+        try:
+            found = vgroove_case(case["light"], case["eye"], n_rays=16, n_keep=2)[1]["case"]
+        except (ValueError, ZeroDivisionError) as err:
+            problems.append(f"figures.blinn_1977.fig1_4.cases.{name}: {err}")
+            continue
+        if found != name:
+            problems.append(f"figures.blinn_1977.fig1_4.cases.{name}: these light and eye "
+                            f"directions give Blinn's case {found!r}, not {name!r}")
+
     # illuminants of the figures' lights
     lights = [(f"figures.cook_torrance_1982.fig6.lights[{i}]", light)
               for i, light in enumerate(ct["fig6"]["lights"])]
