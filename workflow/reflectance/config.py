@@ -313,7 +313,6 @@ def non_finite_numbers(config):
 def validate_schema(config, schema_path=SCHEMA_PATH, source=SOURCE):
     """Unknown keys, non-finite numbers, then the JSON schema; ConfigError naming every key."""
     import jsonschema
-    from jsonschema.exceptions import best_match
 
     schema = _schema(str(schema_path))
     if not isinstance(config, dict):
@@ -323,10 +322,32 @@ def validate_schema(config, schema_path=SCHEMA_PATH, source=SOURCE):
     validator = jsonschema.Draft202012Validator(schema)
     lines = set()
     for e in validator.iter_errors(config):
-        if e.context:  # oneOf/anyOf: the branch that came closest says what is wrong
-            e = best_match(e.context)
-        lines.add(f"{_key(e.absolute_path)}: {e.message}")
+        lines.update(_schema_messages(e, schema))
     _raise(sorted(lines), source)
+
+
+def _schema_messages(error, root):
+    """One line per problem of a schema error. For oneOf/anyOf: the errors of the one branch
+    whose ``const`` keys match (e.g. a material's ``source``), else the schema's description of
+    the choice, else the branch that came closest."""
+    from jsonschema.exceptions import best_match
+
+    if not error.context:
+        if error.validator == "oneOf" and "description" in error.schema:  # valid under several
+            return [f"{_key(error.absolute_path)}: must be {error.schema['description']}"]
+        return [f"{_key(error.absolute_path)}: {error.message}"]
+    branches = error.schema.get(error.validator, [])
+    instance = error.instance if isinstance(error.instance, dict) else {}
+    chosen = [i for i, b in enumerate(branches)
+              if any("const" in _deref(sub, root) for sub in _deref(b, root).get(
+                  "properties", {}).values()) and _applies(b, instance, root)]
+    if len(chosen) == 1:
+        return sorted({f"{_key(e.absolute_path)}: {e.message}" for e in error.context
+                       if e.schema_path and e.schema_path[0] == chosen[0]})
+    if "description" in error.schema:
+        return [f"{_key(error.absolute_path)}: must be {error.schema['description']}"]
+    e = best_match(error.context)
+    return [f"{_key(e.absolute_path)}: {e.message}"]
 
 
 def wavelengths_from_config(config):
@@ -639,6 +660,14 @@ def _render_memory(config, memory=None):
 # --- every figure's scene, built and validated without rendering ------------------------------
 
 _BUILT_GEOMETRIES = set()  # geometries (canonical JSON) already built once in this process
+
+#: The config key of the geometry of the scenes of a figure (key prefix -> geometry key).
+GEOMETRY_KEYS = {
+    "figures.cook_torrance_1982.fig6": "figures.cook_torrance_1982.fig6.vase",
+    "figures.cook_torrance_1982.fig7": "figures.cook_torrance_1982.fig6.vase",
+    "figures.cook_torrance_1982.fig8": "figures.cook_torrance_1982.fig8.watch",
+    "figures.blinn_1977": "figures.blinn_1977.fig7.object",
+}
 _STAND_IN = {"type": "sphere", "radius": 1.0, "n_theta": 3, "n_phi": 2}
 
 
@@ -664,7 +693,7 @@ def _figure_scene_problems(config, spectra_dir):
         scenes = list(figure_scenes(config, spectra_dir))
     except (ValueError, KeyError, TypeError) as err:
         return [str(err).strip("'\"").removeprefix("config.yaml ")]
-    seen = set()
+    seen, where = set(), {}
     for key, label, document in scenes:
         # a scene differing only in the ambient reading (intensity | irradiance) checks nothing
         # new: the reading is an enum of both schemas and the figures' lights all have a solid
@@ -690,9 +719,18 @@ def _figure_scene_problems(config, spectra_dir):
                 missing = re.search(r"unknown material '([^']+)'", line)
                 if missing and missing.group(1) in pending:
                     continue  # its spectrum is made by a job before the render
-                problems.append(line.strip())
+                # the same problem of one config key in several scenes: said once
+                head, _, tail = line.strip().partition(f" (scene {label}): ")
+                if tail.startswith("objects[0].geometry: "):
+                    tail = tail.removeprefix("objects[0].geometry: ")
+                    head = next((k for p, k in GEOMETRY_KEYS.items() if head.startswith(p)),
+                                head)
+                where.setdefault((head, tail), []).append(label)
             continue
         _BUILT_GEOMETRIES.update(built)
+    for (head, tail), labels in where.items():
+        more = f" and {len(labels) - 1} more" if len(labels) > 1 else ""
+        problems.append(f"{head} (scene {labels[0]}{more}): {tail}")
     return problems
 
 
