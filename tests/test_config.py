@@ -87,3 +87,20 @@ def test_unknown_key_without_a_close_match_lists_the_known_keys(config):
     bad["colour"]["zzz"] = 1
     assert unknown_keys(bad) == ["unknown key 'colour.zzz' (known: illuminant, observer, space, "
                                  "gamut_clip, png_bit_depth)"]
+
+
+def test_a_material_whose_spectrum_is_not_made_yet_passes(config, root, tmp_path):
+    """A new material in config.yaml used by a rendered figure: its CSV is written by a job, so
+    the scene check at parse time must not refuse it."""
+    good = copy.deepcopy(config)
+    good["materials"]["Teal"] = {"source": "munsell", "notation": "5BG 5/6",
+                                 "reason": "a test pigment"}
+    good["figures"]["cook_torrance_1982"]["fig6"]["panels"]["a"]["diffuse_material"] = "Teal"
+    assert not (root / "spectra" / "Teal.csv").exists()
+    validate_schema(good)
+    check_config(good, check_spectra=False, spectra_dir=root / "spectra")
+    # a name that no job makes is refused, naming the key
+    good["figures"]["cook_torrance_1982"]["fig6"]["panels"]["a"]["diffuse_material"] = "Teel"
+    with pytest.raises(ConfigError, match=r"fig6\.panels\.a\.diffuse_material: unknown material "
+                                          r"'Teel'"):
+        check_config(good, check_spectra=False, spectra_dir=root / "spectra")

@@ -9,7 +9,12 @@ its outputs (so that ``reflectance render`` re-renders it alone). The shared par
   Fig. 7's vases); :func:`fig6_scene_CookTorrance1982` a Fig. 6 panel straight from config.yaml
   (the default scene of ``reflectance bench``);
 - :func:`light_direction`, :func:`materials_Blinn1977` and :func:`blinn_scene_Blinn1977`:
-  Blinn 1977 Figs. 7 and 8.
+  Blinn 1977 Figs. 7 and 8;
+- :func:`figure_scenes`: every scene of every rendered figure (C&T Figs. 6-8, Blinn Figs. 7, 8
+  and the sweep, the article's spheres), which :mod:`reflectance.config` builds and validates
+  when the workflow is parsed, with the per-figure pieces :func:`fig7_vases_CookTorrance1982`,
+  :func:`watch_scene_CookTorrance1982`, :func:`texture_material_Blinn1977`,
+  :func:`sweep_camera_Blinn1977` and :func:`spheres_scene_article`.
 
 Blinn's models are scalar: ``i = p_a + d p_d + s p_s`` with ``d = N.L``, Phong's ``s = (N.H)^c1``
 or the Torrance-Sparrow ``s = D3 G F / (N.E)``, F the dielectric Fresnel reflectance of one index
