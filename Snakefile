@@ -2,9 +2,21 @@
 # advanced-reflection lecture and the specular-highlight article from measured spectra.
 # Run: snakemake --cores 2   (README.md says more)
 
+from pathlib import Path
+
 from snakemake.utils import min_version, validate
 
+from reflectance.config import ConfigError, read_config
+
 min_version("8.0")
+
+# A YAML syntax error or a key given twice, named with its line (Snakemake's own reading of the
+# config file says neither).
+try:
+    if Path("config.yaml").exists():  # (Snakemake says so if it is missing)
+        read_config("config.yaml")
+except ConfigError as err:
+    raise WorkflowError(str(err)) from None
 
 
 configfile: "config.yaml"

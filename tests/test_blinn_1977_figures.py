@@ -158,7 +158,7 @@ def test_distribution_numbers(tmp):
 
 
 @pytest.mark.parametrize("mutate,key", [
-    (lambda b: b["fig5_6"]["parameter_sets"][0].update(c3=0.9), "parameter_sets.0.c3"),
+    (lambda b: b["fig5_6"]["parameter_sets"][0].update(c3=0.9), r"parameter_sets\[0\]\.c3"),
     (lambda b: b["fig1_4"]["cases"]["a"]["light"].update(theta_deg=95), "cases.a.light.theta_deg"),
     (lambda b: b["fig1_4"].update(construction_case="a"), "fig1_4.construction_case"),
     (lambda b: b["distributions"].update(beta_deg=[]), "distributions.beta_deg"),

@@ -306,3 +306,20 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         # the body has the pigment's hue (angle around the white point)
         hue = np.arctan2(*(c[body] - white).mean(0)[::-1])
         assert np.degrees(abs(hue - np.arctan2(*(target - white)[::-1]))) < 8.0
+
+
+def test_config_check_builds_the_scenes_the_scripts_render(fig8):
+    """reflectance.config validates, at parse time, the scenes of reflectance.papers.scenes: they
+    must be the scenes the figure script renders (read back from its scene files)."""
+    from reflectance.papers.scenes import blinn_scene_Blinn1977, texture_material_Blinn1977
+    from reflectance.render.scene import validate_scene
+
+    fig, out = fig8
+    fig7 = _fig7_config()
+    fig7["camera"].update(width=288, height=192)  # as the fixture
+    for part in "ab":
+        material = texture_material_Blinn1977(fig, fig["patterns"][part],
+                                              fig7["panels"][fig["panel"]]["n"])
+        document = validate_scene(blinn_scene_Blinn1977(fig7, material, fig["light"], WAVELENGTHS))
+        assert yaml.safe_load(yaml.safe_dump(document)) == yaml.safe_load(
+            Path(out[f"{part}_scene"]).read_text()), part

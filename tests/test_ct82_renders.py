@@ -238,3 +238,31 @@ def test_fig8_is_deterministic(fig8, tmp_path):
     again = run_fig8(tmp_path)
     for key in ("png", "csv", "exr", "render_png", "scene"):
         assert Path(getattr(fig8, key)).read_bytes() == Path(getattr(again, key)).read_bytes(), key
+
+
+def _as_written(document):
+    """A scene mapping as validated and written to YAML (defaults filled in)."""
+    from reflectance.render.scene import validate_scene
+
+    return yaml.safe_load(yaml.safe_dump(validate_scene(document), sort_keys=True))
+
+
+def test_config_check_builds_the_scenes_the_scripts_render(fig7, fig8):
+    """reflectance.config validates, at parse time, the scenes of reflectance.papers.scenes: they
+    must be the scenes the figure scripts render (here read back from the scripts' scene files)."""
+    from reflectance.papers.scenes import (fig7_vases_CookTorrance1982,
+                                           vase_scene_CookTorrance1982,
+                                           watch_scene_CookTorrance1982)
+
+    image = {"width": 48, "height": 64, "supersample": 1}  # as run_fig7
+    for (vase, _, material), path in zip(
+            fig7_vases_CookTorrance1982(CT82["fig7"], CT82["fig6"], TABLE1), fig7.scenes):
+        document = vase_scene_CookTorrance1982(CT82["fig6"], material, "irradiance",
+                                               CONFIG["wavelengths"], CONFIG["colour"],
+                                               str(SPECTRA), image)
+        assert _as_written(document) == yaml.safe_load(Path(path).read_text()), vase
+    fig = copy.deepcopy(CT82["fig8"])
+    fig["camera"].update(width=320, height=256, supersample=1)  # as run_fig8
+    document = watch_scene_CookTorrance1982(fig, CT82["fig6"], TABLE1, CONFIG["wavelengths"],
+                                            CONFIG["colour"], str(SPECTRA))
+    assert _as_written(document) == yaml.safe_load(Path(fig8.scene).read_text())

