@@ -4,7 +4,13 @@
 
 from snakemake.utils import min_version, validate
 
-min_version("8.0")
+from reflectance.resume import resume_after_kill
+
+min_version("9.14")  # update(): a failing job restores the committed spectrum it would replace
+
+# A plain `snakemake` resumes a run that was killed: Snakemake reads no workflow profile from
+# workflow/profiles/, so the Snakefile clears what a dead run left (reflectance/resume.py says how).
+resume_after_kill(main_process=workflow.exec_mode.name == "DEFAULT")
 
 
 configfile: "config.yaml"

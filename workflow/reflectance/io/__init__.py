@@ -1,6 +1,7 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), figures (the shared matplotlib style and saving).
+Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), figures (the shared matplotlib
+style and saving).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -9,11 +10,13 @@ the package stays cheap.
 from importlib import import_module
 
 #: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("atomic", "figures", "images")
+_MODULES = ("atomic", "figures", "images", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "atomic_write": "atomic",
+    "remove_stale_temporaries": "atomic",
+    "write_csv": "tables",
     "savefig": "figures",
     "new_figure": "figures",
     "off_screen_plotter": "figures",
