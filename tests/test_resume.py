@@ -131,3 +131,51 @@ def test_temporaries_of_other_names_or_hosts_are_kept(tmp_path):
         (tmp_path / name).write_text("x")
     assert remove_stale_temporaries(tmp_path) == []
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(keep)
+
+
+def _unguarded_writes(source):
+    """Calls in a script that write a file other than through reflectance.io's atomic writers:
+    ``x.to_csv(path)``, ``fig.savefig(path)``, ``open(path, "w")``, ``p.write_text(...)``,
+    ``p.write_bytes(...)``, ``plotter.screenshot(path)``, ``image.save(path)``, unless the path is
+    the temporary of an enclosing ``with atomic_write(...) as tmp``."""
+    import ast
+
+    tree = ast.parse(source)
+    temporaries = {item.optional_vars.id for node in ast.walk(tree) if isinstance(node, ast.With)
+                   for item in node.items
+                   if isinstance(item.context_expr, ast.Call)
+                   and getattr(item.context_expr.func, "id", getattr(item.context_expr.func, "attr",
+                                                                     None)) == "atomic_write"
+                   and isinstance(item.optional_vars, ast.Name)}
+    found = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Call):
+            continue
+        name = getattr(node.func, "attr", getattr(node.func, "id", None))
+        first = node.args[0] if node.args else None
+        to_temporary = isinstance(first, ast.Name) and first.id in temporaries
+        if name in ("to_csv", "savefig", "screenshot", "save") and isinstance(node.func, ast.Attribute):
+            if first is not None and not to_temporary and ast.unparse(first) != "sys.stdout":
+                found.append(ast.unparse(node))
+        elif name in ("write_text", "write_bytes") and isinstance(node.func, ast.Attribute):
+            if not (isinstance(node.func.value, ast.Name) and node.func.value.id in temporaries):
+                found.append(ast.unparse(node))
+        elif name == "open" and isinstance(node.func, ast.Name):
+            modes = [a.value for a in node.args[1:2] + [k.value for k in node.keywords
+                                                        if k.arg == "mode"]
+                     if isinstance(a, ast.Constant)]
+            if any(set(m) & set("wax+") for m in modes):
+                found.append(ast.unparse(node))
+    return found
+
+
+def test_every_script_writes_its_outputs_atomically(root):
+    """Resuming relies on it: a file at an output's path is always whole."""
+    offenders = {p.name: _unguarded_writes(p.read_text())
+                 for p in sorted((root / "workflow" / "scripts").glob("*.py"))}
+    assert {k: v for k, v in offenders.items() if v} == {}
+    # the check itself sees the writes it is meant to catch
+    assert _unguarded_writes("t.to_csv(snakemake.output.csv)\nfig.savefig('a.png')\n"
+                             "open('x', 'w')\n") == ["t.to_csv(snakemake.output.csv)",
+                                                      "fig.savefig('a.png')", "open('x', 'w')"]
+    assert _unguarded_writes("with atomic_write(p) as tmp:\n    im.save(tmp)\n") == []

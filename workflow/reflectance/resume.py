@@ -22,7 +22,9 @@ holds the locks is known to be dead:
 
 Locks recorded by a live process, by a process on another host, or by a run that left no record
 are left alone (Snakemake reports them as before). Only Snakemake's default file-based persistence
-(``.snakemake/``) is handled.
+(``.snakemake/``) is handled. On a cluster, a job that outlived its killed Snakemake is submitted
+again rather than waited for (its mark, which held the cluster's job id, is cleared with the
+rest); both write the same bytes, each in one rename.
 """
 
 from __future__ import annotations
