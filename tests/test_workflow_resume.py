@@ -122,8 +122,7 @@ def test_a_failing_spectrum_job_keeps_the_committed_file(root, tmp_path, case):
         script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
     committed = {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
                  for p in (cwd / "spectra").glob("*.csv")}
-    proc = snakemake(cwd, "--cores", "1", "--forcerun", "derive_spectrum", "spectra/Rubber.csv",
-                     check=False)
+    proc = snakemake(cwd, "--cores", "1", "--force", "spectra/Rubber.csv", check=False)
     assert proc.returncode != 0
     assert {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
             for p in (cwd / "spectra").glob("*.csv")} == committed
