@@ -67,9 +67,9 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(root, tmp_path):
     log = open(tmp_path / "first_run.txt", "w")
     run = subprocess.Popen(SNAKEMAKE + ["--cores", "2"], cwd=cwd, stdout=log,
                            stderr=subprocess.STDOUT, start_new_session=True)
-    checked, killed_in, seen_running = set(), None, None
+    checked, killed_in, seen_running, before = set(), None, None, set()
     try:
-        deadline = time.monotonic() + 1800
+        deadline = time.monotonic() + 3600
         while time.monotonic() < deadline and run.poll() is None:
             # Every file that appears at an output's path is whole the moment it is seen.
             for path in final_files(cwd) - checked:
@@ -79,13 +79,15 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(root, tmp_path):
             running = (Counter(re.findall(r"rule (\w+):", text))
                        - Counter(re.findall(r"Finished jobid: \d+ \(Rule: (\w+)\)", text)))
             rendering = [r for r in RENDER_RULES if running[r]]
+            written = set((cwd / "results").rglob("*"))
             if rendering and seen_running is None:
-                seen_running = time.monotonic()
-            # Mid-render: a render job has run for a few seconds (each takes tens of seconds).
-            if rendering and time.monotonic() - seen_running > 3:
+                seen_running, before = time.monotonic(), written
+            # Mid-render: a render job has begun writing (a scene file or a temporary of its
+            # first image), so some of its outputs exist and others are still to come.
+            if rendering and (written - before or time.monotonic() - seen_running > 120):
                 killed_in = rendering
                 break
-            time.sleep(0.5)
+            time.sleep(0.2)
     finally:
         if run.poll() is None:
             os.killpg(run.pid, signal.SIGKILL)  # the whole group: snakemake and its jobs
