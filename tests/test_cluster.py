@@ -19,7 +19,7 @@ def build(root, cwd, *extra):
     for name in ("workflow", "spectra"):
         shutil.copytree(root / name, cwd / name, ignore=shutil.ignore_patterns("__pycache__"))
     proc = subprocess.run([sys.executable, "-m", "snakemake", *extra, *TARGETS], cwd=cwd,
-                          capture_output=True, text=True, timeout=600)
+                          capture_output=True, text=True, timeout=1800)  # a loaded 2-core machine
     assert proc.returncode == 0, proc.stdout + proc.stderr
     return {t: hashlib.sha256((cwd / t).read_bytes()).hexdigest() for t in TARGETS}, proc
 
