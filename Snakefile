@@ -7,8 +7,13 @@ from pathlib import Path
 from snakemake.utils import min_version, validate
 
 from reflectance.config import ConfigError, read_config
+from reflectance.resume import resume_after_kill
 
-min_version("8.0")
+min_version("9.14")  # update(): a failing job restores the committed spectrum it would replace
+
+# A plain `snakemake` resumes a run that was killed: Snakemake reads no workflow profile from
+# workflow/profiles/, so the Snakefile clears what a dead run left (reflectance/resume.py says how).
+resume_after_kill(main_process=workflow.exec_mode.name == "DEFAULT")
 
 # A YAML syntax error or a key given twice, named with its line (Snakemake's own reading of the
 # config file says neither).

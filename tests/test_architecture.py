@@ -22,7 +22,7 @@ ALLOWED = {
     "audit": {"optics", "colour", "io"},
     "papers": {"render", "audit", "optics", "colour", "geometry", "io"},
 }
-TOP_LEVEL = {"cli", "config", "scripting", "__init__", "__main__"}
+TOP_LEVEL = {"cli", "config", "scripting", "resume", "__init__", "__main__"}
 
 
 def modules():

@@ -17,6 +17,27 @@ def run_cli(args, capsys):
     return capsys.readouterr().out
 
 
+def _copper_XYZ(root, cos_theta, fitted=False):
+    """Independent: D65 x F(lambda) of copper integrated by colour-science (white Y = 1), F from
+    the complex Snell law with the committed n, k (or Cook & Torrance's k = 0 fit to F0)."""
+    data = pd.read_csv(root / "spectra" / "Cu.csv")
+    wl = np.arange(360, 831, 5.0)
+    N = np.interp(wl, data.wavelength_nm, data.n) + 1j * np.interp(wl, data.wavelength_nm, data.k)
+    if fitted:
+        root_F0 = abs((N - 1) / (N + 1))
+        N = (1 + root_F0) / (1 - root_F0) + 0j
+    ct = np.sqrt(1 - (1 - cos_theta**2) / N**2 + 0j)
+    rs = (cos_theta - N * ct) / (cos_theta + N * ct)
+    rp = (N * cos_theta - ct) / (N * cos_theta + ct)
+    F = (abs(rs) ** 2 + abs(rp) ** 2) / 2
+    sd = colour.SpectralDistribution(dict(zip(wl, F)))
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(
+        colour.SpectralShape(360, 830, 5))
+    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
+    white = colour.sd_to_XYZ(colour.sd_ones(cmfs.shape), cmfs, d65, method="Integration") / 100
+    return colour.sd_to_XYZ(sd, cmfs, d65, method="Integration") / 100, colour.XYZ_to_xy(white)
+
+
 def test_colour_prints_the_table(root, capsys, monkeypatch):
     monkeypatch.chdir(root)
     out = run_cli(["colour", "Cu", "--angle", "0", "80"], capsys)
@@ -24,26 +45,25 @@ def test_colour_prints_the_table(root, capsys, monkeypatch):
     assert list(t.columns) == ["angle_deg", "X", "Y", "Z", "x", "y", "dominant_nm", "purity",
                                "R", "G", "B", "dE2000_vs_exact"]
     assert list(t.angle_deg) == [0, 80]
-    # Independent check of Y at normal incidence: D65-weighted mean of copper's F0 with ybar,
-    # F0 = |(N - 1)/(N + 1)|^2 from the committed n, k, integrated by colour-science.
-    data = pd.read_csv(root / "spectra" / "Cu.csv")
-    wl = np.arange(360, 831, 5.0)
-    N = np.interp(wl, data.wavelength_nm, data.n) + 1j * np.interp(wl, data.wavelength_nm, data.k)
-    F0 = abs((N - 1) / (N + 1)) ** 2
-    sd = colour.SpectralDistribution(dict(zip(wl, F0)))
-    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(
-        colour.SpectralShape(360, 830, 5))
-    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
-    Y = colour.sd_to_XYZ(sd, cmfs, d65, method="Integration")[1] / 100
-    assert t.Y[0] == pytest.approx(Y, rel=1e-5)
-    assert t.dE2000_vs_exact.abs().max() < 1e-6  # --fresnel exact against itself
+    for i, theta in enumerate((0, 80)):
+        XYZ, _ = _copper_XYZ(root, np.cos(np.radians(theta)))
+        # the CLI prints 6 significant digits
+        np.testing.assert_allclose(t.loc[i, ["X", "Y", "Z"]].to_numpy(float), XYZ, rtol=1e-5)
 
 
 def test_colour_fitted_differs_near_grazing(root, capsys, monkeypatch):
+    """dE2000 of the k = 0 fit against the exact colour, as colour-science computes it."""
     monkeypatch.chdir(root)
     t = pd.read_csv(io.StringIO(run_cli(
         ["colour", "Cu", "--angle", "0", "80", "--fresnel", "fitted"], capsys)))
-    assert t.dE2000_vs_exact[0] < 1e-4 and t.dE2000_vs_exact[1] > 0.01
+    for i, theta in enumerate((0, 80)):
+        c = np.cos(np.radians(theta))
+        (exact, white_xy), (fitted, _) = _copper_XYZ(root, c), _copper_XYZ(root, c, fitted=True)
+        dE = colour.delta_E(colour.XYZ_to_Lab(fitted, white_xy), colour.XYZ_to_Lab(exact, white_xy),
+                            method="CIE 2000")
+        assert t.dE2000_vs_exact[i] == pytest.approx(dE, rel=1e-4, abs=1e-5)
+        np.testing.assert_allclose(t.loc[i, ["X", "Y", "Z"]].to_numpy(float), fitted, rtol=1e-5)
+    assert t.dE2000_vs_exact[1] > 100 * 1e-5  # at 80 degrees the fit is visibly off
 
 
 def test_unknown_material_lists_known(root, monkeypatch):

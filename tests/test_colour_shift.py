@@ -23,20 +23,63 @@ def W(grid):
     return tristimulus_weights(grid, "D65", "CIE 1931 2 Degree Standard Observer")
 
 
+def _integrate(wavelengths, F):
+    """colour-science's own integration of D65 x F(lambda), scaled so that D65 itself has Y = 1."""
+    sd = colour.SpectralDistribution(dict(zip(wavelengths, F)))
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(
+        colour.SpectralShape(wavelengths[0], wavelengths[-1], 5))
+    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
+    return colour.sd_to_XYZ(sd, cmfs, d65, method="Integration") / 100
+
+
+def _fresnel_complex_snell(N, ci):
+    """Unpolarised Fresnel reflectance from the complex Snell law (not the paper's form)."""
+    ct = np.sqrt(1 - (1 - ci**2) / N**2 + 0j)
+    rs = (ci - N * ct) / (ci + N * ct)
+    rp = (N * ci - ct) / (N * ci + ct)
+    return (abs(rs) ** 2 + abs(rp) ** 2) / 2
+
+
+def _fresnel_dielectric_as_printed(n, c):
+    """Cook & Torrance 1982, "Spectral composition", written out again for the test:
+    F = 1/2 (g - c)^2 / (g + c)^2 {1 + [c (g + c) - 1]^2 / [c (g - c) + 1]^2}, g^2 = n^2 + c^2 - 1."""
+    g = np.sqrt(n**2 + c**2 - 1)
+    return 0.5 * (g - c) ** 2 / (g + c) ** 2 * (1 + (c * (g + c) - 1) ** 2 / (c * (g - c) + 1) ** 2)
+
+
 def _brute_force_XYZ(copper, theta_deg):
     """Independent: colour's own integration of D65 x F(lambda) with F from complex Snell."""
     N = copper.n + 1j * copper.k
-    ci = np.cos(np.radians(theta_deg))
-    si2 = 1 - ci**2
-    ct = np.sqrt(1 - si2 / N**2 + 0j)
-    rs = (ci - N * ct) / (ci + N * ct)
-    rp = (N * ci - ct) / (N * ci + ct)
-    F = (abs(rs) ** 2 + abs(rp) ** 2) / 2
-    sd = colour.SpectralDistribution(dict(zip(copper.wavelengths, F)))
-    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(
-        colour.SpectralShape(copper.wavelengths[0], copper.wavelengths[-1], 5))
-    d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
-    return colour.sd_to_XYZ(sd, cmfs, d65, method="Integration") / 100
+    return _integrate(copper.wavelengths, _fresnel_complex_snell(N, np.cos(np.radians(theta_deg))))
+
+
+def _F0(copper):
+    return abs((copper.n + 1j * copper.k - 1) / (copper.n + 1j * copper.k + 1)) ** 2
+
+
+def _approximation_XYZ(copper, theta_deg, F=_fresnel_dielectric_as_printed, range_nm=(380, 780)):
+    """Fig. 5c from the paper's text alone: F of the index that matches the average normal
+    reflectance over 380-780 nm (k = 0), interpolating each component between the colour at
+    normal incidence and the light's colour: C_0 + (C_90 - C_0) max(0, F_theta - F_0)/(1 - F_0)."""
+    wl, F0 = copper.wavelengths, _F0(copper)
+    F0_mean = F0[(wl >= range_nm[0]) & (wl <= range_nm[1])].mean()
+    n = (1 + np.sqrt(F0_mean)) / (1 - np.sqrt(F0_mean))
+    C_0, C_90 = _integrate(wl, F0), _integrate(wl, np.ones_like(wl))
+    t = max(0.0, F(n, np.cos(np.radians(theta_deg))) - F0_mean) / (1 - F0_mean)
+    return C_0 + (C_90 - C_0) * t
+
+
+def _fitted_XYZ(copper, theta_deg):
+    """The k = 0 fit per wavelength, n = (1 + sqrt F0)/(1 - sqrt F0), through complex Snell."""
+    F0 = _F0(copper)
+    n = (1 + np.sqrt(F0)) / (1 - np.sqrt(F0))
+    return _integrate(copper.wavelengths, _fresnel_complex_snell(n + 0j, np.cos(np.radians(theta_deg))))
+
+
+def _dE2000(XYZ, XYZ_reference, copper):
+    white_xy = colour.XYZ_to_xy(_integrate(copper.wavelengths, np.ones_like(copper.wavelengths)))
+    return colour.delta_E(colour.XYZ_to_Lab(XYZ, white_xy), colour.XYZ_to_Lab(XYZ_reference, white_xy),
+                          method="CIE 2000")
 
 
 @pytest.mark.parametrize("theta", [0.0, 45.0, 80.0, 89.0])
@@ -65,17 +108,40 @@ def test_interpolation_formula_per_component():
     assert colour_interpolation_CookTorrance1982([red0, 0, 0], [1, 0, 0], 0.1, F0)[0] == red0
 
 
+ANGLES_5C = [30, 40, 50, 60, 70, 75, 80, 85]
+
+
+@pytest.mark.parametrize("theta", ANGLES_5C)
+def test_fig5c_approximation_matches_the_papers_formula(copper, W, theta):
+    got = colour_XYZ(copper, np.cos(np.radians(theta)), W, "approximation", (380, 780))
+    np.testing.assert_allclose(got, _approximation_XYZ(copper, theta), rtol=1e-9, atol=1e-12)
+
+
+def test_fig5c_check_tells_the_papers_fresnel_from_schlicks(copper):
+    """The comparison above fails if the dielectric F is replaced by Schlick's approximation."""
+    def schlick(n, c):
+        return ((n - 1) / (n + 1)) ** 2 + (1 - ((n - 1) / (n + 1)) ** 2) * (1 - c) ** 5
+
+    for theta in ANGLES_5C:
+        paper, other = _approximation_XYZ(copper, theta), _approximation_XYZ(copper, theta, schlick)
+        assert np.max(abs(paper - other) / abs(paper)) > 1e-6, theta  # 1000x the tolerance
+
+
 def test_table_columns_and_dE(copper, W):
-    t = colour_table(copper, [0, 60, 85, 90], W, methods=("exact", "fitted", "approximation"))
+    angles = [0, *ANGLES_5C, 90]
+    t = colour_table(copper, angles, W, methods=("exact", "fitted", "approximation"))
     assert list(t.columns) == ["method", "angle_deg", "X", "Y", "Z", "x", "y", "dominant_nm",
                                "purity", "R", "G", "B", "dE2000_vs_exact"]
-    assert np.all(t[t.method == "exact"].dE2000_vs_exact.abs() < 1e-9)
-    # shortcuts are exact at 0 and 90 degrees and differ in between
-    for m in ("fitted", "approximation"):
+    independent = {"exact": _brute_force_XYZ, "fitted": _fitted_XYZ,
+                   "approximation": _approximation_XYZ}
+    for m, XYZ_of in independent.items():
         part = t[t.method == m].set_index("angle_deg")
-        assert part.loc[0.0, "dE2000_vs_exact"] < 1e-6
-        assert part.loc[90.0, "dE2000_vs_exact"] < 1e-6
-        assert part.loc[85.0, "dE2000_vs_exact"] > 0.01
+        for theta in angles:
+            XYZ = XYZ_of(copper, theta)
+            np.testing.assert_allclose(part.loc[theta, ["X", "Y", "Z"]].to_numpy(float), XYZ,
+                                       rtol=1e-8, atol=1e-12)
+            expected = _dE2000(XYZ, _brute_force_XYZ(copper, theta), copper)
+            assert part.loc[theta, "dE2000_vs_exact"] == pytest.approx(expected, rel=1e-6, abs=1e-9)
     assert t[["R", "G", "B"]].to_numpy().min() >= 0 and t[["R", "G", "B"]].to_numpy().max() <= 1
     # copper is orange-red at normal incidence: dominant wavelength between 580 and 610 nm
     assert 580 < t[(t.method == "exact") & (t.angle_deg == 0)].dominant_nm.iloc[0] < 610

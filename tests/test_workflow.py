@@ -60,6 +60,110 @@ def test_foundation_figures_are_built(built):
         assert (built / "logs" / "cook_torrance_1982" / f"{log}.log").exists()
 
 
+# The built tables read back against independent truth: the committed n, k through the Fresnel
+# equations written out here, colour-science's D65 and its own integration. The tables hold six
+# significant digits (float_format %.6g), hence rtol 1e-5.
+
+def _config(cwd):
+    return yaml.safe_load((cwd / "config.yaml").read_text())
+
+
+def _nk(cwd, material, wavelengths):
+    import numpy as np
+    import pandas as pd
+
+    data = pd.read_csv(cwd / "spectra" / f"{material}.csv")
+    return (np.interp(wavelengths, data.wavelength_nm, data.n)
+            + 1j * np.interp(wavelengths, data.wavelength_nm, data.k))
+
+
+def _fresnel(N, cos_theta):
+    """Unpolarised reflectance from the complex Snell law."""
+    import numpy as np
+
+    ct = np.sqrt(1 - (1 - cos_theta**2) / N**2 + 0j)
+    rs = (cos_theta - N * ct) / (cos_theta + N * ct)
+    rp = (N * cos_theta - ct) / (N * cos_theta + ct)
+    return (abs(rs) ** 2 + abs(rp) ** 2) / 2
+
+
+def test_fig4_table_is_the_normal_reflectance_under_the_illuminant(built):
+    import colour
+    import numpy as np
+    import pandas as pd
+
+    config = _config(built)
+    illuminant = config["colour"]["illuminant"]
+    t = pd.read_csv(built / "results/cook_torrance_1982/fig4.csv")
+    wl = t.wavelength_nm.to_numpy(float)
+    grid = config["wavelengths"]
+    np.testing.assert_array_equal(wl, np.arange(grid["start_nm"], grid["end_nm"] + 1, grid["step_nm"]))
+    N = _nk(built, config["figures"]["cook_torrance_1982"]["fig4"]["material"], wl)
+    F0 = abs((N - 1) / (N + 1)) ** 2
+    light = colour.SDS_ILLUMINANTS[illuminant][wl]
+    np.testing.assert_allclose(t.F0, F0, rtol=1e-5)
+    np.testing.assert_allclose(t[illuminant], light, rtol=1e-5)
+    np.testing.assert_allclose(t.reflected, F0 * light, rtol=1e-5)
+
+
+def test_fig5_tables_are_the_fresnel_reflectance_and_its_colour(built):
+    import colour
+    import numpy as np
+    import pandas as pd
+
+    config = _config(built)
+    fig5 = config["figures"]["cook_torrance_1982"]["fig5"]
+    a = pd.read_csv(built / "results/cook_torrance_1982/fig5a.csv")
+    N = _nk(built, fig5["material"], a.wavelength_nm.to_numpy(float))
+    F = _fresnel(N, np.cos(np.radians(a.angle_deg.to_numpy(float))))
+    np.testing.assert_allclose(a.F, F, rtol=1e-5, atol=1e-6)
+    assert set(a.angle_deg) == set(np.arange(0, 91, fig5["surface_angle_step_deg"]))
+
+    bc = pd.read_csv(built / "results/cook_torrance_1982/fig5bc.csv")
+    exact = bc[bc.method == "exact"]
+    assert list(exact.angle_deg) == fig5["angles_deg"]
+    grid = config["wavelengths"]
+    wl = np.arange(grid["start_nm"], grid["end_nm"] + 1, grid["step_nm"], dtype=float)
+    shape = colour.SpectralShape(wl[0], wl[-1], grid["step_nm"])
+    cmfs = colour.MSDS_CMFS[config["colour"]["observer"]].copy().align(shape)
+    light = colour.SDS_ILLUMINANTS[config["colour"]["illuminant"]].copy().align(shape)
+    N = _nk(built, fig5["material"], wl)
+    for row in exact.itertuples():
+        sd = colour.SpectralDistribution(dict(zip(wl, _fresnel(N, np.cos(np.radians(row.angle_deg))))))
+        XYZ = colour.sd_to_XYZ(sd, cmfs, light, method="Integration") / 100
+        np.testing.assert_allclose([row.X, row.Y, row.Z], XYZ, rtol=1e-5, atol=1e-6)
+
+
+def test_fig6_tables_measure_the_ambient_term_as_the_paper_prints_it(built):
+    """C&T 1982 Fig. 6: "I_ia = 0.01 I_i", R_a = pi R_d, two lights of d omega 0.0001 and 0.0002.
+    Head-on, ambient over the diffuse of a light is pi I_ia / (I_i d omega_i)."""
+    import math
+
+    import pandas as pd
+    import pytest
+
+    fig6 = _config(built)["figures"]["cook_torrance_1982"]["fig6"]
+    f = fig6["ambient_fraction"]
+    energies = [light["intensity"] * light["solid_angle"] for light in fig6["lights"]]
+    intensities = {light["intensity"] for light in fig6["lights"]}
+    assert len(intensities) == 1  # the paper's lights are both D6500 at I_i
+    I_ia = {"intensity": f * intensities.pop(),       # as printed
+            "irradiance": f * sum(energies) / math.pi}  # 1 % of the lights' irradiance
+    for reading, kind in fig6["ambient_readings"].items():
+        t = pd.read_csv(built / f"results/cook_torrance_1982/fig6_{reading}.csv")
+        assert list(t.panel) == ["a", "b"]
+        for row in t.itertuples():
+            assert row.I_ia == pytest.approx(I_ia[kind], rel=1e-5)
+            assert row.ambient_over_headon_diffuse_weakest_light == pytest.approx(
+                math.pi * I_ia[kind] / min(energies), rel=1e-5)
+            assert row.ambient_over_headon_diffuse_all_lights == pytest.approx(
+                math.pi * I_ia[kind] / sum(energies), rel=1e-5)
+    # the numbers README and the caption quote: about 314x as printed, 1 % as irradiance
+    as_printed = pd.read_csv(built / "results/cook_torrance_1982/fig6_as_printed.csv")
+    assert as_printed.ambient_over_headon_diffuse_weakest_light[0] == pytest.approx(100 * math.pi,
+                                                                                      rel=1e-5)
+
+
 def test_every_output_is_readable(built):
     """Each PNG decodes, each EXR reads back finite, each CSV parses with a header."""
     import numpy as np
@@ -139,3 +243,40 @@ def test_lint_reports_only_missing_environments(root):
     assert lints, text  # the environment lint is expected: the linter did run
     others = [line for line in lints if "conda environment or container" not in line]
     assert not others, text
+
+
+def _planned_jobs(text):
+    """Rule -> count from the "Job stats" table of `snakemake -n`."""
+    lines = [line.strip() for line in text.splitlines()]
+    start = lines.index("Job stats:") + 3  # the header and the dashes
+    jobs = {}
+    for line in lines[start:]:
+        name, count = line.split()
+        if name == "total":
+            return jobs
+        jobs[name] = int(count)
+    raise AssertionError(text)
+
+
+@pytest.mark.parametrize("key, value, dependents", [
+    # a key of one figure: only that figure's job
+    (("figures", "cook_torrance_1982", "fig4", "wavelength_unit"), "nm", {"ct82_fig4"}),
+    # Blinn's Fig. 7 scene is shared by the light sweep and Fig. 8, which take its settings
+    (("figures", "blinn_1977", "fig7", "camera", "fov_deg"), 9,
+     {"blinn77_fig7", "blinn77_fig7_sweep", "blinn77_fig8"}),
+])
+def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(built, tmp_path, key, value,
+                                                                  dependents):
+    """README: an output whose parameters changed is rebuilt, and nothing else."""
+    cwd = tmp_path / "copy"
+    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    config = yaml.safe_load((cwd / "config.yaml").read_text())
+    node = config
+    for k in key[:-1]:
+        node = node[k]
+    assert node[key[-1]] != value
+    node[key[-1]] = value
+    (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+    proc = snakemake(cwd, "-n", "--cores", "2")
+    text = proc.stdout + proc.stderr
+    assert set(_planned_jobs(text)) == dependents | {"all"}, text

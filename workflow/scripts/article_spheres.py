@@ -14,6 +14,7 @@ from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import display_from_colour, scene_document
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg, out, colour = snakemake.params.fig, snakemake.output, snakemake.params.colour
@@ -54,7 +55,7 @@ with script_log(snakemake) as log:
                      "albedo_Y": Y, "albedo_x": X / (X + Y + Z), "albedo_y": Y / (X + Y + Z),
                      "clear_coat": cfg["material"], "clear_coat_F0_Y": F0_Y, "m": cfg["m"],
                      "s": cfg["s"], "d": cfg["d"], "exposure_scale": scale})
-    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     h, wd = (n / 100 for n in image.shape[:2])
     fig = new_figure(wd + 0.2, h + 0.95)

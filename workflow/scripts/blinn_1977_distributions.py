@@ -13,6 +13,7 @@ from reflectance.optics.microfacet import (beta_to_c1_Blinn1977, beta_to_c2_Blin
                                     distribution_TrowbridgeReitz1975)
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 NAMES = {"D1": "D1 = cos^c1 \u03b1 (Phong)", "D2": "D2 = exp(\u2212(\u03b1 c2)\u00b2) (Torrance-Sparrow)",
          "D3": "D3 (Trowbridge-Reitz)"}
@@ -65,6 +66,5 @@ with script_log(snakemake) as log:
                  "same half-value angle \u03b2 (each falls to 1/2 at \u03b1 = \u03b2)", fontsize=12)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
-    pd.concat(curves).to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
-    pd.DataFrame(summary).to_csv(snakemake.output.summary, index=False, float_format="%.6g",
-                                 lineterminator="\n")
+    pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")

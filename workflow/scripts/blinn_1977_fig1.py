@@ -8,6 +8,7 @@ from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.papers.vgroove_derivation import vgroove_case
 from reflectance.papers.vgroove_plot import COLOURS, draw_groove
+from reflectance.io.tables import write_csv
 
 TITLES = {"a": "(a) no attenuation", "b": "(b) reflected light partly masked",
           "c": "(c) incident light partly shadowed"}
@@ -56,5 +57,4 @@ with script_log(snakemake) as log:
                  "and H (L', E': projections of L, E)", fontsize=13)
     fig.subplots_adjust(left=0.01, right=0.99, top=0.9, bottom=0.25, wspace=0.05)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
-    pd.DataFrame(rows).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                              lineterminator="\n")
+    pd.DataFrame(rows).pipe(write_csv, snakemake.output.csv, float_format="%.6g")

@@ -10,6 +10,7 @@ from reflectance.scripting import script_log
 from reflectance.papers.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
 from reflectance.papers.vgroove_plot import (COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove,
                                       draw_top_view)
+from reflectance.io.tables import write_csv
 
 # Per case: what is blocked, along which direction, Blinn's closed form, the simulated fraction.
 SPEC = {"b": ("masking", "E", "eye", "G_b", "G_masking_simulated", "escapes"),
@@ -85,7 +86,6 @@ with script_log(snakemake) as log:
            "m_over_l_sines": g.m_over_l_sines, G_name: r[G_name], "G_simulated": r[sim_name],
            "L_dot_g": r["L"] @ axis, "E_dot_g": r["E"] @ axis, "ratio_3d": ratio_3d,
            "ratio_projected": ratio_2d, **{f"printed_{k}": v.replace("\n", "; ") for k, v in text.items()}}
-    pd.DataFrame([row]).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                               lineterminator="\n")
+    pd.DataFrame([row]).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     log.info("m/l: lengths %.6f, law of sines %.6f, 1 - %s %.6f", g.m_over_l_lengths,
              g.m_over_l_sines, G_name, 1 - r[G_name])

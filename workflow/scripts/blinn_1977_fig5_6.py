@@ -11,6 +11,7 @@ from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn
 from reflectance.io.figures import new_figure, savefig
 from reflectance.papers.polar import intensity_in_plane_of_incidence
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg, number = snakemake.params.fig, snakemake.params.figure_number
@@ -85,6 +86,5 @@ with script_log(snakemake) as log:
                  f"row; F: dielectric Fresnel with the 1/2)", fontsize=11)
     fig.subplots_adjust(left=0.19, right=0.99, top=0.9, bottom=0.02, wspace=0.05, hspace=0.25)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
-    pd.concat(curves).to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
-    pd.DataFrame(summary).to_csv(snakemake.output.summary, index=False, float_format="%.6g",
-                                 lineterminator="\n")
+    pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")

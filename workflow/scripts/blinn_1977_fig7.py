@@ -11,6 +11,7 @@ from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
           "b": "Figure 7b  Simulation of magnesium oxide surface"}
@@ -46,7 +47,7 @@ with script_log(snakemake) as log:
                              "phong_max": ph.max(), "torrance_sparrow_max": ts.max(),
                              "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean()})
     table = pd.DataFrame(rows)
-    table.to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, out.csv, float_format="%.6g")
 
     h, wd = (n / 100 for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches at 100 dpi
     gap, block, top, row_h = 0.05, 0.35, 0.7, h + 0.5  # row: title, image, difference line

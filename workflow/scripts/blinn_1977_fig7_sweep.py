@@ -17,6 +17,7 @@ from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
+from reflectance.io.tables import write_csv
 
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 
@@ -62,7 +63,7 @@ with script_log(snakemake) as log:
         frames[0].save(tmp, format="GIF", save_all=True, append_images=frames[1:],
                        duration=cfg["frame_ms"], loop=0, optimize=False)
     table = pd.DataFrame(rows)
-    table.to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, out.csv, float_format="%.6g")
     log.info("%d frames of %s; %s", len(frames), frames[0].size, table.to_string())
 
     picks = np.unique(np.round(np.linspace(0, len(frames) - 1, cfg["contact_frames"])).astype(int))

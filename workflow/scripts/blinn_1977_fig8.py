@@ -15,6 +15,7 @@ from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import blinn_scene_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.geometry.texture import texture
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output
@@ -43,7 +44,7 @@ with script_log(snakemake) as log:
                      "c_min": cfg["c_min"], "C3_min_on_map": maps[part].min(),
                      "C3_max_on_map": maps[part].max(), "max_i": Y.max(), "mean_i": Y[Y > 0].mean()})
         log.info("pattern %s: %s; timings %s", part, rows[-1], result.timings)
-    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     h, w = (n / 100 for n in images["a"].shape[:2])  # inches at 100 dpi
     mh, left, gap, top = w * 100 / 360, 0.45, 0.5, 0.95

@@ -5,10 +5,11 @@ import pandas as pd
 
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     table = pd.read_csv(snakemake.input.symbols, dtype=str, keep_default_na=False)
-    table.to_csv(snakemake.output.csv, index=False, lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv)
 
     codes = [[c.strip() for c in row.split(";")] for row in table.code]
     n_lines = sum(len(c) for c in codes)

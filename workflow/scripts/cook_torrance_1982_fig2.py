@@ -9,6 +9,7 @@ from matplotlib import font_manager
 from reflectance.io.figures import off_screen_plotter, save_plotter
 from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 FONT = font_manager.findfont("DejaVu Sans")  # has the Greek letters VTK's own fonts lack
 COLOURS = {"N": "black", "L": "#d98c00", "V": "#1f5fbf", "H": "#2a9d3a"}
@@ -36,8 +37,8 @@ with script_log(snakemake) as log:
               "theta_deg": np.degrees(np.arccos(V @ H)),    # theta, V to H ...
               "theta_L_deg": np.degrees(np.arccos(L @ H))}  # ... = L to H
     rows = [(f"{k}_{axis}", v[i]) for k, v in vectors.items() for i, axis in enumerate("xyz")]
-    pd.DataFrame(rows + list(angles.items()), columns=["quantity", "value"]).to_csv(
-        snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table = pd.DataFrame(rows + list(angles.items()), columns=["quantity", "value"])
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     pl = off_screen_plotter(1400, 1100)
     pl.set_background("white")

@@ -11,6 +11,7 @@ from reflectance.optics.microfacet import distribution_Beckmann1963, distributio
 from reflectance.io.figures import off_screen_plotter, save_plotter
 from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 FONT = font_manager.findfont("DejaVu Sans")
 
@@ -26,8 +27,7 @@ with script_log(snakemake) as log:
                          ("Gaussian", distribution_Gaussian_CookTorrance1982(np.cos(alpha), m, c=c))):
             panels.append((model, m, c, D))
             columns[f"{model}_m{m:g}"] = D
-    pd.DataFrame(columns).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                                 lineterminator="\n")
+    pd.DataFrame(columns).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     pl = off_screen_plotter(1600, 1400, shape=(2, 2))
     pl.set_background("white")

@@ -12,6 +12,7 @@ from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.fresnel import F0_from_nk
 from reflectance.optics.spectra import load_material, read_spectrum_csv, wavelength_grid
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
@@ -25,7 +26,7 @@ with script_log(snakemake) as log:
 
     table = pd.DataFrame({"wavelength_nm": grid, "F0": material.F0,
                           f"{colour_cfg['illuminant']}": light, "reflected": reflected})
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(10, 4.2)
     ax_a, ax_b = fig.subplots(1, 2)

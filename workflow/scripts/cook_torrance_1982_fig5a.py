@@ -11,6 +11,7 @@ from reflectance.optics.fresnel import fresnel_conductor
 from reflectance.io.figures import off_screen_plotter, save_plotter
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     fig_cfg = snakemake.params.fig
@@ -25,7 +26,7 @@ with script_log(snakemake) as log:
         "angle_deg": np.repeat(angles, grid.size),
         "wavelength_nm": np.tile(grid, angles.size),
         "F": F.ravel(),
-    }).to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    }).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     # Plot in unit box coordinates; the axes are labelled with the physical ranges.
     x, y = np.meshgrid((grid - grid[0]) / np.ptp(grid), angles / 90.0)

@@ -13,6 +13,7 @@ from reflectance.io.images import write_exr_XYZ
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
+from reflectance.io.tables import write_csv
 
 LABELS = {"exact": "(b) exact n, k", "approximation": "(c) C&T approximation",
           "fitted": "k = 0 fit per wavelength", "schlick": "Schlick 1994", "f82": "F82 tint"}
@@ -28,7 +29,7 @@ with script_log(snakemake) as log:
                          clip=colour_cfg["gamut_clip"], illuminant=colour_cfg["illuminant"],
                          average_range_nm=fig_cfg["average_F0_range_nm"],
                          observer=colour_cfg["observer"])
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     # Linear XYZ of the swatch grid (one 16 x 16 block per swatch) for the archive.
     XYZ = table[["X", "Y", "Z"]].to_numpy().reshape(len(rows), len(angles), 3)

@@ -14,6 +14,7 @@ from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.render.shading import ambient_intensity
+from reflectance.io.tables import write_csv
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
@@ -49,7 +50,7 @@ with script_log(snakemake) as log:
             "exposure_scale": scale,
         })
         log.info("panel %s (%s): %s; timings %s", part, reference, rows[-1], result.timings)
-    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     height, width = images["a"].shape[:2]
     fig = new_figure(2 * width / 100 + 0.4, height / 100 + 0.9, facecolor="black")

@@ -16,6 +16,7 @@ from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import vase_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material
+from reflectance.io.tables import write_csv
 
 GROUPS = {"metal": "six metals: Fig. 6b's s, d, D, F from measured n, k",
           "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "extra, not in the paper"}
@@ -89,8 +90,7 @@ with script_log(snakemake) as log:
     display = dict(illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
                    wavelengths=scene.wavelengths)
     scale = common_exposure(images, colour_cfg["space"], **display)  # the grid is one scene
-    pd.DataFrame(rows).assign(exposure_scale=scale).to_csv(
-        out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    pd.DataFrame(rows).assign(exposure_scale=scale).pipe(write_csv, out.csv, float_format="%.6g")
 
     # metals in the first row, nonmetals in the second, extras in the last column
     n_cols = max(groups.count("metal"), groups.count("nonmetal")) + ("extra" in groups)

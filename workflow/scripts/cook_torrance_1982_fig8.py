@@ -18,6 +18,7 @@ from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material
 from reflectance.render.visibility import visibility
 from reflectance.geometry.watch import WATCH_PARTS
+from reflectance.io.tables import write_csv
 
 
 def part_material(name, spec, fig6, table1):
@@ -85,7 +86,7 @@ with script_log(snakemake) as log:
                                                                      np.nan),
                      **pixels, "exposure_scale": scale})
         log.info("%s", rows[-1])
-    pd.DataFrame(rows).to_csv(out.csv, index=False, float_format="%.6g", lineterminator="\n")
+    pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     height, width = rgb.shape[:2]
     fig = new_figure(width / 100, height / 100 + 0.45, facecolor="black")

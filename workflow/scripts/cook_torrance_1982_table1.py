@@ -12,6 +12,7 @@ from reflectance.colour.display import XYZ_to_display
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material, wavelength_grid
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
@@ -38,7 +39,7 @@ with script_log(snakemake) as log:
                          illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
                          wavelengths=grid)
     table["display_RGB"] = ["#" + "".join(f"{round(255 * v):02x}" for v in rgb) for rgb in RGB]
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     headers = ["Material", "s", "d", "m", "spectrum (source)", f"mean F0\n{lo:g}-{hi:g} nm",
                "x, y, Y", "R_d = F0/\u03c0\nunder " + colour_cfg["illuminant"]]

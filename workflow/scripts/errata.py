@@ -45,12 +45,13 @@ def render(table, png, pdf):
 
 
 if "snakemake" in globals():
+    from reflectance.io.tables import write_csv
     from reflectance.scripting import script_log
 
     with script_log(snakemake) as log:
         settings = {k: v for k, v in snakemake.params.errata.items() if k != "rows"}
         table = errata_table(snakemake.input.rows, settings)
-        table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+        table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
         render(table, snakemake.output.png, snakemake.output.pdf)
         for r in table.itertuples():
             log.info("%s | %s | %s", r.text, r.location, r.consequence)

@@ -11,6 +11,7 @@ from reflectance.optics.brdf import brdf
 from reflectance.io.figures import new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 # config key -> (reflectance.optics.brdf method, panel title)
 MODELS = {
@@ -34,8 +35,7 @@ with script_log(snakemake) as log:
     table = {"theta_o_deg": np.degrees(theta_o)}
     for key, (method, _) in MODELS.items():
         table[key] = brdf(L, V, N, method, **cfg["models"][key])
-    pd.DataFrame(table).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                               lineterminator="\n")
+    pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(15, 3.9)
     for i, (key, (method, title)) in enumerate(MODELS.items()):

@@ -12,6 +12,7 @@ from reflectance.optics.fresnel import fresnel
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
@@ -35,8 +36,7 @@ with script_log(snakemake) as log:
     table = {"angle_deg": angles}
     for (_, name, _), F in curves.items():
         table[f"{name}_exact"], table[f"{name}_schlick"] = F["exact"], F["schlick"]
-    pd.DataFrame(table).to_csv(snakemake.output.csv, index=False, float_format="%.6g",
-                               lineterminator="\n")
+    pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(12, 5)
     axes = dict(zip(("dielectric", "metal"), fig.subplots(1, 2)))

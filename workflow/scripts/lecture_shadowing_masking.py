@@ -13,6 +13,7 @@ from reflectance.io.figures import new_figure, savefig
 from reflectance.papers.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
 from reflectance.optics.shadowing import G1_Smith_Beckmann_Walter2007
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
@@ -23,9 +24,9 @@ with script_log(snakemake) as log:
     angles = np.radians(np.arange(0.0, 89.0 + 1e-9, cfg["angle_step_deg"]))
     sim = np.array([masking_G1(h, p, a) for a in angles])
     smith = G1_Smith_Beckmann_Walter2007(np.cos(angles), m)
-    pd.DataFrame({"angle_deg": np.degrees(angles), "G1_simulated": sim[:, 0], "G1_Smith": smith,
-                  "visible_projected_over_n_cos": sim[:, 1]}).to_csv(
-        snakemake.output.g1, index=False, float_format="%.6g", lineterminator="\n")
+    g1_table = pd.DataFrame({"angle_deg": np.degrees(angles), "G1_simulated": sim[:, 0],
+                             "G1_Smith": smith, "visible_projected_over_n_cos": sim[:, 1]})
+    g1_table.pipe(write_csv, snakemake.output.g1, float_format="%.6g")
 
     # Shadowing (light at -theta_i) and masking (view at +theta_o), overall and by facet slope
     nb, edges = cfg["slope_bins"], np.linspace(-3 * sigma, 3 * sigma, cfg["slope_bins"] + 1)
@@ -36,8 +37,7 @@ with script_log(snakemake) as log:
         g1[name] = (masking_G1(h, p, a)[0], G1_Smith_Beckmann_Walter2007(np.cos(a), m))
         by[f"smith_{name}"] = np.full(nb, g1[name][1])
         log.info("%s: G1 simulated %.5f, Smith %.5f", name, *g1[name])
-    pd.DataFrame(by).to_csv(snakemake.output.by_slope, index=False, float_format="%.6g",
-                            lineterminator="\n")
+    pd.DataFrame(by).pipe(write_csv, snakemake.output.by_slope, float_format="%.6g")
 
     # (a) a window of the profile: light rays to the first facet they meet, and on to the viewer
     w0, w1 = cfg["window"]

@@ -11,7 +11,7 @@ the package stays cheap.
 
 from importlib import import_module
 
-#: this package"s modules (a name equal to a module"s is the module)
+#: this package's modules (a name equal to a module's is the module)
 _MODULES = ("colorimetry", "difference", "display", "tables")
 
 #: public name -> module of this package that defines it

@@ -1,7 +1,7 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), figures (the shared matplotlib style and saving),
-paths (paths from data: inside the project; names that are names).
+Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), figures (the shared matplotlib
+style and saving), paths (paths from data: inside the project; names that are names).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -9,12 +9,14 @@ the package stays cheap.
 
 from importlib import import_module
 
-#: this package"s modules (a name equal to a module"s is the module)
-_MODULES = ("atomic", "figures", "images", "paths")
+#: this package's modules (a name equal to a module's is the module)
+_MODULES = ("atomic", "figures", "images", "paths", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "atomic_write": "atomic",
+    "remove_stale_temporaries": "atomic",
+    "write_csv": "tables",
     "savefig": "figures",
     "new_figure": "figures",
     "off_screen_plotter": "figures",

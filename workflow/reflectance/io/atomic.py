@@ -1,18 +1,103 @@
-"""Atomic file output: a failed or interrupted writer never leaves a partial file behind."""
+"""Atomic file output: a failed or interrupted writer never leaves a partial file behind.
+
+A writer fills a hidden temporary file beside its target and renames it onto the target only when
+it has succeeded. A process killed outright (``kill -9``) cannot remove its temporary file; the
+name says which process made it (``.<name>.tmp-<host>-<pid>-<random><suffix>``), so the next write
+to the same folder removes every such file whose process is gone from this host.
+"""
 
 from __future__ import annotations
 
 import contextlib
 import os
+import re
+import socket
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_write"]
+__all__ = ["atomic_write", "remove_stale_temporaries", "process_alive", "process_start_time"]
+
+#: a temporary file of :func:`atomic_write`: hidden, then target name, host, pid, mkstemp's 8 characters
+_TEMPORARY = re.compile(r"^\.(?P<name>.+)\.tmp-(?P<host>[A-Za-z0-9-]*)-(?P<pid>\d+)-[a-z0-9_]{8}")
+
+
+def _host():
+    return re.sub(r"[^A-Za-z0-9-]", "-", socket.gethostname())
+
+
+def process_start_time(pid):
+    """A process's start time in clock ticks since boot (Linux /proc), or None where unknown."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except OSError:
+        return None
+    # field 22 (starttime); the command name in field 2 may hold spaces, so split after its ')'
+    return int(stat.rsplit(")", 1)[1].split()[19])
+
+
+def process_alive(pid, start_time=None):
+    """Whether process ``pid`` exists on this host (and, if given, started at ``start_time``).
+
+    >>> process_alive(os.getpid(), process_start_time(os.getpid()))
+    True
+    """
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass  # exists, owned by someone else
+    if start_time is not None:
+        now = process_start_time(pid)
+        return now is None or now == start_time  # another start time: the pid was reused
+    return True
+
+
+def remove_stale_temporaries(folder):
+    """Remove the temporary files that writers killed on this host left in ``folder``.
+
+    A temporary file whose process is alive (another job writing to the same folder) or that was
+    made on another host (a cluster node sharing the folder) is left alone.
+
+    Parameters
+    ----------
+    folder : str or Path
+
+    Returns
+    -------
+    list of Path
+        The files removed.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> dead = folder / f".a.exr.tmp-{_host()}-999999999-abcd_123.exr"   # no such pid
+    >>> live = folder / f".b.exr.tmp-{_host()}-{os.getpid()}-abcd_123.exr"
+    >>> _ = dead.write_bytes(b"half"), live.write_bytes(b"half")
+    >>> [p.name == dead.name for p in remove_stale_temporaries(folder)]
+    [True]
+    >>> sorted(p.name == live.name for p in folder.iterdir())
+    [True]
+    """
+    host, removed = _host(), []
+    with os.scandir(folder) as entries:
+        for entry in entries:
+            match = _TEMPORARY.match(entry.name)
+            if (match and match["host"] == host and not process_alive(int(match["pid"]))
+                    and entry.is_file(follow_symlinks=False)):
+                with contextlib.suppress(FileNotFoundError):  # another writer was quicker
+                    os.unlink(entry.path)
+                    removed.append(Path(entry.path))
+    return removed
 
 
 @contextlib.contextmanager
 def atomic_write(path, suffix=None):
     """Yield a temporary path beside ``path``; move it onto ``path`` only if the block succeeds.
+
+    Stale temporary files that killed writers left in the same folder are removed first
+    (:func:`remove_stale_temporaries`).
 
     Parameters
     ----------
@@ -33,9 +118,10 @@ def atomic_write(path, suffix=None):
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(path.parent)
     fd, tmp = tempfile.mkstemp(
-        prefix=f".{path.name}.", suffix=suffix if suffix is not None else path.suffix,
-        dir=path.parent,
+        prefix=f".{path.name}.tmp-{_host()}-{os.getpid()}-",
+        suffix=suffix if suffix is not None else path.suffix, dir=path.parent,
     )
     os.close(fd)
     umask = os.umask(0)

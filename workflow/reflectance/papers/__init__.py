@@ -10,7 +10,7 @@ the package stays cheap.
 
 from importlib import import_module
 
-#: this package"s modules (a name equal to a module"s is the module)
+#: this package's modules (a name equal to a module's is the module)
 _MODULES = ("errata", "polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
 
 #: public name -> module of this package that defines it

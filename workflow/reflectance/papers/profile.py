@@ -103,8 +103,8 @@ def projected_length(p, theta):
 
     Examples
     --------
-    >>> print(projected_length(np.array([0.0, 1.0, -1.0]), np.pi / 4).round(6))
-    [0.707107 0.       1.414214]
+    >>> projected_length(np.array([0.0, 1.0, -1.0]), np.pi / 4).round(6).tolist()
+    [0.707107, 0.0, 1.414214]
     """
     return np.maximum(np.cos(theta) - np.asarray(p, dtype=np.float64) * np.sin(theta), 0.0)
 
@@ -134,8 +134,8 @@ def visible_fraction(h, theta):
     --------
     >>> # zigzag of slopes +-1 seen at 60 degrees: the rising facets face away, the falling ones are
     >>> # partly masked by the next rise (the V-groove's 2 cos 45 cos 60 / cos 15)
-    >>> print(visible_fraction(np.array([0.0, 1.0, 0.0, 1.0]), np.radians(60)).round(6))
-    [0.       0.732051 0.       0.732051]
+    >>> visible_fraction(np.array([0.0, 1.0, 0.0, 1.0]), np.radians(60)).round(6).tolist()
+    [0.0, 0.732051, 0.0, 0.732051]
     """
     h = np.asarray(h, dtype=np.float64)
     if theta < 0:  # mirror x -> -x: node i <- node -i, segment k <- segment n - 1 - k
@@ -196,8 +196,8 @@ def visible_fraction_by_slope(h, p, theta, edges):
     Examples
     --------
     >>> f, c = visible_fraction_by_slope(np.zeros(4), np.zeros(4), 0.3, [-1.0, -0.5, 0.5, 1.0])
-    >>> print(f, c)
-    [nan  1. nan] [0 4 0]
+    >>> f.tolist(), c.tolist()
+    ([nan, 1.0, nan], [0, 4, 0])
     """
     edges = np.asarray(edges, dtype=np.float64)
     nb = edges.size - 1
@@ -225,8 +225,8 @@ def crossings(xs, hs, s, s0):
     --------
     >>> xs, hs = np.arange(4.0), np.array([0.0, 1.0, 0.0, 1.0])
     >>> x, h = crossings(xs, hs, hs, np.array([0.5]))  # the level h = 0.5
-    >>> print(x.round(3), h.round(3))
-    [[0.5 1.5 2.5]] [[0.5 0.5 0.5]]
+    >>> x.round(3).tolist(), h.round(3).tolist()
+    ([[0.5, 1.5, 2.5]], [[0.5, 0.5, 0.5]])
     """
     xs, hs, s = (np.asarray(v, dtype=np.float64) for v in (xs, hs, s))
     s0 = np.asarray(s0, dtype=np.float64)
@@ -251,8 +251,8 @@ def first_hit(xs, hs, x0, theta):
     --------
     >>> xs, hs = np.arange(4.0), np.array([0.0, 0.0, 2.0, 0.0])
     >>> x, h = first_hit(xs, hs, np.array([0.5, 3.0]), -np.pi / 4)  # light from the upper left
-    >>> print(x.round(4), h.round(4))  # the floor before the bump; the bump's rising side
-    [0.5    1.6667] [0.     1.3333]
+    >>> x.round(4).tolist(), h.round(4).tolist()  # the floor before the bump; the bump's rising side
+    ([0.5, 1.6667], [0.0, 1.3333])
     """
     x0 = np.asarray(x0, dtype=np.float64)
     hx, hh = crossings(xs, hs, xs - hs * np.tan(theta), x0)
@@ -272,8 +272,8 @@ def first_blocker(xs, hs, x0, h0, theta):
     --------
     >>> xs, hs = np.arange(4.0), np.array([0.0, 0.0, 2.0, 0.0])
     >>> x, h = first_blocker(xs, hs, np.array([0.5, 2.5]), np.array([0.0, 1.0]), np.pi / 4)
-    >>> print(x, h)  # the first point's ray meets the bump; the second's escapes
-    [1.5 nan] [ 1. nan]
+    >>> x.round(12).tolist(), h.round(12).tolist()  # 1st ray meets the bump, 2nd escapes
+    ([1.5, nan], [1.0, nan])
     """
     side = np.sign(theta)
     x0, h0 = np.asarray(x0, dtype=np.float64), np.asarray(h0, dtype=np.float64)
@@ -355,8 +355,8 @@ def trace_window(h, p, window, theta_light, theta_view, n_rays):
     Examples
     --------
     >>> rays = trace_window(np.zeros(16), np.zeros(16), (4, 8), -0.5, 0.5, 4)  # flat: all escape
-    >>> print(rays.hit[:, 0], rays.escaped)
-    [4.5 5.5 6.5 7.5] [ True  True  True  True]
+    >>> rays.hit[:, 0].tolist(), rays.escaped.tolist()
+    ([4.5, 5.5, 6.5, 7.5], [True, True, True, True])
     """
     w0, w1 = window
     if not 0 <= w0 < w1 <= np.size(h):

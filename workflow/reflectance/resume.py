@@ -1,0 +1,116 @@
+"""A plain ``snakemake`` resumes a run that was killed.
+
+A run killed outright (``kill -9``, a lost terminal, a power cut) cannot clean up after itself: it
+leaves Snakemake's locks in ``.snakemake/locks/`` and an "incomplete" mark on each output of the
+jobs it was running. The next plain ``snakemake`` then stops, first with IncompleteFilesException
+and, once that is cleared, with LockException. Snakemake's own answers are command-line options
+(``--rerun-incomplete``, ``--unlock``), and a workflow profile that sets them is read only from
+``profiles/default/`` beside the Snakefile or in the working folder (snakemake/cli.py,
+``parse_args``), a top-level folder this project leaves to the user. So the Snakefile calls
+:func:`resume_after_kill` instead, which does what those options would, and only when the run that
+holds the locks is known to be dead:
+
+- the Snakefile, parsed by Snakemake's main process, records that process (host, pid and start
+  time) in ``.snakemake/locks/reflectance-run.<pid>.json`` whenever no run holds the locks
+  (Snakemake removes that folder when a run ends normally);
+- when locks are found and every recorded process is gone from this host, they are removed, as
+  ``snakemake --unlock`` would;
+- when no run holds the locks, every incomplete mark is stale and is removed. Every writer of this
+  project replaces its file in one rename (:mod:`reflectance.io.atomic`), and Snakemake deletes a
+  job's outputs before the job starts, so an output that exists is whole and a killed job always
+  misses at least one output: it reruns, and nothing half-written is ever taken for a result.
+
+Locks recorded by a live process, by a process on another host, or by a run that left no record
+are left alone (Snakemake reports them as before). Only Snakemake's default file-based persistence
+(``.snakemake/``) is handled. On a cluster, a job that outlived its killed Snakemake is submitted
+again rather than waited for (its mark, which held the cluster's job id, is cleared with the
+rest); both write the same bytes, each in one rename.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import sys
+from pathlib import Path
+
+from reflectance.io.atomic import process_alive, process_start_time
+
+__all__ = ["resume_after_kill"]
+
+#: records of the runs that may hold Snakemake's locks, inside Snakemake's lock folder
+RUN_RECORDS = "reflectance-run.*.json"
+
+
+def _this_run():
+    pid = os.getpid()
+    return {"host": socket.gethostname(), "pid": pid, "start_time": process_start_time(pid)}
+
+
+def _read_record(path):
+    try:
+        record = json.loads(path.read_text())
+        return {"host": str(record["host"]), "pid": int(record["pid"]),
+                "start_time": record.get("start_time")}
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def _dead(record):
+    return (record is not None and record["host"] == socket.gethostname()
+            and not process_alive(record["pid"], record["start_time"]))
+
+
+def resume_after_kill(main_process=True, state_dir=".snakemake", stream=sys.stderr):
+    """Clear what a killed run of this workflow left in ``state_dir``; record this run.
+
+    Parameters
+    ----------
+    main_process : bool
+        True in Snakemake's main process (``workflow.exec_mode`` DEFAULT); jobs that Snakemake
+        spawns, locally or on a cluster node, parse the Snakefile too and must leave the state alone.
+    state_dir : str or Path
+        Snakemake's state folder in the working folder.
+    stream : file
+        Where to say what was cleared.
+
+    Returns
+    -------
+    list of str
+        What was cleared (empty when nothing was).
+    """
+    if not main_process:
+        return []
+    state = Path(state_dir)
+    lock_dir, incomplete_dir = state / "locks", state / "incomplete"
+    cleared = []
+    locks = sorted(lock_dir.glob("*.lock")) if lock_dir.is_dir() else []
+    records = {p: _read_record(p) for p in lock_dir.glob(RUN_RECORDS)} if locks else {}
+    if locks:
+        # Two runs may have started before either locked; the locks are stale only if all are gone.
+        if not records or not all(_dead(r) for r in records.values()):
+            return cleared  # a live run, another host's run, or a run that left no record
+        for lock in locks:
+            lock.unlink(missing_ok=True)
+        pids = ", ".join(str(r["pid"]) for r in records.values())
+        cleared.append(f"the locks of the killed run (pid {pids})")
+    # No run holds the locks now: every record of a dead run and every incomplete mark is stale.
+    for path in lock_dir.glob(RUN_RECORDS) if lock_dir.is_dir() else []:
+        record = _read_record(path)
+        if record is None or _dead(record):
+            path.unlink(missing_ok=True)
+    marks = [p for p in incomplete_dir.rglob("*") if p.is_file()] if incomplete_dir.is_dir() else []
+    for mark in marks:
+        mark.unlink(missing_ok=True)
+    if marks:
+        cleared.append(f"{len(marks)} incomplete mark(s) (its unfinished jobs run again)")
+    lock_dir.mkdir(parents=True, exist_ok=True)
+    this = _this_run()
+    record_path = lock_dir / RUN_RECORDS.replace("*", str(this["pid"]))
+    tmp = lock_dir / f".{record_path.name}"
+    tmp.write_text(json.dumps(this))
+    os.replace(tmp, record_path)
+    if cleared:
+        print(f"reflectance: resuming; cleared {' and '.join(cleared)}.", file=stream)
+    return cleared
