@@ -260,10 +260,12 @@ def test_a_job_over_its_memory_request_is_killed_and_a_larger_request_completes(
     cwd = _workdir(root, tmp_path / "memory")
     target = "results/cook_torrance_1982/fig4.csv"
     # 200 MB: less than the Snakemake process that runs the job inside it needs (~450 MB)
-    out = _snakemake(cwd, "--profile", PROFILE, "--set-resources", "ct82_fig4:mem_mb=200",
-                     target, ok=False)
-    (rule, resources, _, slurm_id), = _submitted(out)
-    assert rule == "ct82_fig4" and resources["mem_mb"] == "200"
+    out = _snakemake(cwd, target, "--profile", PROFILE, "--set-resources", "ct82_fig4:mem_mb=200",
+                     ok=False)
+    jobs = _submitted(out)
+    assert len(jobs) == 1, out
+    (rule, resources, _, slurm_id), = jobs
+    assert rule == "ct82_fig4" and resources["mem_mb"] == "200", out
     assert "Error in rule ct82_fig4" in out
     assert f"SLURM-job '{slurm_id}' failed" in out
     log = re.search(rf"(\S+/{slurm_id}\.log)", out).group(1)
@@ -272,7 +274,9 @@ def test_a_job_over_its_memory_request_is_killed_and_a_larger_request_completes(
     assert not (cwd / target).exists()
 
     out = _snakemake(cwd, "--profile", PROFILE, target)  # the rule's own mem_mb
-    (rule, resources, _, slurm_id), = _submitted(out)
+    jobs = _submitted(out)
+    assert len(jobs) == 1, out
+    (rule, resources, _, slurm_id), = jobs
     assert rule == "ct82_fig4" and int(resources["mem_mb"]) > 200
     assert _jobcomp(slurm)[slurm_id]["JobState"] == "COMPLETED"
     assert (cwd / target).exists()
