@@ -27,6 +27,10 @@ rule ct82_fig4:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig4.log",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 640 MB (the job's Snakemake ~450 MB + script)
+        runtime=10,
     script:
         "../scripts/cook_torrance_1982_fig4.py"
 

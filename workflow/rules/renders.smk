@@ -245,5 +245,9 @@ rule article_spheres:
         colour=config["colour"],
     log:
         "logs/article/spheres.log",
+    threads: 1
+    resources:
+        mem_mb=1500,  # peak 1090 MB (the job's Snakemake ~450 MB + render)
+        runtime=10,
     script:
         "../scripts/article_spheres.py"

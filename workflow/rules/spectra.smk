@@ -13,6 +13,10 @@ rule export_spectrum:
         entry=lambda wildcards: config["materials"][wildcards.material],
     log:
         "logs/spectra/{material}.log",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 760 MB (the job's Snakemake ~450 MB + script)
+        runtime=10,
     script:
         "../scripts/export_spectra.py"
 
@@ -26,6 +30,10 @@ rule derive_spectrum:
         entry=lambda wildcards: config["materials"][wildcards.material],
     log:
         "logs/spectra/{material}.log",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 620 MB (the job's Snakemake ~450 MB + script)
+        runtime=10,
     script:
         "../scripts/derive_spectrum.py"
 
