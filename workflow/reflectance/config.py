@@ -90,7 +90,11 @@ def read_config(path="config.yaml"):
     if not path.is_file():
         raise ConfigError(f"no config file at {path}")
     try:
-        config = yaml.load(path.read_text(encoding="utf-8"), Loader=_UniqueKeyLoader)
+        loader = _UniqueKeyLoader(path.read_text(encoding="utf-8"))  # a SafeLoader: data only
+        try:
+            config = loader.get_single_data()
+        finally:
+            loader.dispose()
     except UnicodeDecodeError as err:
         raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
     except yaml.YAMLError as err:
