@@ -114,7 +114,7 @@ def panel_material(panel):
 
 
 def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, spectra_dir,
-                                image=None):
+                                image=None, exposure=None):
     """One vase alone as Cook & Torrance 1982 Fig. 6 renders it (Fig. 7: every vase).
 
     Parameters
@@ -131,6 +131,9 @@ def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, 
     spectra_dir : str
     image : dict, optional
         Overrides of the camera (``width``, ``height``, ``supersample``).
+    exposure : dict, optional
+        Scene ``display`` keys ``key`` and ``highlight_knee`` (default: Cook & Torrance's exposure,
+        the brightest colour at the display maximum).
     """
     material = {"distribution": fig6["distribution"], "convention": fig6["convention"],
                 "fresnel": fig6["fresnel"], "shadowing": fig6["shadowing"], **material}
@@ -140,7 +143,7 @@ def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, 
         fig6["lights"], wavelengths, spectra_dir, observer=colour["observer"],
         spectral=fig6["spectral"],
         ambient={"fraction": fig6["ambient_fraction"], "reference": reference},
-        display=display_from_colour(colour))
+        display={**display_from_colour(colour), **(exposure or {})})
 
 
 def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, spectra_dir=None):
