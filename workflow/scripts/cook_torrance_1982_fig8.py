@@ -48,9 +48,16 @@ def watch_scene(fig, fig6, table1, wavelengths, colour, spectra_dir):
         fig["camera"], [{"name": "watch", "geometry": {"type": "watch", "parameters": fig["watch"]},
                          "material": parts["case"], "parts": parts}], [light], wavelengths,
         spectra_dir, observer=colour["observer"], spectral=fig6["spectral"],
-        ambient={"fraction": fig6["ambient_fraction"],
-                 "reference": fig6["ambient_readings"][fig["ambient_reading"]]},
-        display=display_from_colour(colour))
+        ambient={"fraction": fig6["ambient_fraction"], "reference": ambient_reference(fig, fig6)},
+        display={**display_from_colour(colour), **fig["exposure"]})
+
+
+def ambient_reference(fig, fig6):
+    """The scene ambient reference of ``fig.ambient_reading``: a key of fig6.ambient_readings, or
+    ``published`` (the default figures' reading, fig6.published.ambient_reference)."""
+    if fig["ambient_reading"] == "published":
+        return fig6["published"]["ambient_reference"]
+    return fig6["ambient_readings"][fig["ambient_reading"]]
 
 
 with script_log(snakemake) as log:
