@@ -71,7 +71,8 @@ with script_log(snakemake) as log:
             "ambient_reference": reference, "I_ia": I_ia,
             "ambient_Y": Y["ambient"].max(), "diffuse_Y_max": Y["diffuse"].max(),
             "specular_Y_max": Y["specular"].max(), "direct_Y_max": direct.max(),
-            "specular_over_diffuse_peak": Y["specular"].max() / max(Y["diffuse"].max(), 1e-300),
+            "specular_over_diffuse_peak": (Y["specular"].max() / Y["diffuse"].max()
+                                           if Y["diffuse"].max() > 0 else np.nan),
             "ambient_over_direct_max": Y["ambient"].max() / direct.max(),
             # Cook & Torrance 1982: I_ia R_a over R_d I_i (N.L) d omega_i at N.L = 1, R_a = pi R_d
             "ambient_over_headon_diffuse_weakest_light": np.pi * I_ia / min(energies),
