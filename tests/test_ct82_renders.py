@@ -1,6 +1,7 @@
-"""Cook & Torrance 1982, Figs. 7 and 8 (rendered): each script runs once, as Snakemake would run
-it, with config.yaml's parameters at a small image size and outputs in a temporary directory; its
-tables and images are checked against config.yaml / Table I and against colour-science.
+"""Cook & Torrance 1982, Figs. 6, 7 and 8 (rendered): each script runs once, as Snakemake would
+run it, with config.yaml's parameters at a small image size and outputs in a temporary directory;
+its tables and images are checked against config.yaml / Table I and against colour-science, and
+the default figures against what a reader of the paper must see (issue 13's acceptance).
 """
 
 import copy
@@ -20,8 +21,17 @@ CT82 = CONFIG["figures"]["cook_torrance_1982"]
 TABLE1 = CT82["table1"]["rows"]
 SPECTRA = ROOT / "spectra"
 OBSERVER = "CIE 1931 2 Degree Standard Observer"
-VASES = ([m["material"] for m in CT82["fig7"]["metals"]] + [r["material"] for r in TABLE1]
-         + [f"{e['table1']}_{e['diffuse_material']}" for e in CT82["fig7"]["extras"]])
+ROWS = [CT82["fig7"]["table1_spectra"].get(r["material"], r["material"]) for r in TABLE1]
+VASES = ([m["material"] for m in CT82["fig7"]["metals"]] + ROWS
+         + [f"{e['table1']}_{e['material']}" for e in CT82["fig7"]["extras"]])
+PUBLISHED = CT82["fig6"]["published"]
+
+
+def reading_params(reading):
+    """(ambient reference, published) of a reading; "published": the default figures."""
+    if reading == "published":
+        return PUBLISHED["ambient_reference"], PUBLISHED
+    return CT82["fig6"]["ambient_readings"][reading], None
 
 
 def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
@@ -29,14 +39,40 @@ def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
     fig["vase_image"] = dict(zip(("width", "height", "supersample"), size))
     out = SimpleNamespace(png=str(tmp / "fig7.png"), csv=str(tmp / "fig7.csv"),
                           exrs=[str(tmp / f"{v}.exr") for v in VASES],
-                          scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES])
+                          scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES],
+                          pngs=[str(tmp / f"{v}.png") for v in VASES])
+    reference, published = reading_params(reading)
     snakemake = SimpleNamespace(
         input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")), output=out,
-        params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1,
-                               reference=CT82["fig6"]["ambient_readings"][reading],
-                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
+        params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1, reference=reference,
+                               published=published, wavelengths=CONFIG["wavelengths"],
+                               colour=CONFIG["colour"]),
         log=[str(tmp / "fig7.log")], rule="ct82_fig7")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig7.py"),
+                   init_globals={"snakemake": snakemake})
+    return out
+
+
+class Output(SimpleNamespace):
+    """Snakemake's output: named files, by attribute or by key."""
+
+    def __getitem__(self, key):
+        return getattr(self, key)
+
+
+def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
+    fig = copy.deepcopy(CT82["fig6"])
+    fig["camera"].update(width=width, height=height, supersample=supersample)
+    out = Output(png=str(tmp / "fig6.png"), csv=str(tmp / "fig6.csv"), **{
+        f"{p}_{key}": str(tmp / f"fig6{p}.{ext}") for p in "ab"
+        for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
+    reference, published = reading_params(reading)
+    snakemake = SimpleNamespace(
+        input=SimpleNamespace(spectra=[str(SPECTRA / "Cu.csv")]), output=out,
+        params=SimpleNamespace(fig=fig, reference=reference, published=published,
+                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
+        log=[str(tmp / "fig6.log")], rule="ct82_fig6")
+    runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig6.py"),
                    init_globals={"snakemake": snakemake})
     return out
 
@@ -88,6 +124,11 @@ def F0_colour_science(name):
                             method="Integration") / 100
 
 
+def D65_xy():
+    w = colour.sd_to_XYZ(colour.SDS_ILLUMINANTS["D65"], colour.MSDS_CMFS[OBSERVER])
+    return w[:2] / w.sum()
+
+
 def test_fig7_parameters_come_from_fig6b_and_table1(fig7):
     table = pd.read_csv(fig7.csv, keep_default_na=False, na_values=[""])
     assert list(table.vase) == VASES
@@ -98,9 +139,9 @@ def test_fig7_parameters_come_from_fig6b_and_table1(fig7):
     assert (metals.s == b["s"]).all() and (metals.d == b["d"]).all()
     assert (metals.lobes == lobes).all() and metals.m.isna().all()
     nonmetals = table[table.group == "nonmetal"].set_index("material")
-    assert list(nonmetals.index) == [r["material"] for r in TABLE1]
-    for row in TABLE1:
-        got = nonmetals.loc[row["material"]]
+    assert list(nonmetals.index) == ROWS
+    for row, name in zip(TABLE1, ROWS):
+        got = nonmetals.loc[name]
         assert (got.s, got.d) == (row["s"], row["d"])
         if row["m"] is None:  # "Not used": C&T with s = 0, R = d R_d
             assert np.isnan(got.m) and got.model == "CookTorrance1982" and row["s"] == 0
@@ -108,8 +149,11 @@ def test_fig7_parameters_come_from_fig6b_and_table1(fig7):
             assert got.m == row["m"] and got.model == "CookTorrance1982"
     extra = table[table.group == "extra"].iloc[0]
     rust = next(r for r in TABLE1 if r["material"] == "Rust")
-    assert (extra.material, extra.diffuse_material) == ("Rust", "RustBody")
+    assert extra.material == "Rust"  # the hematite variant keeps Table I rust's s, d, m
     assert (extra.s, extra.d, extra.m) == (rust["s"], rust["d"], rust["m"])
+    # the default rust vase is the Munsell-derived reflectance, labelled with the paper's names
+    assert nonmetals.index[-1] == CT82["fig7"]["table1_spectra"]["Rust"]
+    assert set(table.label) >= {"Lunar dust", "Olive drab", "Rust", "Rust (hematite)"}
 
 
 def test_fig7_diffuse_colour_is_F0_over_pi_by_colour_science(fig7):
@@ -118,13 +162,13 @@ def test_fig7_diffuse_colour_is_F0_over_pi_by_colour_science(fig7):
         F0 = [row[f"F0_{c}"] for c in "XYZ"]
         albedo = [row[f"albedo_{c}"] for c in "XYZ"]  # pi R_d
         np.testing.assert_allclose(F0, F0_colour_science(row.material), rtol=5e-4)
-        np.testing.assert_allclose(albedo, F0_colour_science(row.diffuse_material), rtol=5e-4)
-        if row.group != "extra":  # "In every case ... R_d = F0/pi"
-            np.testing.assert_allclose(albedo, F0, rtol=1e-12)
-    # hematite's specular F0 is grey-blue (x, y below D65's 0.3127, 0.3290); its body colour is red
-    rust, body = F0_colour_science("Rust"), F0_colour_science("RustBody")
-    assert rust[0] / rust.sum() < 0.3127 and rust[1] / rust.sum() < 0.3290
-    assert body[0] / body.sum() > 0.35
+        np.testing.assert_allclose(albedo, F0, rtol=1e-12)  # "In every case ... R_d = F0/pi"
+    # hematite's specular F0 is grey-blue (x, y below D65's 0.3127, 0.3290); the rust
+    # reflectance is red-brown: a CIELAB hue between red (0) and yellow (90), dark, saturated
+    hematite, rust = F0_colour_science("Rust"), F0_colour_science("RustMunsell")
+    assert hematite[0] / hematite.sum() < 0.3127 and hematite[1] / hematite.sum() < 0.3290
+    L, a, b = colour.XYZ_to_Lab(rust, D65_xy())
+    assert 20 < np.degrees(np.arctan2(b, a)) < 80 and L < 45 and np.hypot(a, b) > 20
 
 
 def test_fig7_one_exposure_for_the_whole_grid(fig7):
@@ -266,3 +310,83 @@ def test_config_check_builds_the_scenes_the_scripts_render(fig7, fig8):
     document = watch_scene_CookTorrance1982(fig, CT82["fig6"], TABLE1, CONFIG["wavelengths"],
                                             CONFIG["colour"], str(SPECTRA))
     assert _as_written(document) == yaml.safe_load(Path(fig8.scene).read_text())
+
+
+# ------------------------------------------------------------------------------------------------
+# Issue 13's acceptance, on the default figures as built (at a reduced size): measured with
+# colour-science on the PNG a reader sees, the object taken from the EXR beside it.
+# ------------------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def fig6_published(tmp_path_factory):
+    return run_fig6(tmp_path_factory.mktemp("ct82_fig6"))
+
+
+@pytest.fixture(scope="module")
+def fig7_published(tmp_path_factory):
+    return run_fig7(tmp_path_factory.mktemp("ct82_fig7_published"), "published", (96, 128, 2))
+
+
+def shown_lab(png, exr):
+    """(8-bit codes, CIELAB) of the object's pixels: Y > 0 in the EXR less a one-pixel rim."""
+    from PIL import Image
+    from scipy import ndimage
+
+    from reflectance.io.images import read_exr
+
+    mask = ndimage.binary_erosion(read_exr(exr)[0][..., 1] > 0)
+    codes = np.asarray(Image.open(png).convert("RGB"), dtype=float)[mask]
+    sRGB = colour.RGB_COLOURSPACES["sRGB"]
+    XYZ = colour.RGB_to_XYZ(colour.cctf_decoding(codes / 255, function="sRGB"), sRGB,
+                            illuminant=sRGB.whitepoint)
+    return codes, colour.XYZ_to_Lab(XYZ, sRGB.whitepoint)
+
+
+def assert_form_and_highlight_read(png, exr):
+    codes, Lab = shown_lab(png, exr)
+    visible = (codes.max(axis=-1) >= 20).mean()
+    span = np.percentile(Lab[:, 0], 99) - np.percentile(Lab[:, 0], 10)
+    assert visible >= 0.9, f"{png}: only {visible:.1%} of the object at or above 20/255"
+    assert span >= 25, f"{png}: L* spans only {span:.1f} between its 10th and 99th percentile"
+    return codes, Lab
+
+
+@pytest.mark.parametrize("panel", ["a", "b"])
+def test_fig6_default_shows_form_and_highlight(fig6_published, panel):
+    assert_form_and_highlight_read(getattr(fig6_published, f"{panel}_png"),
+                                   getattr(fig6_published, f"{panel}_exr"))
+
+
+def test_fig6a_default_highlight_is_whiter_than_the_body(fig6_published):
+    """A plastic: a light-coloured highlight on a copper body (C&T 1982 Fig. 6a)."""
+    _, Lab = shown_lab(fig6_published.a_png, fig6_published.a_exr)
+    chroma = np.hypot(Lab[:, 1], Lab[:, 2])
+    highlight = Lab[:, 0] >= np.percentile(Lab[:, 0], 99.5)
+    assert np.median(chroma[highlight]) <= 0.6 * np.median(chroma)
+
+
+def test_fig6b_default_highlight_is_copper_coloured(fig6_published):
+    """"The specular reflectance component has a copper color": the brightest pixels that are
+    not clipped (no channel at 255) have the CIELAB hue of copper's F0 under D65, within 10 deg."""
+    codes, Lab = shown_lab(fig6_published.b_png, fig6_published.b_exr)
+    unclipped = codes.max(axis=-1) < 255
+    brightest = unclipped & (Lab[:, 0] >= np.percentile(Lab[unclipped, 0], 99))
+    hue = np.degrees(np.arctan2(Lab[brightest, 2], Lab[brightest, 1]))
+    L, a, b = colour.XYZ_to_Lab(F0_colour_science("Cu"), D65_xy())
+    difference = (hue - np.degrees(np.arctan2(b, a)) + 180) % 360 - 180
+    assert brightest.sum() >= 5 and np.all(np.abs(difference) <= 10), difference
+
+
+def test_fig6a_default_departure_is_labelled(fig6_published):
+    """Fig. 6a departs from the print only as config.yaml says, and the CSV shows both."""
+    table = pd.read_csv(fig6_published.csv)
+    a = table[table.panel == "a"].set_index("written")
+    printed, departed = CT82["fig6"]["panels"]["a"], PUBLISHED["departures"]["a"]
+    assert a.loc[False, "s"] == printed["s"] and a.loc[True, "s"] == departed["s"]
+    assert a.loc[True, "highlight_chroma_ratio"] < a.loc[False, "highlight_chroma_ratio"]
+
+
+@pytest.mark.parametrize("vase", VASES)
+def test_fig7_default_every_vase_reads(fig7_published, vase):
+    k = VASES.index(vase)
+    assert_form_and_highlight_read(fig7_published.pngs[k], fig7_published.exrs[k])

@@ -400,7 +400,14 @@ def _table1_references(config):
               for part, spec in ct["fig8"]["parts"].items() if "table1" in spec]
     problems = [f"figures.cook_torrance_1982.{key}: {name!r} is not a row of table1; known: "
                 f"{', '.join(rows)}" for key, name in named if name not in rows]
-    readings = list(ct["fig6"]["ambient_readings"])
+    spectra = ct["fig7"].get("table1_spectra", {})
+    problems += [f"figures.cook_torrance_1982.fig7.table1_spectra: {row!r} is not a row of "
+                 f"table1; known: {', '.join(rows)}" for row in spectra if row not in rows]
+    materials = config.get("materials", {})
+    problems += [f"figures.cook_torrance_1982.fig7.table1_spectra.{row}: unknown material "
+                 f"{name!r}; known: {', '.join(sorted(materials))}"
+                 for row, name in spectra.items() if name not in materials]
+    readings = list(ct["fig6"]["ambient_readings"]) + ["published"]
     if ct["fig8"]["ambient_reading"] not in readings:
         problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "
                         f"{ct['fig8']['ambient_reading']!r} is not a key of fig6.ambient_readings; "

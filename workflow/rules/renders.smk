@@ -3,6 +3,9 @@
 
 CT82_FIG6 = CT82["fig6"]
 CT82_FIG6_READINGS = list(CT82_FIG6["ambient_readings"])
+CT82_PUBLISHED = CT82_FIG6["published"]  # the default figures (unsuffixed names)
+CT82_FIG6_SPECTRA = sorted({spectrum_csv(panel[key]) for panel in CT82_FIG6["panels"].values()
+                            for key in ("material", "diffuse_material")})
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
@@ -13,10 +16,39 @@ TARGETS += [
 ]
 
 
+TARGETS += [f"{CT82_OUT}/{name}" for name in ["fig6.png", "fig6.csv"] + [
+    f"fig6{panel}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")]]
+
+
+rule ct82_fig6_published:
+    input:
+        spectra=CT82_FIG6_SPECTRA,
+    output:
+        png=report(f"{CT82_OUT}/fig6.png", caption="../report/ct82_fig6_published.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
+        csv=report(f"{CT82_OUT}/fig6.csv", caption="../report/ct82_fig6_table.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
+        a_exr=f"{CT82_OUT}/fig6a.exr",
+        a_png=f"{CT82_OUT}/fig6a.png",
+        a_scene=f"{CT82_OUT}/fig6a.scene.yaml",
+        b_exr=f"{CT82_OUT}/fig6b.exr",
+        b_png=f"{CT82_OUT}/fig6b.png",
+        b_scene=f"{CT82_OUT}/fig6b.scene.yaml",
+    params:
+        fig=CT82_FIG6,
+        reference=CT82_PUBLISHED["ambient_reference"],
+        published=CT82_PUBLISHED,
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/cook_torrance_1982/fig6.log",
+    script:
+        "../scripts/cook_torrance_1982_fig6.py"
+
+
 rule ct82_fig6:
     input:
-        spectra=sorted({spectrum_csv(panel[key]) for panel in CT82_FIG6["panels"].values()
-                        for key in ("material", "diffuse_material")}),
+        spectra=CT82_FIG6_SPECTRA,
     output:
         png=report(f"{CT82_OUT}/fig6_{{reading}}.png", caption="../report/ct82_fig6.rst",
                    category="Cook & Torrance 1982", subcategory="Fig. 6"),
@@ -33,6 +65,7 @@ rule ct82_fig6:
     params:
         fig=CT82_FIG6,
         reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
+        published=None,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     log:
@@ -101,29 +134,57 @@ rule blinn77_fig7_sweep:
         "../scripts/blinn_1977_fig7_sweep.py"
 
 
-# Cook & Torrance 1982, Fig. 7 (the vases: six metals, Table I's six nonmetals and labelled extras,
-# each rendered alone under Fig. 6's lighting, shown with one exposure), once per reading of the
-# ambient term as for Fig. 6; Fig. 8 (the watch).
+# Cook & Torrance 1982, Fig. 7 (the vases: six metals, Table I's six nonmetals and labelled variants,
+# each rendered alone under Fig. 6's lighting): the default figure (fig7.png, fig7/<vase>.*), each
+# vase exposed as fig6.published says, and once per reading of the ambient term with one exposure
+# for the grid; Fig. 8 (the watch).
 
 CT82_FIG7 = CT82["fig7"]
+CT82_FIG7_ROWS = [CT82_FIG7["table1_spectra"].get(row["material"], row["material"])
+                  for row in CT82["table1"]["rows"]]
 CT82_FIG7_VASES = (
-    [metal["material"] for metal in CT82_FIG7["metals"]]
-    + [row["material"] for row in CT82["table1"]["rows"]]
-    + [f"{extra['table1']}_{extra['diffuse_material']}" for extra in CT82_FIG7["extras"]]
+    [metal["material"] for metal in CT82_FIG7["metals"]] + CT82_FIG7_ROWS
+    + [f"{extra['table1']}_{extra['material']}" for extra in CT82_FIG7["extras"]]
 )
 CT82_FIG7_SPECTRA = sorted(
     {spectrum_csv(m["material"]) for m in CT82_FIG7["metals"]}
-    | {spectrum_csv(row["material"]) for row in CT82["table1"]["rows"]}
-    | {spectrum_csv(e["diffuse_material"]) for e in CT82_FIG7["extras"]}
+    | {spectrum_csv(name) for name in CT82_FIG7_ROWS}
+    | {spectrum_csv(e["material"]) for e in CT82_FIG7["extras"]}
 )
+CT82_FIG7_STEMS = ["fig7"] + [f"fig7_{r}" for r in CT82_FIG6_READINGS]
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
-    for reading in CT82_FIG6_READINGS
-    for name in [f"fig7_{reading}.png", f"fig7_{reading}.csv"] + [
-        f"fig7_{reading}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")
-    ]
-]
+    for stem in CT82_FIG7_STEMS
+    for name in [f"{stem}.png", f"{stem}.csv"] + [
+        f"{stem}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")]
+] + [f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES]
+
+
+rule ct82_fig7_published:
+    input:
+        spectra=CT82_FIG7_SPECTRA,
+        sources="spectra/sources.csv",
+    output:
+        png=report(f"{CT82_OUT}/fig7.png", caption="../report/ct82_fig7_published.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        csv=report(f"{CT82_OUT}/fig7.csv", caption="../report/ct82_fig7_table.rst",
+                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        exrs=[f"{CT82_OUT}/fig7/{vase}.exr" for vase in CT82_FIG7_VASES],
+        scenes=[f"{CT82_OUT}/fig7/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
+        pngs=[f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES],
+    params:
+        fig=CT82_FIG7,
+        fig6=CT82_FIG6,
+        table1=CT82["table1"]["rows"],
+        reference=CT82_PUBLISHED["ambient_reference"],
+        published=CT82_PUBLISHED,
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/cook_torrance_1982/fig7.log",
+    script:
+        "../scripts/cook_torrance_1982_fig7.py"
 
 
 rule ct82_fig7:
@@ -144,6 +205,7 @@ rule ct82_fig7:
         fig6=CT82_FIG6,
         table1=CT82["table1"]["rows"],
         reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
+        published=None,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     log:

@@ -1,64 +1,103 @@
 """Cook & Torrance 1982, Fig. 6: (a) a copper-coloured plastic vase, (b) a copper vase, rendered
-spectrally (reflectance.render.pipeline) with the paper's parameters; the ambient term read as printed or as
-1 % of the lights' irradiance (wildcard ``reading``). Also tabulates how large the ambient term is
-against the direct light."""
+spectrally (reflectance.render.pipeline) with the paper's parameters. The ambient term is read as
+printed or as 1 % of the lights' irradiance (wildcard ``reading``, one exposure at the brightest
+colour), or, for the default figure (``params.published``), with the object metered and its
+highlights compressed at constant chromaticity, and Fig. 6a's labelled departure beside the printed
+panel. Also tabulates the size of the ambient term and how each panel reads."""
 
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
+from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
-from reflectance.render.scene import scene_from_dict
+from reflectance.optics.spectra import load_material
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
-from reflectance.scripting import script_log
+from reflectance.render.composite import appearance
+from reflectance.render.pipeline import display_image, render, render_to_files
+from reflectance.render.scene import scene_from_dict
 from reflectance.render.shading import ambient_intensity
 from reflectance.io.tables import write_csv
+from reflectance.scripting import script_log
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
-            "irradiance": "ambient = {f} of the lights' irradiance: I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0"}
+            "irradiance": "ambient = {f} of the lights' irradiance: I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0",
+            "weighted": "ambient = {f} of the lights as they enter the model: I_ia = {f} \u03a3 I_i d\u03c9_i"}
+
+
+def departure_text(change):
+    return ", ".join(f"{k} = {v:g}" for k, v in change.items())
 
 
 with script_log(snakemake) as log:
-    fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
+    fig_cfg, colour_cfg, published = snakemake.params.fig, snakemake.params.colour, \
+        snakemake.params.published
     reference, out = snakemake.params.reference, snakemake.output
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
-    rows, images = [], {}
+    exposure = published["exposure"] if published else None
+    departures = published["departures"] if published else {}
+    # (panel, label, material, written?): a departed panel is shown beside its printed version
+    renders = []
     for part in ("a", "b"):
-        document = vase_scene_CookTorrance1982(fig_cfg, panel_material(fig_cfg["panels"][part]),
-                                               reference, snakemake.params.wavelengths,
-                                               colour_cfg, spectra_dir)
+        panel = fig_cfg["panels"][part]
+        if part in departures:
+            renders.append((part, f"{TITLES[part]}, as printed", panel, False))
+            renders.append((part, f"{TITLES[part]}, {departure_text(departures[part])} "
+                                  f"(departure; printed: {departure_text({k: panel[k] for k in departures[part]})})",
+                            {**panel, **departures[part]}, True))
+        else:
+            renders.append((part, TITLES[part], panel, True))
+    rows, images = [], []
+    for part, title, panel, written in renders:
+        document = vase_scene_CookTorrance1982(fig_cfg, panel_material(panel), reference,
+                                               snakemake.params.wavelengths, colour_cfg,
+                                               spectra_dir, exposure=exposure)
         scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                  f"panel {part}")
-        result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                 out[f"{part}_png"], components=True)
-        images[part], scale = display_image(result)
+        result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
+                                  out[f"{part}_png"], components=True) if written
+                  else render(scene, components=True))
+        rgb, scale = display_image(result)
+        images.append((title, rgb))
         Y = {name: value[..., 1] for name, value in result.components.items()}
         direct = Y["diffuse"] + Y["specular"]
         I_ia = ambient_intensity(scene.ambient, scene.lights)
         energies = [light.intensity * light.solid_angle for light in scene.lights]
+        W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
+        F0 = load_material(panel["material"], scene.wavelengths, spectra_dir).F0 @ W
         rows.append({
-            "panel": part, "ambient_reading": reference, "I_ia": I_ia,
+            "panel": part, "written": written, "s": panel["s"], "d": panel["d"],
+            "ambient_reference": reference, "I_ia": I_ia,
             "ambient_Y": Y["ambient"].max(), "diffuse_Y_max": Y["diffuse"].max(),
             "specular_Y_max": Y["specular"].max(), "direct_Y_max": direct.max(),
+            "specular_over_diffuse_peak": (Y["specular"].max() / Y["diffuse"].max()
+                                           if Y["diffuse"].max() > 0 else np.nan),
             "ambient_over_direct_max": Y["ambient"].max() / direct.max(),
             # Cook & Torrance 1982: I_ia R_a over R_d I_i (N.L) d omega_i at N.L = 1, R_a = pi R_d
             "ambient_over_headon_diffuse_weakest_light": np.pi * I_ia / min(energies),
             "ambient_over_headon_diffuse_all_lights": np.pi * I_ia / sum(energies),
-            "exposure_scale": scale,
+            "exposure_scale": scale, "F0_X": F0[0], "F0_Y": F0[1], "F0_Z": F0[2],
+            **appearance(rgb, result.XYZ, colour_cfg["space"]),
         })
-        log.info("panel %s (%s): %s; timings %s", part, reference, rows[-1], result.timings)
+        log.info("panel %s (%s): %s; timings %s", part, title, rows[-1], result.timings)
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
-    height, width = images["a"].shape[:2]
-    fig = new_figure(2 * width / 100 + 0.4, height / 100 + 0.9, facecolor="black")
-    for k, part in enumerate(("a", "b")):
-        ax = fig.add_axes((0.02 + 0.49 * k, 0.02, 0.47, 0.84))
-        ax.imshow(images[part], interpolation="nearest")
+    height, width = images[0][1].shape[:2]
+    n = len(images)
+    fig = new_figure(n * width / 100 + 0.2, height / 100 + 1.2, facecolor="black")
+    for k, (title, rgb) in enumerate(images):
+        ax = fig.add_axes(((0.1 + k * width / 100) / (n * width / 100 + 0.2), 0.02,
+                           (width / 100) / (n * width / 100 + 0.2), height / (height + 120)))
+        ax.imshow(rgb, interpolation="nearest")
         ax.set_axis_off()
-        ax.set_title(TITLES[part], color="white", fontsize=10)
+        ax.set_title(title.replace(" (departure", "\n(departure"), color="white", fontsize=9)
     reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}", color="white", fontsize=11)
+    if published:
+        key = exposure["key"]
+        reading += (f"\neach vase metered (median luminance shown at {key['luminance']:g}), "
+                    f"highlights above {exposure['highlight_knee']:g} compressed at constant "
+                    "chromaticity")
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}", color="white", fontsize=10)
     savefig(fig, out.png, dpi=100)

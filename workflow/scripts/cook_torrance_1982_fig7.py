@@ -1,7 +1,9 @@
 """Cook & Torrance 1982, Fig. 7: "A variety of vases", six metals and six nonmetals with
 "R_d = F0/pi", rendered one vase at a time (reflectance.render.pipeline) under Fig. 6's lighting and
-composed into one grid shown as ONE scene: one Cook & Torrance exposure for all vases. Plus
-labelled extras (not in the paper) and a table of each vase's parameters and mean colour."""
+composed into one grid. The default figure (``params.published``) exposes each vase on its own as
+Fig. 6's default does (the label gives its exposure relative to the first vase); the readings of
+the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
+(not in the paper) and a table of each vase's parameters, colour and how it reads."""
 
 from pathlib import Path
 
@@ -9,104 +11,101 @@ import numpy as np
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.render.composite import common_exposure, covered_rows, image_grid
+from reflectance.colour.display import XYZ_to_display
 from reflectance.io.figures import savefig
-from reflectance.render.pipeline import render_to_files
-from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import vase_scene_CookTorrance1982
-from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
+from reflectance.papers.scenes import fig7_vases_CookTorrance1982, vase_scene_CookTorrance1982
+from reflectance.render.composite import appearance, common_exposure, covered_rows, image_grid
+from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.scripting import script_log
 
-GROUPS = {"metal": "six metals: Fig. 6b's s, d, D, F from measured n, k",
-          "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "extra, not in the paper"}
+GROUPS = {"metal": "six metals: Fig. 6b's s, d, D; F from measured n, k",
+          "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "variant, not in the paper"}
 READINGS = {"intensity": "as printed, I_ia = {f} I_i",
             "irradiance": "{f} of the lights' irradiance, I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0"}
 
 
-def nonmetal(row):
-    """A Table I row as a scene material (R_d = F0/pi of the same material: the scene default);
-    Table I's m "Not used" (s = 0) leaves the key out."""
-    return {"name": row["material"], "s": row["s"], "d": row["d"],
-            **({} if row["m"] is None else {"m": row["m"]})}
-
-
-def vases(fig, fig6, table1):
-    """(id, group, scene material) of every vase: metals, then Table I, then the extras."""
-    b = fig6["panels"]["b"]  # C&T 1982 Fig. 7: "the same parameters used for Figure 6b"
-    out = [(e["material"], "metal", {"name": e["material"], "s": b["s"], "d": b["d"],
-                                     "lobes": b["lobes"]}) for e in fig["metals"]]
-    out += [(row["material"], "nonmetal", nonmetal(row)) for row in table1]
-    rows = {row["material"]: row for row in table1}
-    for i, extra in enumerate(fig["extras"]):
-        if extra["table1"] not in rows:
-            raise ValueError(f"config.yaml figures.cook_torrance_1982.fig7.extras[{i}].table1: "
-                             f"{extra['table1']!r} is not a table1 row; known: {', '.join(rows)}")
-        material = dict(nonmetal(rows[extra["table1"]]), diffuse_material=extra["diffuse_material"])
-        out.append((f"{extra['table1']}_{extra['diffuse_material']}", "extra", material))
-    return out
-
-
-def label(material, sources):
-    """Material(s) and where their spectra come from."""
-    name, diffuse = material["name"], material.get("diffuse_material", material["name"])
-    row = sources.loc[diffuse]
-    kind = f"n, k: {row.dataset.rsplit('/', 1)[-1]}" if row.kind == "measured" else row.dataset
-    return f"{name}\n{kind}" if diffuse == name else f"{name} F, {diffuse} R_d\n{kind}"
+def label(material, sources, names):
+    """The paper's name of the material and where its spectrum comes from."""
+    name = material["name"]
+    row = sources.loc[name]
+    kind = (f"n, k: {row.dataset.rsplit('/', 1)[-1]}" if row.kind == "measured"
+            else f"Munsell {row.dataset.split(' ', 1)[-1]} (derived)")
+    return f"{names.get(name, name)}\n{kind}"
 
 
 with script_log(snakemake) as log:
     p, out = snakemake.params, snakemake.output
-    colour_cfg, reference = p.colour, p.reference
+    colour_cfg, reference, published = p.colour, p.reference, p.published
+    exposure = published["exposure"] if published else None
     spectra_dir = str(Path(snakemake.input.sources).parent)
     sources = list_materials(spectra_dir).set_index("material")
-    rows, images, groups, labels = [], [], [], []
-    for k, (vase, group, material) in enumerate(vases(p.fig, p.fig6, p.table1)):
+    rows, images, shown, groups, labels = [], [], [], [], []
+    for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
         document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
-                                               colour_cfg, spectra_dir, p.fig["vase_image"])
+                                               colour_cfg, spectra_dir, p.fig["vase_image"],
+                                               exposure=exposure)
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
-        result = render_to_files(scene, out.scenes[k], out.exrs[k])
+        result = render_to_files(scene, out.scenes[k], out.exrs[k],
+                                 out.pngs[k] if published else None)
+        rgb, scale = display_image(result)  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
         albedo = scene.objects[0].material.albedo @ W  # pi R_d (Cook & Torrance 1982: R_d = F0/pi)
         on = result.XYZ[..., 1] > 0
         mean = result.XYZ[on].mean(axis=0)
         rows.append({"vase": vase, "group": group, "material": material["name"],
-                     "diffuse_material": material.get("diffuse_material", material["name"]),
+                     "label": p.fig["labels"].get(material["name"], material["name"]),
                      "kind": sources.loc[material["name"], "kind"],
                      "model": scene.objects[0].material.model, "s": material["s"],
                      "d": material["d"], "m": material.get("m", np.nan),
                      "lobes": " ".join(f"{b['w']:g}x{b['m']:g}" for b in material.get("lobes", [])),
-                     "ambient_reading": reference,
+                     "ambient_reference": reference,
                      **{f"{name}_{c}": v for name, XYZ in (("F0", F0), ("albedo", albedo),
                                                            ("mean", mean))
                         for c, v in zip("XYZ", XYZ)},
                      "mean_x": mean[0] / mean.sum(), "mean_y": mean[1] / mean.sum(),
-                     "Y_max": result.XYZ[..., 1].max(), "pixels": int(on.sum())})
-        images.append(result.XYZ), groups.append(group), labels.append(label(material, sources))
+                     "Y_max": result.XYZ[..., 1].max(), "pixels": int(on.sum()),
+                     "vase_exposure_scale": scale})
+        images.append(result.XYZ), shown.append(rgb), groups.append(group)
+        labels.append(label(material, sources, p.fig["labels"]))
         log.info("%s: %s; timings %s", vase, rows[-1], result.timings)
 
     display = dict(illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
                    wavelengths=scene.wavelengths)
-    scale = common_exposure(images, colour_cfg["space"], **display)  # the grid is one scene
-    pd.DataFrame(rows).assign(exposure_scale=scale).pipe(write_csv, out.csv, float_format="%.6g")
+    if published:  # each vase exposed on its own; the label says how much brighter than the first
+        scales = [row["vase_exposure_scale"] for row in rows]
+        labels = [f"{text}\nexposure x{s / scales[0]:.3g}" for text, s in zip(labels, scales)]
+        title = ("Cook & Torrance 1982, Fig. 7 \u2014 each vase metered on its own (median at "
+                 f"{exposure['key']['luminance']:g}), highlights compressed at constant chromaticity")
+    else:  # the grid is one scene: "all XYZ values in the scene are scaled equally"
+        scale = common_exposure(images, colour_cfg["space"], **display)
+        scales = [scale] * len(images)
+        shown = [XYZ_to_display(XYZ * scale, colour_cfg["space"], colour_cfg["gamut_clip"],
+                                expose=False, **display) for XYZ in images]
+        reading = READINGS[reference].format(f=f"{p.fig6['ambient_fraction']:g}")
+        title = f"Cook & Torrance 1982, Fig. 7 \u2014 ambient {reading}; one exposure for all vases"
+    table = pd.DataFrame(rows).assign(exposure_scale=scales)
+    for i, (rgb, XYZ) in enumerate(zip(shown, images)):
+        for key, value in appearance(rgb, XYZ, colour_cfg["space"]).items():
+            table.loc[i, key] = value
+    table.pipe(write_csv, out.csv, float_format="%.6g")
 
-    # metals in the first row, nonmetals in the second, extras in the last column
+    # metals in the first row, nonmetals in the second, variants in the last column
     n_cols = max(groups.count("metal"), groups.count("nonmetal")) + ("extra" in groups)
     slots, cells, headings = {"metal": 0, "nonmetal": 0, "extra": n_cols - 1}, [], []
-    for image, group, text in zip(images, groups, labels):
+    for rgb, group, text in zip(shown, groups, labels):
         row, col = int(group != "metal"), slots[group]
         slots[group] += 1
         if group not in [h[2] for h in headings]:  # the group's heading over its first vase
             headings.append((row, col, group))
-        cells.append((row, col, image, text))
+        cells.append((row, col, rgb, text))
     styles = {"metal": {"x": 0.01}, "nonmetal": {"x": 0.01},
               "extra": {"x": 1 - 0.5 / n_cols, "color": "#ffcc66", "fontsize": 8, "ha": "center"}}
-    reading = READINGS[reference].format(f=f"{p.fig6['ambient_fraction']:g}")
-    fig = image_grid(cells, 2, n_cols, scale, colour_cfg["space"], colour_cfg["gamut_clip"],
-                     display, f"Cook & Torrance 1982, Fig. 7 \u2014 ambient {reading}; one "
-                     "exposure for all vases",
+    fig = image_grid(cells, 2, n_cols, title,
                      headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
-                     crop=covered_rows(images))
+                     crop=covered_rows(images), foot=0.55 if published else 0.4)
     savefig(fig, out.png, dpi=100)

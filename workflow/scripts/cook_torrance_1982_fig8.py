@@ -13,7 +13,7 @@ from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import display_from_colour, panel_material, scene_document
+from reflectance.papers.scenes import watch_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material
 from reflectance.render.visibility import visibility
@@ -21,44 +21,12 @@ from reflectance.geometry.watch import WATCH_PARTS
 from reflectance.io.tables import write_csv
 
 
-def part_material(name, spec, fig6, table1):
-    """A part of config fig8.parts as a scene material; ``table1: X`` takes Table I's row X."""
-    if "table1" in spec:
-        rows = {row["material"]: row for row in table1}
-        if spec["table1"] not in rows:
-            raise ValueError(f"config.yaml figures.cook_torrance_1982.fig8.parts.{name}.table1: "
-                             f"{spec['table1']!r} is not a table1 row; known: {', '.join(rows)}")
-        row = rows[spec["table1"]]
-        spec = {"material": row["material"], "s": row["s"], "d": row["d"], "m": row["m"]}
-    return {**panel_material(spec), "distribution": fig6["distribution"],
-            "convention": fig6["convention"], "fresnel": fig6["fresnel"],
-            "shadowing": fig6["shadowing"]}
-
-
-def watch_scene(fig, fig6, table1, wavelengths, colour, spectra_dir):
-    """The watch scene (workflow/schemas/scene.schema.yaml)."""
-    light, led = fig["light"], fig["led"]
-    parts = {name: part_material(name, spec, fig6, table1) for name, spec in fig["parts"].items()}
-    # C&T 1982 Fig. 8: the LEDs' "color was approximated by using a color with the same dominant
-    # wavelength"; luminance relative to a white Lambertian card facing the light (I d omega / pi)
-    parts["led"] = {"model": "Lambert", "convention": "physical", "albedo": 0.0, "emission": {
-        "dominant_wavelength_nm": led["dominant_wavelength_nm"], "purity": led["purity"],
-        "luminance": led["luminance_factor"] * light["intensity"] * light["solid_angle"] / np.pi,
-        "white": colour["illuminant"]}}
-    return scene_document(
-        fig["camera"], [{"name": "watch", "geometry": {"type": "watch", "parameters": fig["watch"]},
-                         "material": parts["case"], "parts": parts}], [light], wavelengths,
-        spectra_dir, observer=colour["observer"], spectral=fig6["spectral"],
-        ambient={"fraction": fig6["ambient_fraction"],
-                 "reference": fig6["ambient_readings"][fig["ambient_reading"]]},
-        display=display_from_colour(colour))
-
-
 with script_log(snakemake) as log:
     p, out = snakemake.params, snakemake.output
     colour_cfg = p.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
-    document = watch_scene(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg, spectra_dir)
+    document = watch_scene_CookTorrance1982(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg,
+                                            spectra_dir)
     scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
     result = render_to_files(scene, out.scene, out.exr, out.render_png)
     rgb, scale = display_image(result)

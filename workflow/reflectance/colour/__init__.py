@@ -34,6 +34,8 @@ _EXPORTS = {
     "XYZ_to_linear_RGB": "display",
     "linear_RGB_to_XYZ": "display",
     "expose_CookTorrance1982": "display",
+    "expose_key": "display",
+    "compress_highlights": "display",
     "gamut_clip_CookTorrance1982": "display",
     "gamut_clip_channels": "display",
     "gamut_clip_CSSColor4": "display",

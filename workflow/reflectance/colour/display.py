@@ -52,6 +52,8 @@ __all__ = [
     "XYZ_to_linear_RGB",
     "linear_RGB_to_XYZ",
     "expose_CookTorrance1982",
+    "expose_key",
+    "compress_highlights",
     "gamut_clip_CookTorrance1982",
     "gamut_clip_channels",
     "gamut_clip_CSSColor4",
@@ -286,6 +288,75 @@ def expose_CookTorrance1982(
     peak = RGB[Y == Y_max].max()
     scale = float(1.0 / peak)
     return XYZ * scale, scale
+
+
+def expose_key(XYZ, percentile=50.0, luminance=0.18):
+    """Scale a scene so that a percentile of its object's luminance lands at a display luminance.
+
+    A photographer's reflected-light metering of the object instead of Cook & Torrance's "usually"
+    (their most luminous colour at the display maximum): the ``percentile`` of ``Y`` over the
+    pixels with ``Y > 0`` (the object; the background is black) becomes ``luminance`` (0.18: the
+    photographic middle grey). Brighter colours may then exceed the display; see
+    :func:`compress_highlights`. If no pixel has ``Y > 0`` the scene is returned unscaled.
+
+    Parameters
+    ----------
+    XYZ : array_like
+        Scene XYZ, shape ``(..., 3)``.
+    percentile : float
+        In [0, 100].
+    luminance : float
+        Display luminance (white = 1) that percentile is shown at.
+
+    Returns
+    -------
+    tuple
+        ``(XYZ * scale, scale)``.
+
+    Examples
+    --------
+    >>> XYZ = np.array([[0.0, 0.0, 0.0], [1.0, 2.0, 1.0], [2.0, 4.0, 2.0]])
+    >>> round(expose_key(XYZ, 0, 0.5)[1], 12)
+    0.25
+    """
+    XYZ = _as_triplets(XYZ, "XYZ")
+    if not 0.0 <= float(percentile) <= 100.0:
+        raise ValueError(f"percentile must lie in [0, 100], got {percentile!r}")
+    if not float(luminance) > 0.0:
+        raise ValueError(f"luminance must be > 0, got {luminance!r}")
+    Y = XYZ[..., 1]
+    on = np.isfinite(Y) & (Y > 0)
+    if not on.any():
+        return XYZ.copy(), 1.0
+    scale = float(luminance) / float(np.percentile(Y[on], percentile))
+    return XYZ * scale, scale
+
+
+def compress_highlights(RGB_linear, knee):
+    """Bring colours above ``knee`` smoothly below the display maximum at constant chromaticity.
+
+    Each pixel's linear RGB is multiplied by ``g(M) / M`` with ``M`` its largest channel and
+    ``g(M) = M`` up to the knee, ``g(M) = k + (1 - k) tanh((M - k) / (1 - k))`` above it (slope 1 at
+    the knee, tending to 1). Scaling all three channels by one factor keeps the chromaticity, so
+    the dominant wavelength and purity (and, where CIELAB is a cube root, the CIELAB hue) of a
+    highlight stay those of the scene: a copper highlight stays copper instead of being clipped
+    to white. Colours with a negative channel keep it (the gamut clip handles them).
+
+    Examples
+    --------
+    >>> compress_highlights([[0.4, 0.2, 0.1], [1.0, 0.5, 0.25]], 0.8).round(4)
+    array([[ 0.4   ,  0.2   ,  0.1   ],
+           [ 0.9523,  0.4762,  0.2381]])
+    """
+    RGB = _as_triplets(RGB_linear, "RGB_linear")
+    k = float(knee)
+    if not 0.0 < k < 1.0:
+        raise ValueError(f"highlight knee must lie in (0, 1), got {knee!r}")
+    M = RGB.max(axis=-1, keepdims=True)
+    above = np.isfinite(M) & (M > k)
+    safe = np.where(above, M, 1.0)
+    g = k + (1.0 - k) * np.tanh((safe - k) / (1.0 - k))
+    return np.where(above, RGB * (g / safe), RGB)
 
 
 def _finite_rows(RGB):
@@ -566,6 +637,7 @@ def XYZ_to_display(
     illuminant="D65",
     observer=OBSERVER_DEFAULT,
     wavelengths=None,
+    highlight_knee=None,
 ):
     """Scene XYZ to encoded display RGB in [0, 1]: expose, linear RGB, gamut clip, encode.
 
@@ -581,6 +653,9 @@ def XYZ_to_display(
         Apply :func:`expose_CookTorrance1982` to the whole array first.
     illuminant, observer, wavelengths
         As for :func:`XYZ_to_linear_RGB`.
+    highlight_knee : float, optional
+        Compress colours above this linear level at constant chromaticity
+        (:func:`compress_highlights`) before the gamut clip.
 
     Returns
     -------
@@ -602,4 +677,6 @@ def XYZ_to_display(
     if expose:
         XYZ, _scale = expose_CookTorrance1982(XYZ, space, illuminant, observer, wavelengths)
     RGB = XYZ_to_linear_RGB(XYZ, space, illuminant, observer, wavelengths)
+    if highlight_knee is not None:
+        RGB = compress_highlights(RGB, highlight_knee)
     return encode(gamut_clip(RGB, clip, space), space)

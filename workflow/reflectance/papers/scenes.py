@@ -127,7 +127,7 @@ def panel_material(panel):
 
 
 def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, spectra_dir,
-                                image=None):
+                                image=None, exposure=None):
     """One vase alone as Cook & Torrance 1982 Fig. 6 renders it (Fig. 7: every vase).
 
     Parameters
@@ -144,6 +144,9 @@ def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, 
     spectra_dir : str
     image : dict, optional
         Overrides of the camera (``width``, ``height``, ``supersample``).
+    exposure : dict, optional
+        Scene ``display`` keys ``key`` and ``highlight_knee`` (default: Cook & Torrance's exposure,
+        the brightest colour at the display maximum).
     """
     material = {"distribution": fig6["distribution"], "convention": fig6["convention"],
                 "fresnel": fig6["fresnel"], "shadowing": fig6["shadowing"], **material}
@@ -153,7 +156,7 @@ def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, 
         fig6["lights"], wavelengths, spectra_dir, observer=colour["observer"],
         spectral=fig6["spectral"],
         ambient={"fraction": fig6["ambient_fraction"], "reference": reference},
-        display=display_from_colour(colour))
+        display={**display_from_colour(colour), **(exposure or {})})
 
 
 def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, spectra_dir=None):
@@ -311,29 +314,33 @@ def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
 # reflectance.config builds and validates them all when the workflow is parsed)
 # --------------------------------------------------------------------------------------------
 
-def table1_material(row):
-    """A Cook & Torrance 1982 Table I row as a scene material (R_d = F0/pi of the same material:
-    the scene default); Table I's m "Not used" (s = 0) leaves the key out."""
-    return {"name": row["material"], "s": row["s"], "d": row["d"],
+def table1_material(row, material=None):
+    """A Cook & Torrance 1982 Table I row as a scene material of ``material``'s spectrum (default
+    the row's own; R_d = F0/pi of it: the scene default); Table I's m "Not used" (s = 0) leaves the
+    key out."""
+    return {"name": material or row["material"], "s": row["s"], "d": row["d"],
             **({} if row["m"] is None else {"m": row["m"]})}
 
 
 def fig7_vases_CookTorrance1982(fig7, fig6, table1):
     """(id, group, scene material) of every vase of Cook & Torrance 1982 Fig. 7: the metals with
-    Fig. 6b's s, d and lobes ("the same parameters used for Figure 6b"), Table I's nonmetals, then
-    the labelled extras (a Table I row with another material's F0/pi as R_d)."""
+    Fig. 6b's s, d and lobes ("the same parameters used for Figure 6b"), Table I's nonmetals (with
+    the reflectance of ``fig7.table1_spectra`` where a row's n, k do not give its colour), then the
+    labelled variants (a Table I row's s, d, m with another material's spectrum)."""
     b = fig6["panels"]["b"]
     out = [(e["material"], "metal", {"name": e["material"], "s": b["s"], "d": b["d"],
                                      "lobes": b["lobes"]}) for e in fig7["metals"]]
-    out += [(row["material"], "nonmetal", table1_material(row)) for row in table1]
+    spectra = fig7.get("table1_spectra", {})
+    for row in table1:
+        name = spectra.get(row["material"], row["material"])
+        out.append((name, "nonmetal", table1_material(row, name)))
     rows = {row["material"]: row for row in table1}
     for i, extra in enumerate(fig7["extras"]):
         if extra["table1"] not in rows:
             raise ValueError(f"config.yaml figures.cook_torrance_1982.fig7.extras[{i}].table1: "
                              f"{extra['table1']!r} is not a table1 row; known: {', '.join(rows)}")
-        material = dict(table1_material(rows[extra["table1"]]),
-                        diffuse_material=extra["diffuse_material"])
-        out.append((f"{extra['table1']}_{extra['diffuse_material']}", "extra", material))
+        out.append((f"{extra['table1']}_{extra['material']}", "extra",
+                    table1_material(rows[extra["table1"]], extra["material"])))
     return out
 
 
@@ -369,8 +376,16 @@ def watch_scene_CookTorrance1982(fig8, fig6, table1, wavelengths, colour, spectr
                           "material": parts["case"], "parts": parts}], [light], wavelengths,
         spectra_dir, observer=colour["observer"], spectral=fig6["spectral"],
         ambient={"fraction": fig6["ambient_fraction"],
-                 "reference": fig6["ambient_readings"][fig8["ambient_reading"]]},
-        display=display_from_colour(colour))
+                 "reference": watch_ambient_reference(fig8, fig6)},
+        display={**display_from_colour(colour), **fig8.get("exposure", {})})
+
+
+def watch_ambient_reference(fig8, fig6):
+    """The scene ambient reference of ``fig8.ambient_reading``: a key of fig6.ambient_readings, or
+    ``published`` (the default figures' reading, fig6.published.ambient_reference)."""
+    if fig8["ambient_reading"] == "published":
+        return fig6["published"]["ambient_reference"]
+    return fig6["ambient_readings"][fig8["ambient_reading"]]
 
 
 def texture_material_Blinn1977(fig8, pattern, n):

@@ -24,6 +24,7 @@ _EXPORTS = {
     "common_exposure": "composite",
     "covered_rows": "composite",
     "image_grid": "composite",
+    "appearance": "composite",
     "part_pixels": "composite",
     "MAX_TRIANGLES": "idbuffer",
     "MAX_BUFFER_SIDE": "idbuffer",

@@ -3,10 +3,12 @@
 - :func:`common_exposure`: Cook & Torrance's exposure over several renders shown as one scene
   ("all XYZ values in the scene are scaled equally");
 - :func:`covered_rows`: the image rows any render covers (to crop a grid);
-- :func:`image_grid`: a matplotlib figure of renders on a black ground, each at a (row, column)
-  with a label beneath, shown with one exposure;
+- :func:`image_grid`: a matplotlib figure of display images on a black ground, each at a
+  (row, column) with a label beneath;
 - :func:`part_pixels`: what each pixel of a render shows of each named part of a mesh, and the
-  colour it is shown in (dominant wavelength of the scene and of the displayed colour).
+  colour it is shown in (dominant wavelength of the scene and of the displayed colour);
+- :func:`appearance`: how an object reads in its display image (how much of it is visible, its
+  lightness range, how white its highlight is against its body, the highlight's hue).
 
 References
 ----------
@@ -18,10 +20,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from reflectance.colour.display import (XYZ_to_display, XYZ_to_linear_RGB, expose_CookTorrance1982,
+from reflectance.colour.display import (XYZ_to_linear_RGB, expose_CookTorrance1982,
                                  gamut_clip, linear_RGB_to_XYZ)
 
-__all__ = ["common_exposure", "covered_rows", "image_grid", "part_pixels"]
+__all__ = ["common_exposure", "covered_rows", "image_grid", "part_pixels", "appearance"]
 
 
 def common_exposure(images, space, illuminant, observer, wavelengths):
@@ -40,21 +42,15 @@ def covered_rows(images, margin=4):
     return slice(max(lit[0] - margin, 0), lit[-1] + margin + 1)
 
 
-def image_grid(cells, n_rows, n_cols, scale, space, gamut_clip_method, display, title,
-               headings=(), crop=slice(None), head=0.25, foot=0.4, top=0.45, dpi=100):
-    """A figure of XYZ renders in a grid, all shown with one exposure ``scale``.
+def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head=0.25, foot=0.4,
+               top=0.45, dpi=100):
+    """A figure of display images (encoded RGB) in a grid on a black ground.
 
     Parameters
     ----------
-    cells : sequence of (row, col, XYZ, label)
-        The renders (same size) and the text beneath each.
+    cells : sequence of (row, col, RGB, label)
+        The images (same size, encoded RGB in [0, 1]) and the text beneath each.
     n_rows, n_cols : int
-    scale : float
-        Exposure applied to every image (:func:`common_exposure`).
-    space, gamut_clip_method : str
-        Display space and gamut clipping (:func:`reflectance.colour.display.XYZ_to_display`).
-    display : dict
-        ``illuminant``, ``observer``, ``wavelengths`` of the display conversion.
     title : str
     headings : sequence of (row, col, text, style)
         Text over a cell; ``style`` holds matplotlib text keywords and ``x`` (figure fraction).
@@ -69,11 +65,10 @@ def image_grid(cells, n_rows, n_cols, scale, space, gamut_clip_method, display, 
     w, h = first.shape[1] / dpi, first.shape[0] / dpi
     fig_w, fig_h = n_cols * w * 1.04, top + n_rows * (head + h + foot)
     fig = new_figure(fig_w, fig_h, facecolor="black")
-    for row, col, XYZ, label in cells:
+    for row, col, rgb, label in cells:
         y0 = fig_h - top - row * (head + h + foot) - head
         ax = fig.add_axes((col / n_cols + 0.02 / n_cols, (y0 - h) / fig_h, w / fig_w, h / fig_h))
-        ax.imshow(XYZ_to_display(XYZ[crop] * scale, space, gamut_clip_method, expose=False,
-                                 **display), interpolation="nearest")
+        ax.imshow(rgb[crop], interpolation="nearest")
         ax.set_axis_off()
         ax.text(0.5, -0.01, label, transform=ax.transAxes, ha="center", va="top", color="white",
                 fontsize=8, linespacing=1.15)
@@ -132,3 +127,48 @@ def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, displ
                 "purity_shown": over(purity)}
 
     return stats
+
+
+def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
+    """How an object reads in its display image: visibility, lightness range, highlight colour.
+
+    The object is the pixels with scene ``Y > 0`` less a one-pixel rim (partly covered, antialiased
+    pixels). Colours are those the PNG shows: 8-bit codes decoded with the display's transfer
+    function, taken to CIELAB relative to the display white.
+
+    Returns
+    -------
+    dict
+        ``visible``: fraction of object pixels with some channel >= 20/255; ``L10``, ``L99``: the
+        10th and 99th percentile of L*; ``body_chroma``: median C*ab; ``highlight_chroma_ratio``:
+        median C*ab of the pixels at or above the ``highlight_percentile`` of L*, over the body's;
+        ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
+        channel at 255 (NaN if none); ``clipped``: fraction of object pixels with a channel at 255.
+    """
+    import colour
+    from scipy import ndimage
+
+    from reflectance.colour.display import display_space
+
+    ds = display_space(space)
+    on = ndimage.binary_erosion(np.asarray(XYZ)[..., 1] > 0)
+    codes = np.round(np.asarray(encoded)[on] * 255)
+    if space == "sRGB":
+        linear = colour.cctf_decoding(codes / 255, function="sRGB")
+    else:
+        linear = colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1)
+    white = colour.XYZ_to_xy(ds.whitepoint_XYZ)
+    Lab = colour.XYZ_to_Lab(linear @ ds.matrix_RGB_to_XYZ.T, white)
+    L, C = Lab[:, 0], np.hypot(Lab[:, 1], Lab[:, 2])
+    highlight = L >= np.percentile(L, highlight_percentile)
+    unclipped = codes.max(axis=-1) < 255
+    hue = np.nan
+    if unclipped.any():
+        top = unclipped & (L >= np.percentile(L[unclipped], 99))
+        a, b = Lab[top, 1].mean(), Lab[top, 2].mean()
+        hue = float(np.degrees(np.arctan2(b, a)) % 360)
+    return {"visible": float((codes.max(axis=-1) >= 20).mean()),
+            "L10": float(np.percentile(L, 10)), "L99": float(np.percentile(L, 99)),
+            "body_chroma": float(np.median(C)),
+            "highlight_chroma_ratio": float(np.median(C[highlight]) / np.median(C)),
+            "highlight_hue_deg": hue, "clipped": float((~unclipped).mean())}

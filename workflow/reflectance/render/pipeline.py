@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982
+from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.shading import shade
@@ -189,11 +189,14 @@ def display_image(result):
     kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
               "wavelengths": scene.wavelengths}
     XYZ, scale = result.XYZ, 1.0
-    if d.expose:
+    if d.expose and d.key is not None:
+        XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
+    elif d.expose:
         # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
         # at the maximum luminance of its chromaticity
         XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False, **kwargs), scale
+    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False,
+                          highlight_knee=d.highlight_knee, **kwargs), scale
 
 
 def software_versions():

@@ -118,6 +118,8 @@ class Display:
     expose: bool = True
     illuminant: str = "D65"
     png_bit_depth: int = 8
+    key: tuple | None = None  # (percentile, luminance): reflectance.colour.display.expose_key
+    highlight_knee: float | None = None  # reflectance.colour.display.compress_highlights
 
 
 @dataclass(frozen=True, eq=False)
@@ -443,16 +445,17 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     if "spectrum" in a:  # (a light's spectrum is checked with the light)
         _illuminant(check, ["ambient", "spectrum"], a_spectrum)
     ambient = check.run(["ambient"], Ambient, a["fraction"], a["reference"], a_spectrum)
-    if ambient is not None and ambient.reference == "irradiance" and ambient.fraction > 0 \
+    if ambient is not None and ambient.reference != "intensity" and ambient.fraction > 0 \
             and any(light.area is not None for light in lights):
-        check.add(["ambient", "reference"], "'irradiance' needs every light's solid_angle")
+        check.add(["ambient", "reference"], f"{ambient.reference!r} needs every light's solid_angle")
 
     d = doc["display"]
     display_white = d.get("illuminant", first)
     if "illuminant" in d:
         _illuminant(check, ["display", "illuminant"], display_white)
+    key = (float(d["key"]["percentile"]), float(d["key"]["luminance"])) if "key" in d else None
     display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
-                      d["png_bit_depth"])
+                      d["png_bit_depth"], key, d.get("highlight_knee"))
 
     cache, objects = {}, []
     for i, obj in enumerate(doc["objects"]):

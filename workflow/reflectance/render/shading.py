@@ -81,6 +81,8 @@ AMBIENT_REFERENCES = {
                  "I_ia = 0.01 I_i)",
     "irradiance": "I_ia = fraction x sum_l I_l d omega_l / pi: the ambient irradiance pi I_ia "
                   "is that fraction of the lights' normal irradiance",
+    "weighted": "I_ia = fraction x sum_l I_l d omega_l: the printed 'I_ia = 0.01 I_i' with I_i "
+                "read as each light as it enters the model, weighted by its d omega",
 }
 """What the ambient ``fraction`` is a fraction of."""
 
@@ -231,7 +233,9 @@ def ambient_intensity(ambient, lights):
     ``"intensity"``: Cook & Torrance 1982, Figs. 6 and 7, "I_ia = 0.01 I_i", with I_i the lights'
     mean intensity (their lights share one). ``"irradiance"``: ``fraction sum_l I_l d omega_l / pi``,
     so that the irradiance of a uniform ambient over the hemisphere, ``pi I_ia``, is that fraction
-    of the lights' normal irradiance ``sum_l I_l d omega_l``.
+    of the lights' normal irradiance ``sum_l I_l d omega_l``. ``"weighted"``: ``fraction sum_l I_l
+    d omega_l`` (pi times the irradiance reading): I_i of "I_ia = 0.01 I_i" read as the light as
+    it enters the sum of Cook & Torrance's model, I_il d omega_il.
 
     Examples
     --------
@@ -247,9 +251,10 @@ def ambient_intensity(ambient, lights):
     if ambient.reference == "intensity":
         return ambient.fraction * float(np.mean([light.intensity for light in lights]))
     if any(light.area is not None for light in lights):
-        raise ValueError("ambient reference 'irradiance' needs every light's solid_angle "
-                         "(a light given by its area has no single d omega)")
-    return ambient.fraction * sum(light.intensity * light.solid_angle for light in lights) / np.pi
+        raise ValueError(f"ambient reference {ambient.reference!r} needs every light's "
+                         "solid_angle (a light given by its area has no single d omega)")
+    weighted = ambient.fraction * sum(light.intensity * light.solid_angle for light in lights)
+    return weighted if ambient.reference == "weighted" else weighted / np.pi
 
 
 def emission_XYZ(dominant_wavelength_nm, luminance, purity=1.0, white="D65",
