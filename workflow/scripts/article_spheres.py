@@ -67,4 +67,4 @@ with script_log(snakemake) as log:
                  f"clear coat F of {cfg['material']} over pigments Munsell {names}", fontsize=9,
                  y=1 - 0.05 / (h + 0.95),
                  va="top")
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tight=False)

@@ -77,4 +77,4 @@ with script_log(snakemake) as log:
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 Phong's p_s {reading.replace('_', ' ')}; "
                      f"p_a = {fig_cfg['p_a']:g}; intensity i = Y, i = 1 is white", fontsize=11,
                      y=1 - 0.04 / H, va="top")
-        savefig(fig, png, dpi=100)
+        savefig(fig, png, dpi=100, tight=False)

@@ -78,4 +78,4 @@ with script_log(snakemake) as log:
     fig.suptitle(f"Blinn 1977, Fig. 7 as a movie: {p['label']} (p_s = {p['p_s']:g}, p_d = {p['p_d']:g}, "
                  f"n = {p['n']:g}, c3 = {p['c3']:g}; Phong p_s {cfg['phong_specular'].replace('_', ' ')}), "
                  f"frames {', '.join(str(f) for f in picks)}", fontsize=9.5, y=1 - 0.08 / H, va="top", color="white")
-    savefig(fig, out.contact, dpi=100)
+    savefig(fig, out.contact, dpi=100, tight=False)

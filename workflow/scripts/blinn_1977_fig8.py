@@ -68,4 +68,4 @@ with script_log(snakemake) as log:
                  f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
                  f"i = 1 is white", fontsize=9.5, y=1 - 0.05 / H, va="top")
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tight=False)
