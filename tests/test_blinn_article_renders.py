@@ -184,12 +184,42 @@ def test_sweep_gif_frames_and_determinism(tmp_path):
     with Image.open(first["gif"]) as gif:
         assert gif.n_frames == sweep["n_frames"] and gif.info["loop"] == 0
         assert gif.info["duration"] == sweep["frame_ms"]
-        assert gif.size[0] == 2 * sweep["size"] + 4
+        assert gif.size[0] > 2 * sweep["size"]  # a label column, then Phong and Torrance-Sparrow
     table = pd.read_csv(first["csv"])
-    np.testing.assert_allclose(table.light_angle_deg, np.linspace(*sweep["angles_deg"], sweep["n_frames"]))
-    # front lit the models agree; toward the edge the Torrance-Sparrow highlight outgrows Phong's
-    assert table.max_abs_difference.iloc[0] < 0.05 < table.max_abs_difference.iloc[-1]
-    assert table.torrance_sparrow_max.iloc[-1] > 1.5 * table.phong_max.iloc[-1]
+    assert sorted(set(table.panel)) == sorted(sweep["panels"])
+    for panel in sweep["panels"]:
+        part = table[table.panel == panel]
+        np.testing.assert_allclose(part.light_angle_deg,
+                                   np.linspace(*sweep["angles_deg"], sweep["n_frames"]))
+        # front lit the models agree; toward the edge the Torrance-Sparrow highlight outgrows Phong's
+        assert part.max_abs_difference.iloc[0] < 0.1 < part.max_abs_difference.iloc[-2]
+        assert part.torrance_sparrow_max.iloc[-2] > 1.5 * part.phong_max.iloc[-2]
+        # the mirror-point highlight p_s F(c)/c, c = cos(angle/2), with Blinn's sin/tan Fresnel
+        q = B77["fig7"]["panels"][panel]
+        c = np.cos(np.radians(part.light_angle_deg.to_numpy()) / 2)
+        np.testing.assert_allclose(part.mirror_highlight, q["p_s"] * fresnel_sin_tan(np.arccos(c), q["n"]) / c,
+                                   rtol=1e-5)
+
+
+def test_mgo_passes_aluminium_only_near_grazing_light():
+    """Blinn: MgO "even more [specular] than the aluminum" edge lit: true beyond about 166.9 degrees."""
+    from scipy.optimize import brentq
+
+    from reflectance.papers.scenes import highlight_crossover_Blinn1977
+
+    a, b = B77["fig7"]["panels"]["a"], B77["fig7"]["panels"]["b"]
+
+    def ratio(angle):  # written out here: p_s F(c) / c at N = H, with Blinn's sin/tan Fresnel
+        c = np.cos(np.radians(angle) / 2)
+        return (b["p_s"] * fresnel_sin_tan(np.arccos(c), b["n"])) / (a["p_s"] * fresnel_sin_tan(np.arccos(c), a["n"]))
+
+    by_hand = brentq(lambda x: ratio(x) - 1, 100, 179)
+    assert 166 < by_hand < 168
+    assert highlight_crossover_Blinn1977(a, b) == pytest.approx(by_hand, abs=1e-6)
+    assert ratio(130) < 0.3 and ratio(175) > 1.5
+    # the configured edge light lies beyond it; the sweep reaches past it
+    assert B77["fig7"]["lights"]["edge"]["angle_deg"] > by_hand
+    assert max(B77["fig7_sweep"]["angles_deg"]) >= 175
 
 
 # --- Fig. 8 ---------------------------------------------------------------------------------------
