@@ -308,7 +308,8 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
                {"fig": fig, "pigments": pigments, "wavelengths": WAVELENGTHS,
                 "colour": CONFIG["colour"]},
                {k: str(v) for k, v in out.items()},
-               {"spectra": [str(spectra / f"{fig['material']}.csv")]
+               {"spectra": [str(spectra / f"{fig['material']}.csv"),
+                            str(spectra / f"{fig['metal_sphere']['material']}.csv")]
                 + [str(spectra / f"{s['diffuse_material']}.csv") for s in fig["spheres"]]})
     XYZ = read_exr(out["exr"])[0]
     total = XYZ.sum(-1, keepdims=True)
@@ -324,8 +325,8 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
 
     white = xy_of(np.ones(95))
     width = XYZ.shape[1]
-    for k, s in enumerate(fig["spheres"]):  # spheres from left to right, one per image half
-        half = slice(k * width // 2, (k + 1) * width // 2)
+    for k, s in zip((0, 2), fig["spheres"]):  # plastic spheres left and right, gold in the middle third
+        half = slice(k * width // 3, (k + 1) * width // 3)
         Y, c = XYZ[:, half, 1], xy[:, half]
         peak = np.unravel_index(np.argmax(Y), Y.shape)
         table = read_spectrum_csv(spectra / f"{s['diffuse_material']}.csv")
@@ -337,3 +338,15 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         # the body has the pigment's hue (angle around the white point)
         hue = np.arctan2(*(c[body] - white).mean(0)[::-1])
         assert np.degrees(abs(hue - np.arctan2(*(target - white)[::-1]))) < 8.0
+    # the gold sphere: its highlight has gold's colour (F0 from measured n, k, written out here),
+    # not the light's white (the article: "the color of the specular highlight will reflect the color
+    # of the material")
+    au = pd.read_csv(spectra / f"{fig['metal_sphere']['material']}.csv")
+    nm = np.arange(360, 835, 5)
+    n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
+    gold = xy_of(((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))
+    middle = slice(width // 3, 2 * width // 3)
+    Y, c = XYZ[:, middle, 1], xy[:, middle]
+    peak = np.unravel_index(np.argmax(Y), Y.shape)
+    assert np.linalg.norm(c[peak] - gold) < 0.35 * np.linalg.norm(gold - white)
+    assert np.linalg.norm(c[peak] - white) > 0.6 * np.linalg.norm(gold - white)

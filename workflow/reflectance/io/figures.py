@@ -47,7 +47,7 @@ STYLE = {
     "axes.spines.right": False,
     "axes.grid": False,
     "axes.axisbelow": True,
-    "axes.prop_cycle": matplotlib.cycler(color=list(OKABE_ITO)),
+    "axes.prop_cycle": matplotlib.cycler(color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7, 6)]),  # yellow last
     "axes.xmargin": 0.0,
     "grid.color": "0.9",
     "grid.linewidth": 0.6,
