@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
-__all__ = ["STYLE", "OKABE_ITO", "apply_style", "savefig", "new_figure", "off_screen_plotter",
+__all__ = ["STYLE", "OKABE_ITO", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
            "save_plotter"]
 
 OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
@@ -72,6 +72,25 @@ STYLE = {
     "savefig.pad_inches": 0.04,
 }
 """The project's matplotlib style (see the module docstring)."""
+
+
+def paper_name(name):
+    """A material's name as the papers print it: ``"LunarDust"`` -> ``"Lunar dust"``.
+
+    CamelCase words after the first are lower-cased; a name of capitals and digits (a chemical
+    symbol such as ``"Cu"`` or ``"MgO"``) is left as it is.
+
+    Examples
+    --------
+    >>> paper_name("OliveDrab"), paper_name("Cu"), paper_name("RustBody")
+    ('Olive drab', 'Cu', 'Rust body')
+    """
+    import re
+
+    words = re.findall(r"[A-Z][a-z]+|[A-Z]+(?![a-z])|[a-z]+|\d+", str(name))
+    if len(words) < 2 or not all(w[0].isupper() and w[1:].islower() for w in words):
+        return str(name)
+    return " ".join([words[0]] + [w.lower() for w in words[1:]])
 
 
 def apply_style():
