@@ -120,22 +120,38 @@ def test_fig5_6_numbers(tmp, fig):
         row = summary[summary.parameter_set == s["label"]].iloc[0]
         beta, c1 = beta_and_c1_by_hand(s["c3"])
         assert row.c1 == pytest.approx(c1, rel=1e-5)
-        # At the mirror direction H = N: Phong gives p_d cos + p_s; Torrance-Sparrow D = 1, G = 1.
-        assert row.phong_mirror == pytest.approx(s["p_d"] * np.cos(ti) + s["p_s"], rel=1e-5)
+        # F(0) of a dielectric with the 1/2: ((n - 1)/(n + 1))^2 (the sin/tan form's limit at phi = 0)
+        F0 = ((s["n"] - 1) / (s["n"] + 1)) ** 2
+        assert row.F0 == pytest.approx(F0, rel=1e-5)  # the CSV keeps 6 digits
+        assert fresnel_sin_tan(1e-4, s["n"]) == pytest.approx(F0, rel=1e-6)
+        # At the mirror direction H = N: Phong gives p_d cos + p_s (as printed) or + p_s F(0)
+        # (matched); Torrance-Sparrow D = 1, G = 1.
+        assert row.phong_as_printed_mirror == pytest.approx(s["p_d"] * np.cos(ti) + s["p_s"], rel=1e-5)
+        assert row.phong_matched_mirror == pytest.approx(s["p_d"] * np.cos(ti) + s["p_s"] * F0, rel=1e-5)
         ts_mirror = s["p_d"] * np.cos(ti) + s["p_s"] * fresnel_sin_tan(ti, s["n"]) / np.cos(ti)
         assert row.torrance_sparrow_mirror == pytest.approx(ts_mirror, rel=1e-5)
         # Whole curves, from the formulas written out, then the maxima printed on the figure.
         c = curves[curves.parameter_set == s["label"]]
         tr = np.radians(c.theta_r_deg.to_numpy())
         NL, NE, NH, EH = np.cos(ti), np.cos(tr), np.cos((ti - tr) / 2), np.cos((ti + tr) / 2)
-        phong = s["p_d"] * NL + s["p_s"] * NH**c1
+        hand = {"phong_as_printed": s["p_d"] * NL + s["p_s"] * NH**c1,
+                "phong_matched": s["p_d"] * NL + s["p_s"] * F0 * NH**c1}
         G = np.minimum(1, np.minimum(2 * NH * NE / EH, 2 * NH * NL / EH))
-        ts = s["p_d"] * NL + s["p_s"] * d3(NH, s["c3"]) * G * fresnel_sin_tan(np.arccos(EH), s["n"]) / NE
-        assert c.phong.to_numpy() == pytest.approx(phong, rel=2e-5)
-        assert c.torrance_sparrow.to_numpy() == pytest.approx(ts, rel=2e-5)
-        for key, hand in (("phong", phong), ("torrance_sparrow", ts)):
-            assert row[f"{key}_max"] == pytest.approx(hand.max(), rel=1e-5)
-            assert row[f"{key}_max_deg"] == pytest.approx(np.degrees(tr[np.argmax(hand)]), abs=1e-3)
+        hand["torrance_sparrow"] = (s["p_d"] * NL + s["p_s"] * d3(NH, s["c3"]) * G
+                                    * fresnel_sin_tan(np.arccos(EH), s["n"]) / NE)
+        for key, values in hand.items():
+            assert c[key].to_numpy() == pytest.approx(values, rel=2e-5)
+            assert row[f"{key}_max"] == pytest.approx(values.max(), rel=1e-5)
+            assert row[f"{key}_max_deg"] == pytest.approx(np.degrees(tr[np.argmax(values)]), abs=1e-3)
+        for reading in ("matched", "as_printed"):
+            assert row[f"peak_ratio_ts_to_{reading}"] == pytest.approx(
+                hand["torrance_sparrow"].max() / hand[f"phong_{reading}"].max(), rel=1e-5)
+    # Blinn: at 30 degrees "the functions are almost identical" -- true for MgO only with the matched
+    # p_s (peaks within 5 %); the as-printed Phong peak is 2.7 times the Torrance-Sparrow one.
+    if fig == "fig5":
+        mgo = summary[summary.n == 1.8].iloc[0]
+        assert abs(mgo.peak_ratio_ts_to_matched - 1) < 0.05
+        assert 1 / mgo.peak_ratio_ts_to_as_printed == pytest.approx(2.69, abs=0.02)
 
 
 def test_distribution_numbers(tmp):

@@ -184,12 +184,42 @@ def test_sweep_gif_frames_and_determinism(tmp_path):
     with Image.open(first["gif"]) as gif:
         assert gif.n_frames == sweep["n_frames"] and gif.info["loop"] == 0
         assert gif.info["duration"] == sweep["frame_ms"]
-        assert gif.size[0] == 2 * sweep["size"] + 4
+        assert gif.size[0] > 2 * sweep["size"]  # a label column, then Phong and Torrance-Sparrow
     table = pd.read_csv(first["csv"])
-    np.testing.assert_allclose(table.light_angle_deg, np.linspace(*sweep["angles_deg"], sweep["n_frames"]))
-    # front lit the models agree; toward the edge the Torrance-Sparrow highlight outgrows Phong's
-    assert table.max_abs_difference.iloc[0] < 0.05 < table.max_abs_difference.iloc[-1]
-    assert table.torrance_sparrow_max.iloc[-1] > 1.5 * table.phong_max.iloc[-1]
+    assert sorted(set(table.panel)) == sorted(sweep["panels"])
+    for panel in sweep["panels"]:
+        part = table[table.panel == panel]
+        np.testing.assert_allclose(part.light_angle_deg,
+                                   np.linspace(*sweep["angles_deg"], sweep["n_frames"]))
+        # front lit the models agree; toward the edge the Torrance-Sparrow highlight outgrows Phong's
+        assert part.max_abs_difference.iloc[0] < 0.1 < part.max_abs_difference.iloc[-2]
+        assert part.torrance_sparrow_max.iloc[-2] > 1.5 * part.phong_max.iloc[-2]
+        # the mirror-point highlight p_s F(c)/c, c = cos(angle/2), with Blinn's sin/tan Fresnel
+        q = B77["fig7"]["panels"][panel]
+        c = np.cos(np.radians(part.light_angle_deg.to_numpy()) / 2)
+        np.testing.assert_allclose(part.mirror_highlight, q["p_s"] * fresnel_sin_tan(np.arccos(c), q["n"]) / c,
+                                   rtol=1e-5)
+
+
+def test_mgo_passes_aluminium_only_near_grazing_light():
+    """Blinn: MgO "even more [specular] than the aluminum" edge lit: true beyond about 166.9 degrees."""
+    from scipy.optimize import brentq
+
+    from reflectance.papers.scenes import highlight_crossover_Blinn1977
+
+    a, b = B77["fig7"]["panels"]["a"], B77["fig7"]["panels"]["b"]
+
+    def ratio(angle):  # written out here: p_s F(c) / c at N = H, with Blinn's sin/tan Fresnel
+        c = np.cos(np.radians(angle) / 2)
+        return (b["p_s"] * fresnel_sin_tan(np.arccos(c), b["n"])) / (a["p_s"] * fresnel_sin_tan(np.arccos(c), a["n"]))
+
+    by_hand = brentq(lambda x: ratio(x) - 1, 100, 179)
+    assert 166 < by_hand < 168
+    assert highlight_crossover_Blinn1977(a, b) == pytest.approx(by_hand, abs=1e-6)
+    assert ratio(130) < 0.3 and ratio(175) > 1.5
+    # the configured edge light lies beyond it; the sweep reaches past it
+    assert B77["fig7"]["lights"]["edge"]["angle_deg"] > by_hand
+    assert max(B77["fig7_sweep"]["angles_deg"]) >= 175
 
 
 # --- Fig. 8 ---------------------------------------------------------------------------------------
@@ -243,8 +273,9 @@ def test_fig8_texture_modulates_the_highlight(fig8, part):
     np.testing.assert_allclose(ratio, expected, rtol=1e-6)
     peak, far = cos2 > np.cos(np.radians(5.0)) ** 2, cos2 < np.cos(np.radians(30.0)) ** 2
     assert peak.sum() > 20 and far.sum() > 20
-    assert ratio[peak].max() > 0.9 and ratio[peak].min() < 0.3  # shiny and dull in the highlight
-    assert ratio[far].max() > 5  # dull patches still reflect where the shiny lobe has fallen off
+    # shiny (ratio 1) and dull (down to C_min^2 where C3 = 1) patches both fall in the highlight
+    assert ratio[peak].max() > 0.9 and ratio[peak].min() < 0.5 * (1 + c_min**2)
+    assert ratio[far].max() > 2  # dull patches still reflect where the shiny lobe has fallen off
 
 
 def test_fig8_table_and_images(fig8):
@@ -277,7 +308,8 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
                {"fig": fig, "pigments": pigments, "wavelengths": WAVELENGTHS,
                 "colour": CONFIG["colour"]},
                {k: str(v) for k, v in out.items()},
-               {"spectra": [str(spectra / f"{fig['material']}.csv")]
+               {"spectra": [str(spectra / f"{fig['material']}.csv"),
+                            str(spectra / f"{fig['metal_sphere']['material']}.csv")]
                 + [str(spectra / f"{s['diffuse_material']}.csv") for s in fig["spheres"]]})
     XYZ = read_exr(out["exr"])[0]
     total = XYZ.sum(-1, keepdims=True)
@@ -293,8 +325,8 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
 
     white = xy_of(np.ones(95))
     width = XYZ.shape[1]
-    for k, s in enumerate(fig["spheres"]):  # spheres from left to right, one per image half
-        half = slice(k * width // 2, (k + 1) * width // 2)
+    for k, s in zip((0, 2), fig["spheres"]):  # plastic spheres left and right, gold in the middle third
+        half = slice(k * width // 3, (k + 1) * width // 3)
         Y, c = XYZ[:, half, 1], xy[:, half]
         peak = np.unravel_index(np.argmax(Y), Y.shape)
         table = read_spectrum_csv(spectra / f"{s['diffuse_material']}.csv")
@@ -306,6 +338,18 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         # the body has the pigment's hue (angle around the white point)
         hue = np.arctan2(*(c[body] - white).mean(0)[::-1])
         assert np.degrees(abs(hue - np.arctan2(*(target - white)[::-1]))) < 8.0
+    # the gold sphere: its highlight has gold's colour (F0 from measured n, k, written out here),
+    # not the light's white (the article: "the color of the specular highlight will reflect the color
+    # of the material")
+    au = pd.read_csv(spectra / f"{fig['metal_sphere']['material']}.csv")
+    nm = np.arange(360, 835, 5)
+    n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
+    gold = xy_of(((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))
+    middle = slice(width // 3, 2 * width // 3)
+    Y, c = XYZ[:, middle, 1], xy[:, middle]
+    peak = np.unravel_index(np.argmax(Y), Y.shape)
+    assert np.linalg.norm(c[peak] - gold) < 0.35 * np.linalg.norm(gold - white)
+    assert np.linalg.norm(c[peak] - white) > 0.6 * np.linalg.norm(gold - white)
 
 
 def test_config_check_builds_the_scenes_the_scripts_render(fig8):

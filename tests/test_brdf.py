@@ -433,5 +433,21 @@ def test_nan_inputs_do_not_raise():
 def test_registry_is_complete():
     assert set(BRDF_METHODS) == {
         "Lambert", "Phong1975", "BlinnPhong1977", "BlinnPhong_AkenineMoller2008", "TorranceSparrow_Blinn1977",
-        "CookTorrance1982", "Ward1992", "HeidrichSeidel1998",
+        "CookTorrance1982", "Ward1992", "HeidrichSeidel1998", "LommelSeeliger",
     }
+
+
+def test_lommel_seeliger_reciprocal_and_its_albedo():
+    """Lommel-Seeliger (Hapke 1981): f = w / (4 pi (mu0 + mu)); reciprocal; at normal incidence its
+    directional albedo is (w / 2)(1 - ln 2), written out from the integral of mu / (1 + mu)."""
+    from scipy.integrate import quad
+
+    from reflectance.optics.brdf import brdf_LommelSeeliger
+
+    rng = np.random.default_rng(7)
+    mu0, mu = rng.uniform(0.01, 1, 50), rng.uniform(0.01, 1, 50)
+    np.testing.assert_allclose(brdf_LommelSeeliger(mu0, mu, 0.7), brdf_LommelSeeliger(mu, mu0, 0.7))
+    np.testing.assert_allclose(brdf_LommelSeeliger(mu0, mu, 0.7), 0.7 / (4 * np.pi * (mu0 + mu)))
+    assert brdf_LommelSeeliger(-0.1, 0.5) == 0 and brdf_LommelSeeliger(0.5, -0.1) == 0
+    albedo = quad(lambda m: brdf_LommelSeeliger(1.0, m, 0.9) * m * 2 * np.pi, 0, 1)[0]
+    assert albedo == pytest.approx(0.45 * (1 - np.log(2)), rel=1e-9)

@@ -150,3 +150,75 @@ def test_table_columns_and_dE(copper, W):
 def test_bad_angles_are_refused(copper, W):
     with pytest.raises(ValueError, match="angles"):
         colour_table(copper, [0, 95], W)
+
+
+# --- Fig. 5c: why the approximation keeps copper's colour until near grazing ---------------------
+
+def _fresnel_sin_tan(theta, n):
+    """The unpolarised dielectric Fresnel reflectance, sin/tan form (Blinn 1977; C&T 1982 eq.)."""
+    theta = np.asarray(theta, dtype=float)
+    t = np.arcsin(np.sin(theta) / n)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        F = 0.5 * (np.sin(theta - t) ** 2 / np.sin(theta + t) ** 2
+                   + np.tan(theta - t) ** 2 / np.tan(theta + t) ** 2)
+    return np.where(theta == 0, ((n - 1) / (n + 1)) ** 2, F)
+
+
+def test_fig5c_onset_by_hand(root, tmp_path):
+    """Run the Fig. 5b/5c script; its onset numbers and strip against an independent recomputation."""
+    import runpy
+    from types import SimpleNamespace
+
+    import pandas as pd
+    import yaml
+    from scipy.optimize import brentq
+
+    config = yaml.safe_load((root / "config.yaml").read_text())
+    fig = config["figures"]["cook_torrance_1982"]["fig5"]
+    out = {k: str(tmp_path / f"{k}.{ext}") for k, ext in (
+        ("png", "png"), ("pdf", "pdf"), ("csv", "csv"), ("exr", "exr"), ("strip", "csv"),
+        ("approximation", "csv"))}
+    out["strip"], out["approximation"] = str(tmp_path / "strip.csv"), str(tmp_path / "approx.csv")
+    snakemake = SimpleNamespace(
+        params=SimpleNamespace(fig=fig, colour=config["colour"], wavelengths=config["wavelengths"]),
+        input=SimpleNamespace(spectrum=str(root / "spectra" / f"{fig['material']}.csv")),
+        output=SimpleNamespace(**out), log=[str(tmp_path / "log.txt")], rule="ct82_fig5bc")
+    runpy.run_path(str(root / "workflow" / "scripts" / "cook_torrance_1982_fig5bc.py"),
+                   init_globals={"snakemake": snakemake})
+    row = pd.read_csv(out["approximation"]).iloc[0]
+
+    # By hand: copper's normal reflectance from its n, k on the config grid, averaged over the range.
+    from reflectance.optics.spectra import wavelength_grid
+
+    grid = wavelength_grid(**config["wavelengths"])
+    cu = load_material(fig["material"], grid, spectra_dir=root / "spectra")
+    lo, hi = fig["average_F0_range_nm"]
+    inside = (grid >= lo) & (grid <= hi)
+    F0 = np.mean(((cu.n - 1) ** 2 + cu.k**2)[inside] / ((cu.n + 1) ** 2 + cu.k**2)[inside])
+    n = (1 + np.sqrt(F0)) / (1 - np.sqrt(F0))
+    assert row.F0_average == pytest.approx(F0, rel=1e-6)
+    assert row.n_average == pytest.approx(n, rel=1e-6)
+    excess = lambda deg: float(_fresnel_sin_tan(np.radians(deg), n)) - F0  # noqa: E731
+    angles = np.linspace(0, 89.999, 90000)
+    values = _fresnel_sin_tan(np.radians(angles), n) - F0
+    assert row.dip == pytest.approx(values.min(), abs=1e-6)
+    assert row.dip_deg == pytest.approx(angles[np.argmin(values)], abs=2e-3)
+    onset = brentq(excess, angles[np.argmin(values)], 89.99999)
+    assert row.onset_deg == pytest.approx(onset, abs=1e-6)
+    assert 89.0 < onset < 89.5  # the issue's "about 89.2 degrees"
+    half = brentq(lambda d: excess(d) / (1 - F0) - 0.5, onset, 89.99999)
+    assert row["t_0.5_deg"] == pytest.approx(half, abs=1e-6)
+
+    # The strip: (c) is exactly the 0-degree colour below the onset, and moves away above it.
+    strip = pd.read_csv(out["strip"])
+    c = strip[strip.method == "approximation"]
+    zero = c[c.angle_deg == 0][["X", "Y", "Z"]].to_numpy()[0]
+    below, above = c[c.angle_deg < onset - 1e-3], c[c.angle_deg > onset + 0.05]
+    assert len(below) > 300 and len(above) >= 50
+    np.testing.assert_allclose(below[["X", "Y", "Z"]].to_numpy(), np.broadcast_to(zero, (len(below), 3)),
+                               rtol=1e-5)
+    assert np.all(np.abs(above.Y.to_numpy() - zero[1]) > 1e-4)
+    # fine sampling from fine_from_deg to 90, proportional angles as written
+    fine = c[c.angle_deg >= fig["strip"]["fine_from_deg"]].angle_deg.to_numpy()
+    assert np.allclose(np.diff(fine), fig["strip"]["fine_step_deg"], atol=1e-5)
+    assert fine[-1] == 90

@@ -96,6 +96,7 @@ def test_captions_render_with_every_parameter(config):
     figs = {"lecture_brdf_lobes_2d": lecture["brdf_lobes"], "lecture_brdf_lobes_3d": lecture["brdf_lobes"],
             "lecture_fresnel": lecture["fresnel"], "lecture_shadowing_masking": lecture["shadowing_masking"],
             "lecture_shadowing_masking_table": lecture["shadowing_masking"],
+            "lecture_distributions": lecture["distributions"],
             "article_distributions": article["distributions"],
             "article_phong_example": article["phong_example"],
             "article_phong_example_table": article["phong_example"]}
@@ -104,6 +105,34 @@ def test_captions_render_with_every_parameter(config):
         template = jinja2.Template((REPORT / f"{name}.rst").read_text(), undefined=jinja2.StrictUndefined)
         text = template.render(snakemake=SimpleNamespace(params=params))
         assert f"workflow/scripts/{name.removesuffix('_table')}.py" in text
+
+
+# --- lecture: the slide's D's -------------------------------------------------------------------------
+
+def test_slide_distributions_against_closed_forms(config, tmp_path):
+    fig = config["figures"]["lecture"]["distributions"]
+    run_script("lecture_distributions", tmp_path, {"png": "d.png", "pdf": "d.pdf", "csv": "d.csv",
+                                                   "summary": "n.csv"}, fig=fig)
+    curves, table = pd.read_csv(tmp_path / "d.csv"), pd.read_csv(tmp_path / "n.csv")
+    a = np.radians(curves.alpha_deg.to_numpy())
+    fine = np.linspace(0, np.pi / 2, 200001)
+    for m in fig["m"]:
+        rows = table[table.m == m].set_index("form")
+        beckmann = np.exp(-(np.tan(a) / m) ** 2) / (m**2 * np.cos(a) ** 4)  # C&T 1982 as printed
+        np.testing.assert_allclose(curves[f"beckmann_slide_m{m:g}"], beckmann / 4, rtol=1e-5, atol=1e-12)
+        np.testing.assert_allclose(curves[f"gaussian_slide_m{m:g}"], np.exp(-(a * m) ** 2), rtol=1e-5)
+        np.testing.assert_allclose(curves[f"gaussian_correct_m{m:g}"], np.exp(-(a / m) ** 2), rtol=1e-5,
+                                   atol=1e-12)
+        # integral of D cos d omega: substituting t = tan^2 / m^2 gives pi for C&T's printing exactly,
+        # so 1 with 1/pi and pi/4 with the slide's 4
+        assert rows.loc["beckmann_normalised", "integral_D_cos_domega"] == pytest.approx(1.0, rel=1e-7)
+        assert rows.loc["beckmann_CookTorrance1982", "integral_D_cos_domega"] == pytest.approx(np.pi, rel=1e-7)
+        assert rows.loc["beckmann_slide", "integral_D_cos_domega"] == pytest.approx(np.pi / 4, rel=1e-7)
+        for form, D in (("gaussian_slide", np.exp(-(fine * m) ** 2)), ("gaussian_correct", np.exp(-(fine / m) ** 2))):
+            by_hand = np.trapezoid(D * np.cos(fine) * np.sin(fine) * 2 * np.pi, fine)
+            assert rows.loc[form, "integral_D_cos_domega"] == pytest.approx(by_hand, rel=1e-6)
+    # m in the numerator: the "nearly smooth" m = 0.2 keeps D above 0.9 out to the horizon
+    assert curves["gaussian_slide_m0.2"].min() > 0.9 > curves["gaussian_correct_m0.2"].iloc[300]
 
 
 # --- article: the worked Phong example ---------------------------------------------------------------

@@ -8,7 +8,8 @@ CT82_OUT = "results/cook_torrance_1982"
 TARGETS += [
     f"{CT82_OUT}/{name}"
     for name in ("fig4.png", "fig4.pdf", "fig4.csv", "fig5a.png", "fig5a.csv",
-                 "fig5bc.png", "fig5bc.pdf", "fig5bc.csv", "fig5bc.exr")
+                 "fig5bc.png", "fig5bc.pdf", "fig5bc.csv", "fig5bc.exr", "fig5bc_strip.csv",
+                 "fig5bc_approximation.csv")
 ]
 
 
@@ -62,6 +63,10 @@ rule ct82_fig5bc:
         csv=report(f"{CT82_OUT}/fig5bc.csv", caption="../report/ct82_fig5bc_table.rst",
                    category="Cook & Torrance 1982", subcategory="Fig. 5"),
         exr=f"{CT82_OUT}/fig5bc.exr",
+        strip=f"{CT82_OUT}/fig5bc_strip.csv",
+        approximation=report(f"{CT82_OUT}/fig5bc_approximation.csv",
+                             caption="../report/ct82_fig5bc_approximation.rst",
+                             category="Cook & Torrance 1982", subcategory="Fig. 5"),
     params:
         fig=CT82["fig5"],
         wavelengths=config["wavelengths"],

@@ -9,8 +9,24 @@ TARGETS += [
     for name in ("brdf_lobes_2d.png", "brdf_lobes_2d.pdf", "brdf_lobes_2d.csv", "brdf_lobes_3d.png",
                  "fresnel.png", "fresnel.pdf", "fresnel.csv",
                  "shadowing_masking.png", "shadowing_masking.pdf", "shadowing_masking_g1.csv",
-                 "shadowing_masking_by_slope.csv")
+                 "shadowing_masking_by_slope.csv", "distributions.png", "distributions.pdf",
+                 "distributions.csv", "distributions_normalisation.csv")
 ]
+
+
+rule lecture_distributions:
+    output:
+        png=report(f"{LECTURE_OUT}/distributions.png", caption="../report/lecture_distributions.rst",
+                   category="Lecture", subcategory="Microfacet distributions"),
+        pdf=f"{LECTURE_OUT}/distributions.pdf",
+        csv=f"{LECTURE_OUT}/distributions.csv",
+        summary=f"{LECTURE_OUT}/distributions_normalisation.csv",
+    params:
+        fig=LECTURE["distributions"],
+    log:
+        "logs/lecture/distributions.log",
+    script:
+        "../scripts/lecture_distributions.py"
 
 
 rule lecture_brdf_lobes_2d:

@@ -288,7 +288,8 @@ TARGETS += [f"{ARTICLE_SPHERES_OUT}/spheres.{ext}"
 
 rule article_spheres:
     input:
-        spectra=[spectrum_csv(ARTICLE_SPHERES["material"])]
+        spectra=[spectrum_csv(ARTICLE_SPHERES["material"]),
+                 spectrum_csv(ARTICLE_SPHERES["metal_sphere"]["material"])]
         + [spectrum_csv(s["diffuse_material"]) for s in ARTICLE_SPHERES["spheres"]],
     output:
         png=report(f"{ARTICLE_SPHERES_OUT}/spheres.png", caption="../report/article_spheres.rst",

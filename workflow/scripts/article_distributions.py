@@ -62,18 +62,20 @@ with script_log(snakemake) as log:
     theta_o = np.radians(np.arange(-90.0 + cfg["polar_step_deg"], 90.0 - 1e-9, cfg["polar_step_deg"]))
     L_dir, V_dir, _ = plane_of_incidence_vectors(np.radians(cfg["incidence_deg"]), theta_o)  # light at -x
 
-    fig = new_figure(14, 8.8)
-    grid = fig.add_gridspec(3, 4, height_ratios=[1, 1, 1.15], hspace=0.42, wspace=0.05, top=0.9,
-                            bottom=0.07, left=0.05, right=0.98)
+    fig = new_figure(12, 10.2)
+    grid = fig.add_gridspec(3, 4, height_ratios=[1, 1, 0.72], hspace=0.3, wspace=0.04, top=0.92,
+                            bottom=0.06, left=0.01, right=0.99)
     curves = {"theta_o_deg": np.degrees(theta_o)}
-    line_ax = fig.add_subplot(grid[2, :])
+    line_ax = fig.add_subplot(grid[2, :3])
     for i, (key, q) in enumerate(cfg["models"].items()):
         image = k_spec(key, q, L_img, V_img, N)
         ax = fig.add_subplot(grid[i // 4, i % 4])
         ax.imshow(image / image.max(), origin="lower", extent=(-a, a, -a, a), cmap="inferno",
                   vmin=0, vmax=1, interpolation="nearest")
-        params = ", ".join(f"{k} = {v}" for k, v in q.items())
-        ax.set_title(f"{TITLES[key]}\n{params}\nmax k$_{{spec}}$ = {image.max():.3g}", fontsize=8)
+        items = [f"{k} = {v}" for k, v in q.items()]
+        half = (len(items) + 1) // 2 if len(", ".join(items)) > 34 else len(items)
+        params = ", ".join(items[:half]) + ("\n" + ", ".join(items[half:]) if items[half:] else "")
+        ax.set_title(f"{TITLES[key]}\n{params}\nmax k$_{{spec}}$ = {image.max():.3g}", fontsize=8.5, pad=3)
         ax.set_xticks([])
         ax.set_yticks([])
         curves[key] = k_spec(key, q, L_dir, V_dir, N)
@@ -83,12 +85,12 @@ with script_log(snakemake) as log:
                  curves[key].max(), np.degrees(theta_o[np.argmax(curves[key])]))
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     line_ax.axvline(cfg["incidence_deg"], color="0.5", ls="--", lw=1)
-    line_ax.set(xlim=(-90, 90), xticks=np.arange(-90, 91, 15), ylim=(0, 1.05),
-                xlabel="viewing direction in the plane of incidence \u03b8o (degrees; light at "
-                       f"-{cfg['incidence_deg']:g}\u00b0, dashed: mirror direction)",
+    line_ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 15), ylim=(0, 1.05),
+                xlabel="viewing direction in the plane of incidence \u03b8o, mirror side (\u00b0; light at "
+                       f"\u2212{cfg['incidence_deg']:g}\u00b0, dashed: mirror direction)",
                 ylabel="k$_{spec}$ / its maximum")
-    line_ax.legend(ncol=4, fontsize=8, frameon=False, loc="upper left")
-    line_ax.grid(alpha=0.3)
+    line_ax.legend(ncol=1, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.02))
+    line_ax.grid(True)
     fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: the article's k$_{spec}$ as printed, on a plane "
                  f"z = 0 lit from {cfg['light_position']} and seen from {cfg['eye_position']} "
                  "(each image scaled to its maximum)", fontsize=11)

@@ -28,6 +28,13 @@ with script_log(snakemake) as log:
                              "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
                              "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
                for s in cfg["spheres"]]
+    metal = cfg["metal_sphere"]  # the article: "on metallic materials such as gold ..."
+    objects.append({"name": metal["name"], "geometry": {"type": "sphere", "center": metal["center"],
+                                                        "radius": metal["radius"]},
+                    "material": {"name": metal["material"], "model": "CookTorrance1982",
+                                 "distribution": cfg["distribution"], "convention": cfg["convention"],
+                                 "m": metal["m"], "s": 1.0, "d": 0.0, "fresnel": "exact",
+                                 "shadowing": "v-cavity"}})
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
                                                    "normal": [0, 0, 1], "size": [16, 16],
                                                    "resolution": [32, 32]},
@@ -40,7 +47,7 @@ with script_log(snakemake) as log:
                          display=display_from_colour(colour, illuminant=False))
     scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
     result = render_to_files(scene, out.scene, out.exr, out.render)
-    image, scale = display_image(result)
+    image, scale = display_image(result)  # Cook & Torrance exposure over all three spheres
     log.info("timings %s; exposure scale %.6g", result.timings, scale)
 
     W = tristimulus_weights(grid, cfg["light"]["spectrum"], colour["observer"])
@@ -55,6 +62,12 @@ with script_log(snakemake) as log:
                      "albedo_Y": Y, "albedo_x": X / (X + Y + Z), "albedo_y": Y / (X + Y + Z),
                      "clear_coat": cfg["material"], "clear_coat_F0_Y": F0_Y, "m": cfg["m"],
                      "s": cfg["s"], "d": cfg["d"], "exposure_scale": scale})
+    F0 = load_material(metal["material"], grid, folder).F0
+    X, Y, Z = F0 @ W
+    rows.append({"sphere": metal["name"], "munsell": "", "recovery": "", "albedo_Y": 0.0,
+                 "albedo_x": float("nan"), "albedo_y": float("nan"), "clear_coat": metal["material"],
+                 "clear_coat_F0_Y": Y / W[:, 1].sum(), "F0_x": X / (X + Y + Z), "F0_y": Y / (X + Y + Z),
+                 "m": metal["m"], "s": 1.0, "d": 0.0, "exposure_scale": scale})
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     h, wd = (n / 100 for n in image.shape[:2])
@@ -65,7 +78,8 @@ with script_log(snakemake) as log:
     names = ", ".join(pigments[s["diffuse_material"]]["notation"] for s in cfg["spheres"])
     fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: specular highlights on a pair of spheres\n"
                  f"the article's Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}\n"
-                 f"clear coat F of {cfg['material']} over pigments Munsell {names}", fontsize=9,
+                 f"clear coat F of {cfg['material']} over pigments Munsell {names}; middle: "
+                 f"{metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0)", fontsize=10,
                  y=1 - 0.05 / (h + 0.95),
                  va="top")
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tight=False)

@@ -13,6 +13,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20, 50]  # colour bands of the heat map (CIEDE2000)
 
@@ -31,13 +32,13 @@ with script_log(snakemake) as log:
                          "method": np.tile(np.repeat(methods, angles.size), len(metals)),
                          "angle_deg": np.tile(angles, len(metals) * len(methods)),
                          "dE2000_vs_exact": dE.ravel()})
-    long.to_csv(snakemake.output.table, index=False, float_format="%.6g", lineterminator="\n")
+    long.pipe(write_csv, snakemake.output.table, float_format="%.6g")
     first = pd.DataFrame([{"material": name, "method": method,
                            **{f"first_deg_above_{level:g}": first_angle_above(
                                angles, dE[i, j], level) for level in levels},
                            "max_dE2000": dE[i, j].max()}
                           for i, name in enumerate(metals) for j, method in enumerate(methods)])
-    first.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    first.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(11.0, 6.4)
     axes = fig.subplots(2, 3, sharex=True, sharey=True,

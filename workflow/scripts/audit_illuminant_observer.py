@@ -14,6 +14,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20]  # colour bands of the heat map (CIEDE2000)
 
@@ -47,7 +48,7 @@ with script_log(snakemake) as log:
             rows += [{"material": name, "kind": material.kind, "angle_deg": a, "change": label,
                       "dE2000": d} for a, d in zip(cfg["angles_deg"], dE)]
     table = pd.DataFrame(rows)
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     changes = list(dict.fromkeys(table.change))
     at0 = table[table.angle_deg == cfg["angles_deg"][0]]

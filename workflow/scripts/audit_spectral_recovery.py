@@ -13,6 +13,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.spectra import material_from_table, reflectance_from_munsell, wavelength_grid
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg, entries, obs = snakemake.params.audit, snakemake.params.entries, \
@@ -39,7 +40,7 @@ with script_log(snakemake) as log:
                           "L": l[0], "a": l[1], "b": l[2], "dE2000_vs_own": d}
                          for a, l, d in zip(cfg["angles_deg"], lab[method], dE)]
     table = pd.DataFrame(rows)
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(9.0, 3.0)
     axes = fig.subplots(1, len(spectra), sharey=True,

@@ -16,6 +16,7 @@ from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.fresnel import fresnel_conductor
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20, 50]  # colour bands of the heat map (CIEDE2000)
 
@@ -58,7 +59,7 @@ with script_log(snakemake) as log:
     rows += [{"material": light, "angle_deg": a, "sampling": three, "dE2000_vs_1nm": 0.0}
              for a in cfg["angles_deg"]]
     table = pd.DataFrame(rows)
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     samplings = list(dict.fromkeys(table.sampling))
     worst = table.groupby(["material", "sampling"], sort=False).dE2000_vs_1nm.max().unstack()

@@ -10,6 +10,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.brdf import directional_albedo
 from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.audit
@@ -26,7 +27,7 @@ with script_log(snakemake) as log:
                          "albedo_physical": albedo["physical"],
                          "ratio": albedo["paper"] / albedo["physical"]})
     table = pd.DataFrame(rows)
-    table.to_csv(snakemake.output.csv, index=False, float_format="%.6g", lineterminator="\n")
+    table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     fig = new_figure(6.4, 4.2)
     ax = fig.add_axes((0.12, 0.13, 0.6, 0.78))

@@ -1,6 +1,7 @@
 """Blinn 1977, Fig. 7 as the movie Blinn says shows the differences best: the light swept from the
-eye (front lit) to behind the object (edge lit), Phong and Torrance-Sparrow side by side; an
-animated GIF (grey, i = 1 is white), a contact sheet of a few frames and a table per frame.
+eye (front lit) to behind the object (edge lit), Phong and Torrance-Sparrow side by side, one row
+per material (aluminium, MgO); an animated GIF (grey, i = 1 is white), a contact sheet of a few
+frames and a table per frame and material, with the mirror-point highlights and their ratio.
 Visibility is traced once; the shadows of every frame's light in one pass."""
 
 import dataclasses
@@ -13,7 +14,9 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import RenderResult, display_image, shade_samples
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977
+from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
+                                       materials_Blinn1977, mirror_highlight_Blinn1977,
+                                       sweep_camera_Blinn1977)
 from reflectance.scripting import script_log
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
@@ -23,46 +26,65 @@ MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 
 with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.sweep, snakemake.params.fig7, snakemake.output
-    p = fig7["panels"][cfg["panel"]]
-    m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], cfg["phong_specular"])
-    cam = dict(fig7["camera"])
-    cam.update(width=cfg["size"], height=round(cfg["size"] * cam["height"] / cam["width"]),
-               supersample=cfg["supersample"])
+    panels = [fig7["panels"][key] for key in cfg["panels"]]
+    cam = sweep_camera_Blinn1977(fig7, cfg)
     angles = np.linspace(*cfg["angles_deg"], cfg["n_frames"])
     lights = [{"angle_deg": a, "azimuth_deg": cfg["azimuth_deg"]} for a in angles]
-    scenes = {model: scene_from_dict(
-        blinn_scene_Blinn1977(fig7, m[model], lights, snakemake.params.wavelengths, cam),
-        source=f"figures.blinn_1977.fig7_sweep ({model})") for model in MODELS}
-    first = scenes["phong"]
+    scenes = {}
+    for key, p in zip(cfg["panels"], panels):
+        m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], cfg["phong_specular"])
+        for model in MODELS:
+            scenes[key, model] = scene_from_dict(
+                blinn_scene_Blinn1977(fig7, m[model], lights, snakemake.params.wavelengths, cam),
+                source=f"figures.blinn_1977.fig7_sweep (panel {key}, {model})")
+    first = next(iter(scenes.values()))
     samples = visibility(first.mesh, first.camera)  # the same object and camera in every frame
     shadowed = shadow_masks(samples, first.mesh, [light.source for light in first.lights])
-    font = ImageFont.load_default(size=12)
-    frames, rows, sheet = [], [], []
+    crossover = (highlight_crossover_Blinn1977(fig7["panels"]["a"], fig7["panels"]["b"])
+                 if len(panels) == 2 else None)
+    font = ImageFont.load_default(size=13)
+    frames, rows = [], []
+    h, w = cam["height"], cam["width"]
+    label_w, head, foot, gap = 96, 20, 22, 4
     for f, angle in enumerate(angles):
-        shown, Y = [], {}
-        for model, scene in scenes.items():
-            one = dataclasses.replace(scene, lights=(scene.lights[f],))
-            XYZ = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))
-            rgb = display_image(RenderResult(XYZ, None, {}, {}, one))[0]
-            shown.append(np.round(255 * rgb[..., 1]).astype(np.uint8))  # grey: R = G = B
-            Y[model] = XYZ[..., 1]
-        diff, lit = np.abs(Y["phong"] - Y["torrance_sparrow"]), Y["phong"] > 0
-        rows.append({"frame": f, "light_angle_deg": angle, "phong_max": Y["phong"].max(),
-                     "torrance_sparrow_max": Y["torrance_sparrow"].max(),
-                     "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean()})
-        h, w = shown[0].shape
-        canvas = Image.new("L", (2 * w + 4, h + 36), 0)
-        for k, (image, name) in enumerate(zip(shown, MODELS.values())):
-            canvas.paste(Image.fromarray(image), (k * (w + 4), 18))
-            ImageDraw.Draw(canvas).text((k * (w + 4) + w / 2, 2), name, fill=255, font=font,
-                                        anchor="ma")
-        ImageDraw.Draw(canvas).text((w + 2, h + 20), f"light {angle:5.1f}\u00b0 from the eye",
-                                    fill=200, font=font, anchor="ma")
+        canvas = Image.new("L", (label_w + 2 * w + gap, head + len(panels) * (h + gap) + foot), 0)
+        draw = ImageDraw.Draw(canvas)
+        for k, name in enumerate(MODELS.values()):
+            draw.text((label_w + k * (w + gap) + w / 2, 3), name, fill=255, font=font, anchor="ma")
+        for r, (key, p) in enumerate(zip(cfg["panels"], panels)):
+            Y = {}
+            for k, model in enumerate(MODELS):
+                scene = scenes[key, model]
+                one = dataclasses.replace(scene, lights=(scene.lights[f],))
+                XYZ = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))
+                rgb = display_image(RenderResult(XYZ, None, {}, {}, one))[0]
+                image = np.round(255 * rgb[..., 1]).astype(np.uint8)  # grey: R = G = B
+                canvas.paste(Image.fromarray(image), (label_w + k * (w + gap), head + r * (h + gap)))
+                Y[model] = XYZ[..., 1]
+            draw.text((label_w - 6, head + r * (h + gap) + h / 2), p["label"].replace(" ", "\n", 1),
+                      fill=255, font=font, anchor="rm", align="right")
+            diff, lit = np.abs(Y["phong"] - Y["torrance_sparrow"]), Y["phong"] > 0
+            rows.append({"frame": f, "panel": key, "label": p["label"], "light_angle_deg": angle,
+                         "phong_max": Y["phong"].max(),
+                         "torrance_sparrow_max": Y["torrance_sparrow"].max(),
+                         "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean(),
+                         # Blinn's p_s D3 G F / (N.E) where N = H (D3 = G = 1): the brightest highlight
+                         "mirror_highlight": float(mirror_highlight_Blinn1977(p["p_s"], p["n"], angle))})
+        bright = "" if crossover is None else (
+            "  MgO highlight > aluminium's" if angle > crossover else "")
+        draw.text((label_w + w + gap / 2, canvas.size[1] - 3),
+                  f"light {angle:5.1f}\u00b0 from the eye{bright}", fill=230, font=font, anchor="md")
         frames.append(canvas)
     with atomic_write(out.gif) as tmp:
         frames[0].save(tmp, format="GIF", save_all=True, append_images=frames[1:],
                        duration=cfg["frame_ms"], loop=0, optimize=False)
     table = pd.DataFrame(rows)
+    if crossover is not None:  # the MgO/aluminium ratio of the mirror-point highlights
+        ratio = (table[table.panel == "b"].mirror_highlight.to_numpy()
+                 / table[table.panel == "a"].mirror_highlight.to_numpy())
+        table["mirror_highlight_ratio_b_to_a"] = np.repeat(ratio, len(panels))
+        table["crossover_deg"] = crossover
+        log.info("MgO/aluminium mirror highlights cross at %.4f degrees from the eye", crossover)
     table.pipe(write_csv, out.csv, float_format="%.6g")
     log.info("%d frames of %s; %s", len(frames), frames[0].size, table.to_string())
 
@@ -76,7 +98,8 @@ with script_log(snakemake) as log:
         ax = fig.add_axes((x / W, y / H, w / W, h / H))
         ax.imshow(np.asarray(frames[f]), cmap="gray", vmin=0, vmax=255, interpolation="nearest")
         ax.set_axis_off()
-    fig.suptitle(f"Blinn 1977, Fig. 7 as a movie: {p['label']} (p_s = {p['p_s']:g}, p_d = {p['p_d']:g}, "
-                 f"n = {p['n']:g}, c3 = {p['c3']:g}; Phong p_s {cfg['phong_specular'].replace('_', ' ')}), "
-                 f"frames {', '.join(str(f) for f in picks)}", fontsize=9.5, y=1 - 0.08 / H, va="top", color="white")
-    savefig(fig, out.contact, dpi=100)
+    cross = "" if crossover is None else (f"; MgO's highlight passes aluminium's beyond "
+                                          f"{crossover:.1f}\u00b0")
+    fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')}"
+                 f"{cross})", fontsize=10, y=1 - 0.08 / H, va="top", color="white")
+    savefig(fig, out.contact, dpi=100, tight=False)

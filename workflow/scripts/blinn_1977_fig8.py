@@ -58,7 +58,7 @@ with script_log(snakemake) as log:
         ax.set_title(f"({part}) {pattern['method']}: " + ", ".join(
             f"{key} {value:g}" for key, value in pattern["parameters"].items()), fontsize=9, pad=3)
         ax = fig.add_axes((x / W, 0.4 / H, w / W, mh / H))
-        ax.imshow(maps[part], cmap="gray", vmin=0, vmax=1, origin="lower", extent=(0, 1, 0, 1),
+        ax.imshow(maps[part], cmap="gray", vmin=cfg["c_min"], vmax=1, origin="lower", extent=(0, 1, 0, 1),
                   aspect="auto", interpolation="antialiased")
         ax.set_xlabel("u (around the ring)", fontsize=8, labelpad=1)
         ax.set_ylabel("v (tube)", fontsize=8, labelpad=1)
@@ -69,4 +69,4 @@ with script_log(snakemake) as log:
                  f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
                  f"i = 1 is white", fontsize=9.5, y=1 - 0.05 / H, va="top")
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tight=False)

@@ -43,32 +43,35 @@ with script_log(snakemake) as log:
     pl = off_screen_plotter(1400, 1100)
     pl.set_background("white")
     pl.enable_anti_aliasing("ssaa")
-    pl.add_mesh(pv.Plane(i_size=2.4, j_size=1.6, i_resolution=12, j_resolution=8),
+    pl.add_mesh(pv.Plane(i_size=2.2, j_size=1.5, i_resolution=11, j_resolution=8),
                 color="#e4dfd3", show_edges=True, edge_color="#c9c2b2")
+    # N shorter than the theta arc from V to H, so that the arc passes over N's tip, not across it
+    length = {"N": 0.8, "L": 1.15, "V": 1.15, "H": 1.15}
     for name, v in vectors.items():
         pl.add_mesh(pv.Arrow(start=(0, 0, 0), direction=v, tip_length=0.12, tip_radius=0.035,
-                             shaft_radius=0.012, scale=1.0), color=COLOURS[name])
-    labels = {name: 1.1 * v for name, v in vectors.items()}
+                             shaft_radius=0.012, scale=length[name]), color=COLOURS[name])
+    labels = {name: (length[name] + 0.1) * v for name, v in vectors.items()}
     # (from, to, radius, where along the arc the label sits)
-    for text, (a, b, r, at) in {"\u03b1": (N, H, 0.38, 0.5), "\u03b8": (V, H, 0.62, 0.25),
+    for text, (a, b, r, at) in {"\u03b1": (N, H, 0.38, 0.5), "\u03b8": (V, H, 0.97, 0.5),
                                 "\u03b8 ": (L, H, 0.82, 0.5)}.items():
         points = arc(a, b, r)
         pl.add_mesh(pv.lines_from_points(points).tube(radius=0.006), color="#262626")
         mid = points[int(at * (len(points) - 1))]
         labels[text] = mid + 0.09 * mid / np.linalg.norm(mid)
     labels["P"] = np.array([0.05, -0.12, 0.0])
+    labels["N"] = np.array([0.1, 0.0, 0.72])  # beside its tip, clear of the theta arc above it
     for text, p in labels.items():
         colour = COLOURS.get(text, "black")
         pl.add_point_labels(p[None, :], [text.strip()], font_size=34, font_file=FONT,
                             text_color=colour, bold=False, show_points=False, shape=None,
                             always_visible=True, justification_horizontal="center",
                             justification_vertical="center")
-    pl.add_text("Cook & Torrance 1982, Fig. 2: the geometry of reflection\n"
+    pl.add_text("Cook & Torrance 1982, Fig. 2 \u2014 the geometry of reflection\n"
                 f"\u03b1 = {angles['alpha_deg']:.1f}\u00b0 (N to H),  "
                 f"\u03b8 = {angles['theta_deg']:.1f}\u00b0 (V to H = L to H)",
                 font_size=14, color="black", position="upper_left", font_file=FONT)
     pl.camera_position = [(-0.8, -5.0, 2.1), (0.0, 0.0, 0.45), (0.0, 0.0, 1.0)]
-    pl.camera.zoom(1.45)
+    pl.camera.zoom(1.2)
     save_plotter(pl, snakemake.output.png)
     log.info("L = %s, V = %s, H = %s; %s", L.round(4), V.round(4), H.round(4),
              {k: round(v, 3) for k, v in angles.items()})

@@ -39,13 +39,13 @@ with script_log(snakemake) as log:
         H = direction_from_angles(A, P)  # facet normals over the hemisphere
         surface = pv.StructuredGrid(*(radius * H[..., j] for j in range(3)))
         surface["D"] = np.broadcast_to(D[:, None], A.shape).ravel(order="F")  # VTK point order
-        pl.add_mesh(pv.Disc(inner=0, outer=1.0, c_res=96), color="#e4dfd3")
+        pl.add_mesh(pv.Disc(inner=0, outer=0.8, c_res=96), color="#e4dfd3")
         pl.add_mesh(pv.Line((0, 0, 0), (0, 0, 1.15)), color="black", line_width=2)
         pl.add_mesh(surface, scalars="D", cmap="viridis", smooth_shading=True, clim=(0, 1 / m**2),
                     scalar_bar_args={"title": f"D ({letter})", "n_labels": 3, "fmt": "%.3g",
                                      "color": "black", "vertical": True,
-                                     "position_x": 0.86, "position_y": 0.2, "height": 0.6,
-                                     "width": 0.06, "font_family": "arial"})
+                                     "position_x": 0.9, "position_y": 0.15, "height": 0.6,
+                                     "width": 0.04, "font_family": "arial"})
         # Projected-area integral 2 pi int D cos(alpha) sin(alpha) d alpha (pi for Beckmann, paper).
         integral = 2 * np.pi * simpson(D * np.cos(alpha) * np.sin(alpha), x=alpha)
         constant = "" if model == "Beckmann" else (
@@ -53,7 +53,7 @@ with script_log(snakemake) as log:
         pl.add_text(f"({letter}) {model}, m = {m:g}{constant}\nD(0) = {D[0]:.4g},  "
                     f"\u222b D cos\u03b1 d\u03c9 = {integral:.4g}", font_size=12,
                     color="black", position="upper_left", font_file=FONT)
-        pl.camera_position = [(0.0, -3.6, 1.5), (0.0, 0.0, 0.35), (0.0, 0.0, 1.0)]
+        pl.camera_position = [(0.0, -2.9, 2.5), (0.0, 0.0, 0.38), (0.0, 0.0, 1.0)]  # from 36 degrees above the disc
         log.info("(%s) %s m=%g c=%g: D(0)=%.6g, projected-area integral %.6g",
                  letter, model, m, c, D[0], integral)
     save_plotter(pl, snakemake.output.png)

@@ -1,14 +1,12 @@
 """Cook & Torrance 1982, Fig. 5a: a copper mirror's reflectance as a function of wavelength and
-incidence angle, from the exact complex-index Fresnel equation, as a 3-D surface (pyvista)."""
+incidence angle, from the exact complex-index Fresnel equation, as a 3-D surface (matplotlib)."""
 
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import pyvista as pv
-
 from reflectance.optics.fresnel import fresnel_conductor
-from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.io.tables import write_csv
@@ -28,24 +26,30 @@ with script_log(snakemake) as log:
         "F": F.ravel(),
     }).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    # Plot in unit box coordinates; the axes are labelled with the physical ranges.
-    x, y = np.meshgrid((grid - grid[0]) / np.ptp(grid), angles / 90.0)
-    surface = pv.StructuredGrid(x, y, F)
-    surface["reflectance"] = F.ravel(order="F")
-    pl = off_screen_plotter(1200, 900)
-    pl.set_background("white")
-    pl.add_mesh(surface, scalars="reflectance", cmap="copper", clim=(0, 1), smooth_shading=True,
-                show_scalar_bar=False)
-    pl.show_bounds(bounds=(0, 1, 0, 1, 0, 1),
-                   axes_ranges=(grid[0] / 1000, grid[-1] / 1000, 0, 90, 0, 1),
-                   xtitle="wavelength (um)", ytitle="incidence angle (deg)",
-                   ztitle="reflectance F", font_size=12, color="black", location="outer",
-                   n_xlabels=5, n_ylabels=4, n_zlabels=3, fmt="%.2f")
-    pl.add_text(f"Cook & Torrance 1982, Fig. 5a: {material.name} mirror, exact Fresnel (n, k)",
-                font_size=12, color="black", position="upper_left")
-    pl.view_vector((0.55, -1.4, 0.95), viewup=(0, 0, 1))
-    pl.reset_camera()
-    pl.camera.zoom(0.9)
-    save_plotter(pl, snakemake.output.png)
+    # A 3-D surface as the paper draws it, with matplotlib's 3-D axes (round ticks in micrometres and
+    # degrees; the project's style); the angle axis runs towards the viewer as in the paper's figure.
+    from matplotlib import cm, colors
+
+    lam_um = grid / 1000.0
+    X, Y = np.meshgrid(lam_um, angles)
+    fig = new_figure(6.4, 5.0)
+    ax = fig.add_subplot(projection="3d", computed_zorder=False)
+    shade = cm.copper(colors.Normalize(0.3, 1.0)(F))
+    ax.plot_surface(X, Y, F, facecolors=shade, rstride=2, cstride=2, linewidth=0.15,
+                    edgecolor=(0, 0, 0, 0.15), antialiased=True, shade=False)
+    ax.set(xlim=(0.35, 0.85), ylim=(0, 90), zlim=(0, 1), xticks=[0.4, 0.5, 0.6, 0.7, 0.8],
+           yticks=[0, 30, 60, 90], zticks=[0, 0.5, 1.0])
+    ax.set_xlabel("wavelength (\u00b5m)", labelpad=6)
+    ax.set_ylabel("incidence angle \u03b8 (\u00b0)", labelpad=6)
+    ax.set_zlabel("reflectance F", labelpad=4)
+    ax.view_init(elev=24, azim=-58)
+    ax.set_box_aspect((1.25, 1.0, 0.75), zoom=0.92)
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.pane.set_facecolor((1, 1, 1, 0))
+        axis.pane.set_edgecolor("0.7")
+        axis._axinfo["grid"].update(color="0.88", linewidth=0.6)
+    ax.set_title(f"Cook & Torrance 1982, Fig. 5a \u2014 reflectance of a {material.name} mirror "
+                 f"(exact Fresnel, measured n, k)", pad=0)
+    savefig(fig, snakemake.output.png)
     log.info("F range %.4f .. %.4f over %d angles x %d wavelengths",
              F.min(), F.max(), angles.size, grid.size)

@@ -1,14 +1,18 @@
 """Cook & Torrance 1982, Fig. 5b and 5c: the colour of copper vs incidence angle, (b) from the exact
 spectral Fresnel equation and (c) from the paper's approximation; further rows from other Fresnel
-shortcuts, each with its CIEDE2000 difference from (b)."""
+shortcuts, each with its CIEDE2000 difference from (b). Beside the swatches, continuous strips on a
+proportional angle axis (0-90 degrees, and 80-90 degrees finely sampled), and the numbers of why the
+approximation keeps copper's colour until near grazing."""
 
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 from matplotlib.patches import Rectangle
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.audit.colour_shift import COLOUR_METHODS, colour_table
+from reflectance.audit.colour_shift import (COLOUR_METHODS, approximation_onset_CookTorrance1982,
+                                            colour_table)
 from reflectance.io.images import write_exr_XYZ
 from reflectance.io.figures import new_figure, savefig
 from reflectance.scripting import script_log
@@ -25,11 +29,24 @@ with script_log(snakemake) as log:
                              spectra_dir=Path(snakemake.input.spectrum).parent)
     W = tristimulus_weights(grid, colour_cfg["illuminant"], colour_cfg["observer"])
     rows, angles = fig_cfg["rows"], np.asarray(fig_cfg["angles_deg"], dtype=float)
-    table = colour_table(material, angles, W, methods=rows, space=colour_cfg["space"],
-                         clip=colour_cfg["gamut_clip"], illuminant=colour_cfg["illuminant"],
-                         average_range_nm=fig_cfg["average_F0_range_nm"],
-                         observer=colour_cfg["observer"])
+    options = dict(methods=rows, space=colour_cfg["space"], clip=colour_cfg["gamut_clip"],
+                   illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
+                   average_range_nm=fig_cfg["average_F0_range_nm"])
+    table = colour_table(material, angles, W, **options)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    # The strips: with 90 degrees among the angles the light's white sets the exposure, as above.
+    st = fig_cfg["strip"]
+    fine = np.arange(st["fine_from_deg"], 90.0 + st["fine_step_deg"] / 2, st["fine_step_deg"])
+    strip_angles = np.unique(np.round(np.concatenate(
+        [np.arange(0.0, st["fine_from_deg"], st["step_deg"]), fine, [90.0]]), 9))
+    strip = colour_table(material, strip_angles, W, **options)
+    strip.pipe(write_csv, snakemake.output.strip, float_format="%.6g")
+    onset = approximation_onset_CookTorrance1982(material, fig_cfg["average_F0_range_nm"],
+                                                 fractions=(0.1, 0.5))
+    pd.DataFrame([{"material": material.name, "average_F0_range_nm":
+                   "-".join(f"{x:g}" for x in fig_cfg["average_F0_range_nm"]), **onset}]).pipe(
+        write_csv, snakemake.output.approximation, float_format="%.8g")
+    log.info("approximation: %s", onset)
 
     # Linear XYZ of the swatch grid (one 16 x 16 block per swatch) for the archive.
     XYZ = table[["X", "Y", "Z"]].to_numpy().reshape(len(rows), len(angles), 3)
@@ -39,28 +56,51 @@ with script_log(snakemake) as log:
         "rows": ",".join(rows), "angles_deg": ",".join(f"{a:g}" for a in angles),
         "illuminant": colour_cfg["illuminant"], "observer": colour_cfg["observer"]})
 
-    fig = new_figure(1.0 + 0.75 * len(angles), 0.9 + 0.95 * len(rows))
-    ax = fig.add_axes((0.2, 0.12, 0.78, 0.72), facecolor="black")  # white swatches stay visible
+    fig = new_figure(11.0, 1.2 + 0.42 * len(rows))
+    grid_spec = fig.add_gridspec(1, 3, width_ratios=[len(angles) * 0.5, 3.0, 3.0], wspace=0.08)
+    ax = fig.add_subplot(grid_spec[0], facecolor="black")  # white swatches stay visible
     for i, method in enumerate(rows):
         part = table[table.method == method]
         for j, (_, r) in enumerate(part.iterrows()):
             y = len(rows) - 1 - i
-            ax.add_patch(Rectangle(
-                (j + 0.05, y + 0.28), 0.9, 0.68, color=(r.R, r.G, r.B)))
+            ax.add_patch(Rectangle((j + 0.04, y + 0.34), 0.92, 0.62, color=(r.R, r.G, r.B)))
             if method != "exact":
-                ax.text(j + 0.5, y + 0.12, f"{r.dE2000_vs_exact:.2f}", ha="center",
-                        va="center", fontsize=7, color="white")
-    ax.set_xlim(0, len(angles))
-    ax.set_ylim(0, len(rows))
-    ax.set_xticks(np.arange(len(angles)) + 0.5, [f"{a:g}\u00b0" for a in angles])
-    ax.set_yticks(np.arange(len(rows)) + 0.6, [LABELS.get(m, m) for m in reversed(rows)])
+                ax.text(j + 0.5, y + 0.17, f"{r.dE2000_vs_exact:.1f}", ha="center",
+                        va="center", fontsize=7.5, color="white")
+    ax.set(xlim=(0, len(angles)), ylim=(0, len(rows)))
+    ax.set_xticks(np.arange(len(angles)) + 0.5, [f"{a:g}" for a in angles])
+    ax.set_yticks(np.arange(len(rows)) + 0.62, [LABELS.get(m, m) for m in reversed(rows)])
     ax.tick_params(length=0)
     for side in ax.spines.values():
         side.set_visible(False)
-    ax.set_xlabel("incidence angle \u03b8 (numbers: CIEDE2000 vs exact)")
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 colour of {material.name} under "
-                 f"{colour_cfg['illuminant']} vs incidence angle ({colour_cfg['space']}, "
-                 f"gamut clip: {colour_cfg['gamut_clip']})", fontsize=10)
+    ax.set_xlabel("incidence angle \u03b8 (\u00b0); white numbers: CIEDE2000 vs (b)")
+    ax.set_title("swatches at the paper's angles", loc="left")
+    for k, (lo, ticks) in enumerate(((0.0, np.arange(0, 91, 15)), (st["fine_from_deg"], None))):
+        sax = fig.add_subplot(grid_spec[k + 1], facecolor="black")
+        for i, method in enumerate(rows):
+            part = strip[(strip.method == method) & (strip.angle_deg >= lo)]
+            rgb = part[["R", "G", "B"]].to_numpy()[None]
+            edges = np.concatenate([[lo], (part.angle_deg.to_numpy()[1:]
+                                           + part.angle_deg.to_numpy()[:-1]) / 2, [90.0]])
+            y = len(rows) - 1 - i
+            sax.pcolormesh(edges, [y + 0.34, y + 0.96], rgb, shading="flat", rasterized=True)
+        if lo > 0:
+            sax.axvline(onset["onset_deg"], color="white", lw=0.8, ls=(0, (2, 2)))
+        sax.set(xlim=(lo, 90), ylim=(0, len(rows)), yticks=[])
+        sax.set_xticks(ticks if ticks is not None else np.arange(lo, 90.1, 2))
+        sax.tick_params(axis="y", length=0)
+        for side in ("left", "right", "top"):
+            sax.spines[side].set_visible(False)
+        sax.set_xlabel("\u03b8 (\u00b0, proportional axis)")
+        sax.set_title(f"{lo:g}\u201390\u00b0, step {st['fine_step_deg']:g}\u00b0; dashed: (c) leaves "
+                      f"copper at {onset['onset_deg']:.2f}\u00b0" if lo > 0 else
+                      f"continuous strip, 0\u201390\u00b0", loc="left", fontsize=9)
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {material.name} under "
+                 f"{colour_cfg['illuminant']} against the incidence angle ({colour_cfg['space']}, gamut clip "
+                 f"{colour_cfg['gamut_clip']})\n(c) interpolates with F of n = {onset['n_average']:.1f}, "
+                 f"the k = 0 index of the average F0 = {onset['F0_average']:.3f}; F \u2212 F0 < 0 "
+                 f"(clamped by max(0, \u2026)) up to {onset['onset_deg']:.2f}\u00b0", y=0.995)
+    fig.subplots_adjust(top=0.78, bottom=0.14, left=0.1, right=0.99)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     for method in rows:
         log.info("%s: max dE2000 vs exact %.3f (%s)", method,

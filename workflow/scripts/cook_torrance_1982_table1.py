@@ -9,7 +9,7 @@ from matplotlib.patches import Rectangle
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import XYZ_to_display
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material, wavelength_grid
 from reflectance.io.tables import write_csv
@@ -27,7 +27,7 @@ with script_log(snakemake) as log:
         XYZ = material.F0 @ W  # the colour of pi R_d = F0 (C&T 1982 Fig. 7: R_d = F0/pi)
         source = sources.loc[material.name]
         rows.append({
-            "material": material.name, "s": entry["s"], "d": entry["d"], "m": entry["m"],
+            "material": material.name, "name": paper_name(material.name), "s": entry["s"], "d": entry["d"], "m": entry["m"],
             "spectrum": "measured n, k" if material.kind == "measured" else "derived reflectance",
             "dataset": source["dataset"], "reference": source["reference"],
             f"F0_mean_{lo:g}_{hi:g}nm": F0_mean, "R_d_mean_per_sr": F0_mean / np.pi,
@@ -54,8 +54,8 @@ with script_log(snakemake) as log:
     ax.axhline(-0.45, color="0.2", lw=0.8)
     for i, r in table.iterrows():
         m = "not used" if r.m is None or np.isnan(r.m) else f"{r.m:.2f}"
-        cells = [r.material, f"{r.s:.1f}", f"{r.d:.1f}", m, f"{r.spectrum}: {r.dataset}",
-                 f"{r.iloc[7]:.4f}", f"{r.x:.4f}, {r.y:.4f}, {r.Y:.4f}"]
+        cells = [r["name"], f"{r.s:.1f}", f"{r.d:.1f}", m, f"{r.spectrum}: {r.dataset}",
+                 f"{r[f'F0_mean_{lo:g}_{hi:g}nm']:.4f}", f"{r.x:.4f}, {r.y:.4f}, {r.Y:.4f}"]
         for x, text in zip(xs, cells):
             ax.text(x, i, text, fontsize=9, va="center")
         ax.add_patch(Rectangle((xs[-1], i - 0.38), 0.1, 0.76, color=RGB[i], ec="0.5", lw=0.5))

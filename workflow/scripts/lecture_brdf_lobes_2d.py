@@ -1,6 +1,7 @@
-"""Lecture (Russin, Module 3B), "BRDF" slide: "Figure 9.18 (7.17 3rd edition) shows sample BRDFs" -
-diffuse, Phong, the lecture's normalised Blinn-Phong and Cook-Torrance, as polar plots in the plane
-of incidence. The radius is the BRDF f(L, V) itself along each outgoing direction V (not
+"""Lecture (Russin, Module 3B), "BRDF" slide: its angles (theta_i, phi_i, theta_v, phi_v) drawn, and
+"Figure 9.18 (7.17 3rd edition) shows sample BRDFs" - diffuse, Phong, the lecture's normalised
+Blinn-Phong, Cook-Torrance, an anisotropic Ward lobe and a lunar (Lommel-Seeliger) lobe, as polar
+plots in the plane of incidence. The radius is the BRDF f(L, V) itself along each outgoing direction V (not
 f cos theta_o): a Lambertian surface is then "a simple hemisphere", as the slide says."""
 
 import numpy as np
@@ -8,7 +9,8 @@ import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
 from reflectance.optics.brdf import brdf
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.papers.brdf_geometry import draw_brdf_angles
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -19,11 +21,14 @@ MODELS = {
     "phong": ("Phong1975", "Phong, (R\u00b7V)$^{c_1}$/(N\u00b7L)"),
     "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong, (m+8)/(8\u03c0) cos$^m\\theta_h$"),
     "cook_torrance": ("CookTorrance1982", "Cook-Torrance, DGF/(4(N\u00b7L)(N\u00b7V))"),
+    "ward": ("Ward1992", "Ward, anisotropic"),
+    "lunar": ("LommelSeeliger", "lunar (Lommel-Seeliger)"),
 }
 
 
 def parameters_text(params):
-    return ", ".join(f"{k} = {v:g}" if not isinstance(v, str) else f"{v}" for k, v in params.items())
+    return ", ".join(f"{k} = {v:g}" if not isinstance(v, str) else f"{v}" for k, v in params.items()
+                     if not isinstance(v, list))
 
 
 with script_log(snakemake) as log:
@@ -37,29 +42,41 @@ with script_log(snakemake) as log:
         table[key] = brdf(L, V, N, method, **cfg["models"][key])
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(15, 3.9)
+    fig = new_figure(11.5, 5.6)
+    grid = fig.add_gridspec(2, 4, width_ratios=[1.25, 1, 1, 1], wspace=0.28, hspace=0.42,
+                            left=0.01, right=0.985, top=0.86, bottom=0.0)
+    g = cfg["geometry"]
+    ax = fig.add_subplot(grid[:, 0])
+    draw_brdf_angles(ax, g["light"]["theta_deg"], g["light"]["phi_deg"], g["view"]["theta_deg"],
+                     g["view"]["phi_deg"])
+    ax.text(0.5, 0.1, "BRDF = f(\u03bb, \u03c6\u1d62, \u03b8\u1d62, \u03c6\u1d65, \u03b8\u1d65) = f(\u03bb, L, V)",
+            fontsize=10, transform=ax.transAxes, ha="center")
     for i, (key, (method, title)) in enumerate(MODELS.items()):
-        ax = fig.add_subplot(1, len(MODELS), i + 1, projection="polar")
+        ax = fig.add_subplot(grid[i // 3, 1 + i % 3], projection="polar")
         ax.set_theta_zero_location("N")
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
         f = table[key]
-        top = 1.15 * f.max()
-        ax.plot(theta_o, f, color="#1f4e9c", lw=1.8)
-        ax.fill(theta_o, f, color="#1f4e9c", alpha=0.15)
-        ax.plot([-theta_i, -theta_i], [0, top], color="#d98c00", lw=1.5, label="towards light L")
+        inside = np.abs(theta_o) <= np.radians(85.0)  # Ward's 1/sqrt(N.V) grows without bound at the horizon
+        top = 1.15 * f[inside].max()
+        ax.plot(theta_o, f, color=OKABE_ITO[0], lw=1.6)
+        ax.fill(theta_o, f, color=OKABE_ITO[0], alpha=0.15)
+        ax.plot([-theta_i, -theta_i], [0, top], color=OKABE_ITO[4], lw=1.5, label="towards the light L")
         ax.plot([theta_i, theta_i], [0, top], color="0.4", lw=1, ls="--", label="mirror direction")
+        ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6) if f.max() > top else None
         ax.set_ylim(0, top)
-        ax.set_title(f"{title}\n{parameters_text(cfg['models'][key])}", fontsize=8.5, pad=2)
-        ax.tick_params(labelsize=7)
-        ax.yaxis.set_major_locator(MaxNLocator(3))
-        ax.text(0.5, 0.12, f"max f = {f.max():.3g} sr$^{{-1}}$", transform=ax.transAxes,
+        ax.set_title(f"{title}\n{parameters_text(cfg['models'][key])}", fontsize=8.5, pad=1)
+        ax.tick_params(labelsize=7, pad=1)
+        ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
+        ax.yaxis.set_major_locator(MaxNLocator(2))
+        ax.text(0.5, 0.1, f"max f = {f[inside].max():.3g} sr$^{{-1}}$ (|\u03b8| \u2264 85\u00b0)"
+                if f.max() > top else f"max f = {f.max():.3g} sr$^{{-1}}$", transform=ax.transAxes,
                 ha="center", fontsize=8)
         log.info("%s: max f %.6g at theta_o = %.2f deg", key, f.max(),
                  np.degrees(theta_o[np.argmax(f)]))
-    fig.axes[0].legend(loc="upper left", bbox_to_anchor=(-0.08, 1.02), fontsize=7, frameon=False)
-    fig.suptitle(f"Lecture (Russin, Module 3B), sample BRDFs in the plane of incidence: radius = "
-                 f"f(L, V) in sr$^{{-1}}$, incidence {cfg['incidence_deg']:g}\u00b0 "
-                 f"(light on the left)", fontsize=11)
-    fig.subplots_adjust(left=0.03, right=0.98, top=0.84, bottom=-0.12, wspace=0.25)
+    fig.legend(*fig.axes[1].get_legend_handles_labels(), loc="upper right", ncol=2, fontsize=8.5,
+               bbox_to_anchor=(0.985, 0.955))
+    fig.suptitle(f"Lecture (Russin, Module 3B), the BRDF's angles and sample BRDFs in the plane of "
+                 f"incidence (radius f(L, V) in sr$^{{-1}}$, incidence {cfg['incidence_deg']:g}\u00b0, "
+                 f"light on the left)", x=0.01, ha="left", y=0.995)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

@@ -10,6 +10,7 @@ import pandas as pd
 from matplotlib.collections import LineCollection
 
 from reflectance.io.figures import new_figure, savefig
+from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.papers.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
 from reflectance.optics.shadowing import G1_Smith_Beckmann_Walter2007
@@ -24,9 +25,17 @@ with script_log(snakemake) as log:
     angles = np.radians(np.arange(0.0, 89.0 + 1e-9, cfg["angle_step_deg"]))
     sim = np.array([masking_G1(h, p, a) for a in angles])
     smith = G1_Smith_Beckmann_Walter2007(np.cos(angles), m)
-    g1_table = pd.DataFrame({"angle_deg": np.degrees(angles), "G1_simulated": sim[:, 0],
-                             "G1_Smith": smith, "visible_projected_over_n_cos": sim[:, 1]})
-    g1_table.pipe(write_csv, snakemake.output.g1, float_format="%.6g")
+    # The slide's own G for the light at theta_i and the viewer at each angle on the mirror side:
+    # Masking G_m = 2(N.H)(N.V)/(V.H), shadowing G_s = 2(N.H)(N.L)/(V.H), G = min{1, G_s, G_m}
+    L, V, _ = plane_of_incidence_vectors(ti, angles)
+    H = (L + V) / np.linalg.norm(L + V, axis=-1, keepdims=True)
+    NH, NV, NL, VH = H[:, 2], V[:, 2], L[2], np.einsum("ij,ij->i", V, H)
+    G_slide = np.minimum(1.0, np.minimum(2 * NH * NL / VH, 2 * NH * NV / VH))
+    G2_smith = G1_Smith_Beckmann_Walter2007(np.cos(ti), m) * smith  # Smith, uncorrelated L and V
+    pd.DataFrame({"angle_deg": np.degrees(angles), "G1_simulated": sim[:, 0], "G1_Smith": smith,
+                  "visible_projected_over_n_cos": sim[:, 1], "G_slide_light_at_incidence": G_slide,
+                  "G1L_G1V_Smith_light_at_incidence": G2_smith}).pipe(
+        write_csv, snakemake.output.g1, float_format="%.6g")
 
     # Shadowing (light at -theta_i) and masking (view at +theta_o), overall and by facet slope
     nb, edges = cfg["slope_bins"], np.linspace(-3 * sigma, 3 * sigma, cfg["slope_bins"] + 1)
@@ -51,7 +60,7 @@ with script_log(snakemake) as log:
              np.sum(rays.escaped == (rays.seen[hit_segment] > 0.5)), hit_x.size)
 
     fig = new_figure(13, 8.4)
-    grid = fig.add_gridspec(2, 2, height_ratios=[1.25, 1], hspace=0.3, wspace=0.22, top=0.9,
+    grid = fig.add_gridspec(2, 3, height_ratios=[1.25, 1], hspace=0.3, wspace=0.25, top=0.9,
                             bottom=0.07, left=0.06, right=0.98)
     ax = fig.add_subplot(grid[0, :])
     top, keep = hs.max() + 0.15 * (w1 - w0), (xs[:-1] >= w0) & (xs[1:] <= w1)
@@ -88,7 +97,7 @@ with script_log(snakemake) as log:
     ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, Beckmann m = {m:.3g}")
     ax.plot(np.degrees(angles), sim[:, 0], "o", ms=3, color="#1f77b4", label="simulated profile")
     ax.set(xlabel="direction from the normal \u03b8 (degrees)", ylabel="G1", ylim=(0, 1.02),
-           title="(b) G1 of the whole profile (visible / facing projected length)")
+           title="(b) G1 of the whole profile")
     ax.legend(frameon=False, fontsize=8, loc="lower left")
     ax = fig.add_subplot(grid[1, 1])
     for name, c, lab in (("view", "#d62728", "masking, \u03b8o"), ("light", "#e69f00", "shadowing, \u03b8i")):
@@ -98,6 +107,14 @@ with script_log(snakemake) as log:
     ax.set(xlabel="facet slope / rms slope", ylabel="visible fraction", ylim=(0, 1.02),
            title="(c) visibility by facet slope at \u03b8o and \u03b8i")
     ax.legend(frameon=False, fontsize=7, loc="lower center")
+    ax = fig.add_subplot(grid[1, 2])
+    ax.plot(np.degrees(angles), G_slide, color="#d55e00",
+            label="slide: G = min{1, G$_s$, G$_m$} (V-cavity)")
+    ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.5, label="Smith: G1(L) G1(V)")
+    ax.set(xlabel="view angle \u03b8o on the mirror side (degrees)", ylabel="G", ylim=(0, 1.02),
+           title=f"(d) the slide's G beside Smith's, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0")
+    ax.legend(frameon=False, fontsize=7.5, loc="lower left")
+    ax.grid(True)
     fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d, on a simulated "
                  f"Gaussian surface profile (seed {cfg['seed']})", fontsize=11)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

@@ -21,6 +21,7 @@ __all__ = [
     "reflected_XYZ",
     "colour_interpolation_CookTorrance1982",
     "reflected_XYZ_approximation_CookTorrance1982",
+    "approximation_onset_CookTorrance1982",
     "colour_XYZ",
     "COLOUR_TABLE_COLUMNS",
     "colour_columns",
@@ -80,6 +81,43 @@ def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average
     XYZ_0 = material.F0 @ W  # the colour at theta = 0 (C&T 1982, Fig. 4b)
     XYZ_90 = W.sum(axis=0)  # F_pi/2 = 1: the light's colour
     return colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F0_average)
+
+
+def approximation_onset_CookTorrance1982(material, average_range_nm, fractions=(0.5,)):
+    """Why Fig. 5c's approximation keeps the normal-incidence colour until close to grazing.
+
+    The approximation's weight is ``t = max(0, F_theta - F_0) / (1 - F_0)`` with F of the
+    dielectric index ``n`` fitted to the average F0 (k = 0). For a metal's large F0 that index is
+    large (copper: n near 13), and the unpolarised dielectric F of a large index dips below F0
+    towards its Brewster angle before it rises to 1, so the ``max(0, ...)`` clamp holds t at 0 --
+    the colour at 0 degrees -- until F_theta climbs back to F0 a degree or less from grazing.
+
+    Returns
+    -------
+    dict
+        ``F0_average``, ``n_average``, ``dip`` (the least F_theta - F0) and ``dip_deg`` (its
+        angle), ``onset_deg`` (the angle beyond which t > 0) and ``t_<fraction>_deg`` for each of
+        ``fractions`` (the angle where t reaches it). Angles from bisection (``brentq``).
+    """
+    from scipy.optimize import brentq, minimize_scalar
+
+    F0 = float(material.mean_F0(average_range_nm))
+    n = float(n_from_F0_CookTorrance1982(F0))  # C&T 1982: n = (1 + sqrt F0)/(1 - sqrt F0)
+
+    def excess(angle_deg):  # F_theta - F_0, Cook & Torrance's max(0, ...) argument
+        return float(fresnel_dielectric_CookTorrance1982(np.cos(np.radians(angle_deg)), n)) - F0
+
+    dip = minimize_scalar(excess, bounds=(0.0, 90.0), method="bounded",
+                          options={"xatol": 1e-9})
+    out = {"F0_average": F0, "n_average": n, "dip": float(dip.fun), "dip_deg": float(dip.x)}
+    if dip.fun >= 0:  # no dip: t grows from 0 degrees on
+        out["onset_deg"] = 0.0
+    else:
+        out["onset_deg"] = float(brentq(excess, dip.x, 90.0, xtol=1e-12))
+    for fraction in fractions:
+        out[f"t_{fraction:g}_deg"] = float(brentq(
+            lambda a: excess(a) / (1.0 - F0) - fraction, out["onset_deg"], 90.0, xtol=1e-12))
+    return out
 
 
 #: How the colour of each row of Fig. 5 and of ``reflectance colour`` is obtained.

@@ -2,6 +2,14 @@
 
 Same inputs give byte-identical PNG and PDF files: no creation dates, no software versions in
 the metadata, fixed DPI, and the file is written atomically.
+
+Every figure of the project shares one style, :data:`STYLE` (applied by :func:`new_figure`): text
+sized for a figure printed about 7 inches wide (the figures are drawn at that size, so 9-10 pt
+stays 9-10 pt on the page), no top and right spines, outward ticks, a light grid where a plot
+asks for one (``ax.grid()``), the Okabe-Ito colour cycle (distinguishable with colour-vision
+deficiencies), frameless legends, and files cropped to their content (:func:`savefig`), so no
+canvas is wasted. Pyvista figures share :func:`off_screen_plotter` (white background, the same
+font).
 """
 
 from __future__ import annotations
@@ -16,7 +24,78 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
-__all__ = ["savefig", "new_figure", "off_screen_plotter", "save_plotter"]
+__all__ = ["STYLE", "OKABE_ITO", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
+           "save_plotter"]
+
+OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
+"""Okabe & Ito (2008), "Color universal design": eight colours told apart by every observer."""
+
+STYLE = {
+    "font.family": "sans-serif",
+    "font.sans-serif": ["DejaVu Sans"],
+    "mathtext.fontset": "dejavusans",
+    "font.size": 9.5,
+    "axes.titlesize": 10,
+    "axes.titleweight": "normal",
+    "axes.titlepad": 5,
+    "axes.labelsize": 9.5,
+    "axes.labelpad": 3,
+    "axes.linewidth": 0.8,
+    "axes.edgecolor": "0.25",
+    "axes.labelcolor": "0.1",
+    "axes.spines.top": False,
+    "axes.spines.right": False,
+    "axes.grid": False,
+    "axes.axisbelow": True,
+    "axes.prop_cycle": matplotlib.cycler(color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7, 6)]),  # yellow last
+    "axes.xmargin": 0.0,
+    "grid.color": "0.9",
+    "grid.linewidth": 0.6,
+    "xtick.labelsize": 8.5,
+    "ytick.labelsize": 8.5,
+    "xtick.direction": "out",
+    "ytick.direction": "out",
+    "xtick.major.size": 3,
+    "ytick.major.size": 3,
+    "xtick.color": "0.25",
+    "ytick.color": "0.25",
+    "legend.fontsize": 8.5,
+    "legend.frameon": False,
+    "legend.handlelength": 1.8,
+    "lines.linewidth": 1.5,
+    "lines.solid_capstyle": "round",
+    "figure.titlesize": 11,
+    "figure.titleweight": "normal",
+    "figure.facecolor": "white",
+    "image.cmap": "cividis",
+    "savefig.bbox": "tight",
+    "savefig.pad_inches": 0.04,
+}
+"""The project's matplotlib style (see the module docstring)."""
+
+
+def paper_name(name):
+    """A material's name as the papers print it: ``"LunarDust"`` -> ``"Lunar dust"``.
+
+    CamelCase words after the first are lower-cased; a name of capitals and digits (a chemical
+    symbol such as ``"Cu"`` or ``"MgO"``) is left as it is.
+
+    Examples
+    --------
+    >>> paper_name("OliveDrab"), paper_name("Cu"), paper_name("RustBody")
+    ('Olive drab', 'Cu', 'Rust body')
+    """
+    import re
+
+    words = re.findall(r"[A-Z][a-z]+|[A-Z]+(?![a-z])|[a-z]+|\d+", str(name))
+    if len(words) < 2 or not all(w[0].isupper() and w[1:].islower() for w in words):
+        return str(name)
+    return " ".join([words[0]] + [w.lower() for w in words[1:]])
+
+
+def apply_style():
+    """Make :data:`STYLE` matplotlib's defaults (each figure script is its own process)."""
+    matplotlib.rcParams.update(STYLE)
 
 _METADATA = {
     ".png": {"Software": None},
@@ -24,14 +103,19 @@ _METADATA = {
 }
 
 
-def new_figure(width_in=6.4, height_in=4.8, **kwargs):
-    """A matplotlib figure with the project's fixed style (no global state changed)."""
+def new_figure(width_in=7.0, height_in=4.0, **kwargs):
+    """A matplotlib figure in the project's style (:data:`STYLE`, applied to this process)."""
+    apply_style()
     fig = plt.figure(figsize=(width_in, height_in), **kwargs)
     return fig
 
 
-def savefig(fig, *paths, dpi=150):
-    """Save ``fig`` to each path (.png or .pdf) deterministically and atomically, then close it."""
+def savefig(fig, *paths, dpi=200, tight=True):
+    """Save ``fig`` to each path (.png or .pdf) deterministically and atomically, then close it.
+
+    ``tight`` crops the file to its content (a small margin); pass ``False`` for layouts placed
+    to the pixel (rendered images at ``dpi`` pixels per inch).
+    """
     paths = [Path(p) for p in paths]
     for path in paths:
         if path.suffix.lower() not in _METADATA:
@@ -41,7 +125,8 @@ def savefig(fig, *paths, dpi=150):
         for path in paths:
             suffix = path.suffix.lower()
             with atomic_write(path) as tmp:
-                fig.savefig(tmp, dpi=dpi, metadata=_METADATA[suffix], format=suffix[1:])
+                fig.savefig(tmp, dpi=dpi, metadata=_METADATA[suffix], format=suffix[1:],
+                            bbox_inches="tight" if tight else None)
     finally:
         plt.close(fig)
 

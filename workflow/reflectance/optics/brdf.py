@@ -66,6 +66,7 @@ __all__ = [
     "brdf_CookTorrance1982",
     "brdf_Ward1992",
     "brdf_HeidrichSeidel1998",
+    "brdf_LommelSeeliger",
     "ambient_reflectance_CookTorrance1982",
     "intensity_CookTorrance1982",
     "BRDF_METHODS",
@@ -539,6 +540,39 @@ def brdf_HeidrichSeidel1998(NL, NV, LT, VT, LV, s=50.0, k_d=0.0, k_s=1.0, form="
     return _out(np.where(valid, f, 0.0))
 
 
+def brdf_LommelSeeliger(NL, NV, albedo=1.0):
+    """The Lommel-Seeliger law of a dusty, lunar-like surface: ``f = w / (4 pi (N.L + N.V))``.
+
+    Single scattering by isotropic particles in a semi-infinite layer of single-scattering albedo
+    ``w`` (Hapke 1981, eq. 2 with p(g) = 1 and no opposition effect): the reflected radiance is
+    proportional to ``(N.L) / (N.L + N.V)``, so a full Moon is evenly bright to its limb; the
+    lobe grows towards grazing views and is reciprocal.
+
+    Parameters
+    ----------
+    NL, NV : array_like
+        ``N.L`` and ``N.V``.
+    albedo : array_like
+        Single-scattering albedo ``w`` in [0, 1].
+
+    References
+    ----------
+    - Hapke, B. (1981). Bidirectional reflectance spectroscopy 1. Theory. Journal of Geophysical
+      Research 86(B4), 3039-3054. (Lommel-Seeliger as its single-scattering, isotropic limit.)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> print(f"{brdf_LommelSeeliger(1.0, 1.0, 1.0) * 8 * np.pi:.6f}")
+    1.000000
+    """
+    NL, NV = _cosines(NL, NV)
+    lit = _lit_and_seen(NL, NV)
+    # Hapke 1981, single isotropic scattering: f = w / (4 pi (mu_0 + mu))
+    f = np.asarray(albedo) / (4.0 * np.pi * _positive(NL + NV))
+    return _out(np.where(lit, f, 0.0))
+
+
 # --- registry, vector-level dispatcher, albedo ----------------------------------------------------
 
 BRDF_METHODS = {
@@ -550,6 +584,7 @@ BRDF_METHODS = {
     "CookTorrance1982": brdf_CookTorrance1982,
     "Ward1992": brdf_Ward1992,
     "HeidrichSeidel1998": brdf_HeidrichSeidel1998,
+    "LommelSeeliger": brdf_LommelSeeliger,
 }
 """BRDF models of :func:`brdf`, each a function of cosines (see the module docstring)."""
 

@@ -56,6 +56,8 @@ __all__ = [
     "fig6_scene_CookTorrance1982",
     "light_direction",
     "materials_Blinn1977",
+    "mirror_highlight_Blinn1977",
+    "highlight_crossover_Blinn1977",
     "blinn_scene_Blinn1977",
     "table1_material",
     "fig7_vases_CookTorrance1982",
@@ -281,6 +283,59 @@ def materials_Blinn1977(p_s, p_d, c3, n, phong_specular="as_printed"):
     }
 
 
+def mirror_highlight_Blinn1977(p_s, n, angle_deg):
+    """Blinn's Torrance-Sparrow specular intensity ``p_s s`` where the surface normal is H.
+
+    For a light at ``angle_deg`` from the direction to the eye, a facet with N = H has
+    N.H = 1, E.H = N.E = N.L = cos(angle/2), D3 = 1 and G = 1 (G_b = G_c = 2), so
+    ``s = D3 G F / (N.E) = F(cos(angle/2)) / cos(angle/2)``: the brightest specular value of a
+    curved object that shows such a point.
+
+    Parameters
+    ----------
+    p_s : float
+    n : float
+        Blinn's index of refraction (F with the factor 1/2, k = 0).
+    angle_deg : array_like
+        Angle between L and E, in [0, 180).
+
+    Examples
+    --------
+    >>> print(f"{mirror_highlight_Blinn1977(0.667, 1.8, 0.0):.5f}")  # p_s ((n - 1)/(n + 1))^2
+    0.05445
+    """
+    c = np.cos(np.radians(np.asarray(angle_deg, dtype=np.float64)) / 2)
+    # Blinn 1977, s = D3 G F / (N.E) with D3 = G = 1 and N.E = E.H = c
+    return float(p_s) * fresnel_dielectric_CookTorrance1982(c, float(n)) / c
+
+
+def highlight_crossover_Blinn1977(first, second, bracket_deg=(90.0, 179.9)):
+    """The light angle at which two of Blinn's materials have equal mirror highlights.
+
+    ``first`` and ``second`` are ``{p_s, n}`` mappings (config ``fig7.panels``); the result is the
+    angle (degrees from the eye direction) where :func:`mirror_highlight_Blinn1977` of ``second``
+    equals that of ``first``, found by bisection (``scipy.optimize.brentq``) in ``bracket_deg``;
+    ``None`` if they do not cross there. Blinn 1977: magnesium oxide is "very specular (even more
+    so than the aluminum) for light hitting it almost tangentially".
+
+    Examples
+    --------
+    >>> a = {"p_s": 0.4, "n": 200.0}; b = {"p_s": 0.667, "n": 1.8}
+    >>> print(f"{highlight_crossover_Blinn1977(a, b):.2f}")
+    166.87
+    """
+    from scipy.optimize import brentq
+
+    def difference(angle):
+        return float(mirror_highlight_Blinn1977(second["p_s"], second["n"], angle)
+                     - mirror_highlight_Blinn1977(first["p_s"], first["n"], angle))
+
+    lo, hi = (float(x) for x in bracket_deg)
+    if difference(lo) * difference(hi) > 0:
+        return None
+    return float(brentq(difference, lo, hi, xtol=1e-10))
+
+
 def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
     """One render of Blinn 1977 Fig. 7's object (also Fig. 8 and the sweep).
 
@@ -462,14 +517,15 @@ def figure_scenes(config, spectra_dir="spectra"):
                     yield (f"figures.blinn_1977.fig7.panels.{panel}",
                            f"fig7{panel}_{model}_{light}_{reading}",
                            blinn_scene_Blinn1977(fig7, m[model], fig7["lights"][light], w))
-    p = fig7["panels"][sweep["panel"]]
-    m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], sweep["phong_specular"])
     angles = np.linspace(*sweep["angles_deg"], sweep["n_frames"])
     lights = [{"angle_deg": float(a), "azimuth_deg": sweep["azimuth_deg"]} for a in angles]
-    for model in ("phong", "torrance_sparrow"):
-        yield ("figures.blinn_1977.fig7_sweep", f"fig7_sweep ({model})",
-               blinn_scene_Blinn1977(fig7, m[model], lights, w,
-                                     sweep_camera_Blinn1977(fig7, sweep)))
+    for key in sweep["panels"]:
+        p = fig7["panels"][key]
+        m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], sweep["phong_specular"])
+        for model in ("phong", "torrance_sparrow"):
+            yield ("figures.blinn_1977.fig7_sweep", f"fig7_sweep (panel {key}, {model})",
+                   blinn_scene_Blinn1977(fig7, m[model], lights, w,
+                                         sweep_camera_Blinn1977(fig7, sweep)))
     n = fig7["panels"][fig8["panel"]]["n"]
     for part, pattern in fig8["patterns"].items():
         yield (f"figures.blinn_1977.fig8.patterns.{part}", f"fig8{part}",

@@ -1,0 +1,69 @@
+"""Lecture (Russin, Module 3B), "Distribution of microfacet orientations": the slide's own D's against
+the correct ones. (a) Its Gaussian D = exp(-(alpha m)^2), m in the numerator, against Torrance &
+Sparrow's / Cook & Torrance's exp(-(alpha/m)^2); (b) its Beckmann D with 4 m^2 cos^4 in the denominator
+against Cook & Torrance's printed m^2 cos^4 and the normalised pi m^2 cos^4, with the integral of
+D cos(alpha) over the hemisphere of each (1 for a normalised distribution)."""
+
+import numpy as np
+import pandas as pd
+from scipy.integrate import quad
+
+from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.optics.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
+from reflectance.scripting import script_log
+from reflectance.io.tables import write_csv
+
+
+def projected_integral(D):
+    """integral of D(alpha) cos(alpha) d omega over the hemisphere (2 pi sin cos d alpha)."""
+    return quad(lambda a: D(np.cos(a)) * np.cos(a) * np.sin(a) * 2 * np.pi, 0, np.pi / 2,
+                limit=200, epsabs=1e-12)[0]
+
+
+with script_log(snakemake) as log:
+    cfg = snakemake.params.fig
+    alpha = np.radians(np.arange(0.0, 90.0 + 1e-9, cfg["alpha_step_deg"]))[:-1]
+    curves, rows = {"alpha_deg": np.degrees(alpha)}, []
+    fig = new_figure(10.0, 3.6)
+    axes = fig.subplots(1, 2)
+    for m, style in zip(cfg["m"], ("-", (0, (4, 2)))):
+        forms = {  # name -> D(cos alpha), each from its text
+            # the slide: "Torrance and Sparrow (1967) used a simple Gaussian: D = e^{-(alpha m)^2}"
+            "gaussian_slide": lambda c, m=m: np.exp(-(np.arccos(c) * m) ** 2),
+            # Cook & Torrance 1982 eq. for the Gaussian model: D = c e^{-(alpha/m)^2}, c = 1
+            "gaussian_correct": lambda c, m=m: distribution_Gaussian_CookTorrance1982(c, m),
+            # the slide's Beckmann: e^{-(tan d / m)^2} / (4 m^2 cos^4 d)
+            "beckmann_slide": lambda c, m=m: distribution_Beckmann1963(c, m) / 4.0,
+            # Cook & Torrance 1982 as printed: 1/(m^2 cos^4) e^{...}; normalised: with 1/pi
+            "beckmann_CookTorrance1982": lambda c, m=m: distribution_Beckmann1963(c, m),
+            "beckmann_normalised": lambda c, m=m: distribution_Beckmann1963(c, m, "physical"),
+        }
+        for key, D in forms.items():
+            curves[f"{key}_m{m:g}"] = D(np.cos(alpha))
+            rows.append({"form": key, "m": m, "D_at_0": float(D(1.0)),
+                         "integral_D_cos_domega": projected_integral(D)})
+        label = {"gaussian_slide": "slide: e$^{-(\\alpha m)^2}$", "gaussian_correct": "C&T: e$^{-(\\alpha/m)^2}$"}
+        for key, colour in (("gaussian_slide", OKABE_ITO[1]), ("gaussian_correct", OKABE_ITO[0])):
+            axes[0].plot(np.degrees(alpha), curves[f"{key}_m{m:g}"], color=colour, ls=style,
+                         label=f"{label[key]}, m = {m:g}")
+        for key, colour, name in (("beckmann_slide", OKABE_ITO[1], "slide: 1/(4m\u00b2cos\u2074)"),
+                                  ("beckmann_CookTorrance1982", OKABE_ITO[2], "C&T printed: 1/(m\u00b2cos\u2074)"),
+                                  ("beckmann_normalised", OKABE_ITO[0], "normalised: 1/(\u03c0m\u00b2cos\u2074)")):
+            axes[1].plot(np.degrees(alpha), curves[f"{key}_m{m:g}"], color=colour, ls=style,
+                         label=f"{name}, m = {m:g}")
+    table = pd.DataFrame(rows)
+    for ax, title, ylabel in ((axes[0], "(a) Gaussian: m in the numerator or the denominator", "D"),
+                              (axes[1], "(b) Beckmann: the constant in front", "D (log scale)")):
+        ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 15), xlabel="\u03b1, angle between N and H (\u00b0)",
+               ylabel=ylabel, title=title)
+        ax.grid(True)
+    axes[1].set(yscale="log", ylim=(1e-3, 30))
+    axes[0].legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=8)
+    axes[1].legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=8)
+    fig.suptitle("Lecture (Russin, Module 3B), \u201cDistribution of microfacet orientations\u201d: the slide's "
+                 "D's against the correct ones", y=1.0)
+    fig.subplots_adjust(wspace=0.25, top=0.85)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    table.pipe(write_csv, snakemake.output.summary, float_format="%.8g")
+    log.info("%s", table.to_string())
