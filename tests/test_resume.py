@@ -158,7 +158,11 @@ def _unguarded_writes(source):
             if first is not None and not to_temporary and ast.unparse(first) != "sys.stdout":
                 found.append(ast.unparse(node))
         elif name in ("write_text", "write_bytes") and isinstance(node.func, ast.Attribute):
-            if not (isinstance(node.func.value, ast.Name) and node.func.value.id in temporaries):
+            target = node.func.value
+            if (isinstance(target, ast.Call) and getattr(target.func, "id", None) == "Path"
+                    and target.args):  # Path(tmp).write_text(...)
+                target = target.args[0]
+            if not (isinstance(target, ast.Name) and target.id in temporaries):
                 found.append(ast.unparse(node))
         elif name == "open" and isinstance(node.func, ast.Name):
             modes = [a.value for a in node.args[1:2] + [k.value for k in node.keywords
@@ -179,3 +183,5 @@ def test_every_script_writes_its_outputs_atomically(root):
                              "open('x', 'w')\n") == ["t.to_csv(snakemake.output.csv)",
                                                       "fig.savefig('a.png')", "open('x', 'w')"]
     assert _unguarded_writes("with atomic_write(p) as tmp:\n    im.save(tmp)\n") == []
+    assert _unguarded_writes("with atomic_write(p) as tmp:\n    Path(tmp).write_text(s)\n") == []
+    assert _unguarded_writes("Path(out).write_text(s)\n") == ["Path(out).write_text(s)"]
