@@ -504,6 +504,20 @@ def figure_scenes(config, spectra_dir="spectra"):
             yield ("figures.cook_torrance_1982.fig7", f"fig7_{reading}/{vase}",
                    vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
                                                ct["fig7"]["vase_image"]))
+    # the default figures (fig6.published): the published reading, the labelled departures, the
+    # metered exposure; Fig. 7's vases as rendered alone
+    published = fig6.get("published")
+    if published:
+        reference, exposure = published["ambient_reference"], published["exposure"]
+        for panel, spec in fig6["panels"].items():
+            spec = {**spec, **published.get("departures", {}).get(panel, {})}
+            yield (f"figures.cook_torrance_1982.fig6.published (panel {panel})", f"fig6{panel}",
+                   vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
+                                               spectra_dir, exposure=exposure))
+        for vase, _, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
+            yield ("figures.cook_torrance_1982.fig7", f"fig7/{vase}",
+                   vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
+                                               ct["fig7"]["vase_image"], exposure=exposure))
     yield ("figures.cook_torrance_1982.fig8", "fig8",
            watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
 
