@@ -85,3 +85,25 @@ def test_console_script_help():
                          capture_output=True, text=True, check=True).stdout
     for option in ("--angle", "--fresnel", "--illuminant", "--space"):
         assert option in out
+
+
+def test_colour_and_spectra_work_outside_the_checkout(tmp_path):
+    """With no ./spectra, the commands read the spectra that ship with the package."""
+    import subprocess
+    import sys
+
+    run = [sys.executable, "-m", "reflectance"]
+    here = subprocess.run(run + ["colour", "Cu", "--angle", "0"], cwd=tmp_path,
+                          capture_output=True, text=True)
+    assert here.returncode == 0, here.stderr
+    header, row = here.stdout.splitlines()
+    values = dict(zip(header.split(","), row.split(",")))
+    # copper's normal-incidence colour is reddish: x above D65's 0.3127
+    assert float(values["x"]) > 0.33
+    listed = subprocess.run(run + ["spectra"], cwd=tmp_path, capture_output=True, text=True)
+    assert listed.returncode == 0 and "\nCu," in listed.stdout
+    # an explicit --spectra-dir is honoured (an empty folder knows no materials)
+    (tmp_path / "empty").mkdir()
+    none = subprocess.run(run + ["colour", "Cu", "--angle", "0", "--spectra-dir", "empty"],
+                          cwd=tmp_path, capture_output=True, text=True)
+    assert none.returncode == 1 and "unknown material 'Cu'" in none.stderr

@@ -127,15 +127,27 @@ def _common(parser):
     parser.add_argument("--config", default=DEFAULT_CONFIG,
                         help="config.yaml whose wavelength grid to use (default: ./config.yaml "
                              "if present, else 360-830 nm by 5 nm)")
-    parser.add_argument("--spectra-dir", default="spectra",
-                        help="folder of material CSVs and sources.csv (default: spectra)")
+    parser.add_argument("--spectra-dir", default=None,
+                        help="folder of material CSVs and sources.csv (default: ./spectra if it "
+                             "exists, else the spectra that ship with the package)")
+
+
+def _spectra_dir(args):
+    """--spectra-dir, else ./spectra (a checkout), else the package's own spectra."""
+    if args.spectra_dir is not None:
+        return args.spectra_dir
+    if Path("spectra").is_dir():
+        return "spectra"
+    from reflectance.optics.spectra import bundled_spectra_dir
+
+    return str(bundled_spectra_dir())
 
 
 def _load(args, name, grid):
     from reflectance.optics.spectra import load_material
 
     try:
-        return load_material(name, grid, spectra_dir=args.spectra_dir)
+        return load_material(name, grid, spectra_dir=_spectra_dir(args))
     except (ValueError, FileNotFoundError) as err:
         raise SystemExit(f"reflectance: {err}") from None
 
@@ -215,7 +227,7 @@ def _run_spectra(args):
     from reflectance.optics.spectra import list_materials
 
     try:
-        table = list_materials(args.spectra_dir)
+        table = list_materials(_spectra_dir(args))
     except (ValueError, FileNotFoundError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     cols = [c for c in ("material", "kind", "dataset", "reference", "DOI") if c in table.columns]
