@@ -50,6 +50,9 @@ def whole(path):
     elif name.endswith(".pdf"):
         data = path.read_bytes()
         assert data.startswith(b"%PDF") and data.rstrip().endswith(b"%%EOF"), path
+    elif name.endswith(".rst"):  # an audit's one-sentence answer, included by its caption
+        text = path.read_text(encoding="utf-8")
+        assert text.strip() and text.endswith("\n"), path
     else:
         raise AssertionError(f"unexpected output {path}")
 
