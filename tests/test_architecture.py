@@ -22,7 +22,7 @@ ALLOWED = {
     "audit": {"optics", "colour", "io"},
     "papers": {"render", "audit", "optics", "colour", "geometry", "io"},
 }
-TOP_LEVEL = {"cli", "config", "scripting", "resume", "__init__", "__main__"}
+TOP_LEVEL = {"cli", "config", "scripting", "resume", "lazy", "__init__", "__main__"}
 
 
 def modules():
@@ -60,6 +60,8 @@ def test_imports_follow_the_one_way_flow(path):
     if home in TOP_LEVEL:
         return
     for module, _ in imports(path):
+        if module == "reflectance.lazy":  # the public faces' loader imports nothing of ours
+            continue
         parts = module.split(".")
         assert len(parts) >= 2 and parts[1] in ALLOWED, f"{path}: imports {module}"
         target = parts[1]

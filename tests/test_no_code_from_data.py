@@ -201,10 +201,15 @@ FORBIDDEN_ATTRIBUTES = {("yaml", "load"), ("yaml", "unsafe_load"), ("yaml", "ful
                         ("os", "system"), ("os", "popen")}
 
 
+#: Where import_module may load a package's own modules by the names its __init__ lists in code.
+LAZY_LOADERS = ("__init__.py", "reflectance/lazy.py")
+
+
 def code_from_data(source, path):
     """Places in Python ``source`` that could run code named by data: calls of eval, exec,
     compile, __import__; unsafe YAML or pickle loading; import_module anywhere but a package's
-    lazy loader (``import_module(f"{__name__}...")`` in an ``__init__.py``); getattr with a
+    lazy loader (``import_module(f"{__name__}...")`` in an ``__init__.py``, or of the package's own
+    module names in ``reflectance/lazy.py``, which its ``__init__`` lists in code); getattr with a
     computed name on a module or on what import_module returned; shell calls."""
     tree = ast.parse(source)
     modules = {alias.asname or alias.name.split(".")[0]
@@ -222,10 +227,10 @@ def code_from_data(source, path):
             found.append(f"{where}: {f.value.id}.{f.attr}()")
         if isinstance(f, ast.Name) and f.id == "import_module":
             argument = node.args[0] if node.args else None
-            lazy = (path.endswith("__init__.py") and isinstance(argument, ast.JoinedStr)
+            lazy = (path.endswith(LAZY_LOADERS) and isinstance(argument, ast.JoinedStr)
                     and isinstance(argument.values[0], ast.FormattedValue)
                     and isinstance(argument.values[0].value, ast.Name)
-                    and argument.values[0].value.id == "__name__")
+                    and argument.values[0].value.id in ("__name__", "package"))
             if not lazy:
                 found.append(f"{where}: import_module of a computed name")
         if isinstance(f, ast.Name) and f.id in ("getattr", "setattr") and len(node.args) >= 2 \
@@ -233,7 +238,7 @@ def code_from_data(source, path):
             target = node.args[0]
             on_module = isinstance(target, ast.Name) and target.id in modules
             on_import = isinstance(target, ast.Call) and getattr(target.func, "id", "") == "import_module"
-            if on_module or (on_import and not path.endswith("__init__.py")):
+            if on_module or (on_import and not path.endswith(LAZY_LOADERS)):
                 found.append(f"{where}: {f.id} with a computed name on a module")
         if isinstance(f, ast.Attribute) and f.attr in ("run", "Popen", "call", "check_output") \
                 and isinstance(f.value, ast.Name) and f.value.id == "subprocess":

@@ -1,13 +1,13 @@
 """Audit: how far each shortcut of the papers lies from the exact spectral answer.
 
-Modules: colour_shift (a smooth material"s colour against angle, per Fresnel method); shortcuts
+Modules: colour_shift (a smooth material's colour against angle, per Fresnel method); shortcuts
 (the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS).
 
 Public names are loaded on first use (``from reflectance.audit import name``), so importing
 the package stays cheap.
 """
 
-from importlib import import_module
+from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("colour_shift", "shortcuts")
@@ -39,16 +39,4 @@ _EXPORTS = {
     "write_audit": "shortcuts",
 }
 
-__all__ = [*_MODULES, *_EXPORTS]
-
-
-def __getattr__(name):
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    if name in _MODULES:
-        return import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -1,7 +1,7 @@
 """Colour: CIE colorimetry and display encoding, knowing nothing of optics or rendering.
 
 Modules: colorimetry (CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength),
-difference (CIEDE2000), display (RGB spaces, Cook & Torrance"s exposure, gamut clipping, transfer
+difference (CIEDE2000), display (RGB spaces, Cook & Torrance's exposure, gamut clipping, transfer
 functions), tables (colour-science's tables, computed by colour-science once and cached, so that
 the colour path reads them with numpy only).
 
@@ -9,7 +9,7 @@ Public names are loaded on first use (``from reflectance.colour import name``), 
 the package stays cheap.
 """
 
-from importlib import import_module
+from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("colorimetry", "difference", "display", "tables")
@@ -45,16 +45,4 @@ _EXPORTS = {
     "XYZ_to_display": "display",
 }
 
-__all__ = [*_MODULES, *_EXPORTS]
-
-
-def __getattr__(name):
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    if name in _MODULES:
-        return import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

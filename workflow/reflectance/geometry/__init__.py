@@ -1,13 +1,13 @@
 """Geometry: the shapes the renderer and the papers" figures draw.
 
 Modules: vectors (3-vector helpers), shapes (vase of revolution, sphere, torus, superellipsoid,
-plane, mesh files), watch (C&T 1982 Fig. 8), texture (Blinn 1977"s texture patterns).
+plane, mesh files), watch (C&T 1982 Fig. 8), texture (Blinn 1977's texture patterns).
 
 Public names are loaded on first use (``from reflectance.geometry import name``), so importing
 the package stays cheap.
 """
 
-from importlib import import_module
+from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("shapes", "texture", "vectors", "watch")
@@ -37,16 +37,4 @@ _EXPORTS = {
     "SEVEN_SEGMENT_DIGITS": "watch",
 }
 
-__all__ = [*_MODULES, *_EXPORTS]
-
-
-def __getattr__(name):
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    if name in _MODULES:
-        return import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

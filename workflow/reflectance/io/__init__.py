@@ -7,7 +7,7 @@ Public names are loaded on first use (``from reflectance.io import name``), so i
 the package stays cheap.
 """
 
-from importlib import import_module
+from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("atomic", "figures", "images", "paths", "tables")
@@ -30,16 +30,4 @@ _EXPORTS = {
     "check_name": "paths",
 }
 
-__all__ = [*_MODULES, *_EXPORTS]
-
-
-def __getattr__(name):
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    if name in _MODULES:
-        return import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -1,6 +1,6 @@
 """Papers: what only one text needs: its simulations, plots and scenes from config.yaml.
 
-Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn"s V-groove), profile (random-surface
+Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn's V-groove), profile (random-surface
 shadowing), polar (plane-of-incidence curves), scenes (the rendered figures" scenes), errata (the
 computed consequence of each erratum of the four texts, by id).
 
@@ -8,7 +8,7 @@ Public names are loaded on first use (``from reflectance.papers import name``), 
 the package stays cheap.
 """
 
-from importlib import import_module
+from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("errata", "polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
@@ -55,16 +55,4 @@ _EXPORTS = {
     "draw_dimension": "vgroove_plot",
 }
 
-__all__ = [*_MODULES, *_EXPORTS]
-
-
-def __getattr__(name):
-    if name in _EXPORTS:
-        return getattr(import_module(f"{__name__}.{_EXPORTS[name]}"), name)
-    if name in _MODULES:
-        return import_module(f"{__name__}.{name}")
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(__all__)
+__getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)
