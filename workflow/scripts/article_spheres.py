@@ -11,7 +11,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import display_from_colour, scene_document
+from reflectance.papers.scenes import spheres_scene_article
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.io.tables import write_csv
@@ -21,30 +21,8 @@ with script_log(snakemake) as log:
     pigments, w = snakemake.params.pigments, snakemake.params.wavelengths
     grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
     folder = Path(snakemake.input.spectra[0]).parent  # spectra/: the clear coat and the pigments
-    objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
-                                                 "radius": s["radius"]},
-                "material": {"name": cfg["material"], "diffuse_material": s["diffuse_material"],
-                             "model": "CookTorrance1982", "distribution": cfg["distribution"],
-                             "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
-                             "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
-               for s in cfg["spheres"]]
+    doc = spheres_scene_article(cfg, w, colour, str(folder))
     metal = cfg["metal_sphere"]  # the article: "on metallic materials such as gold ..."
-    objects.append({"name": metal["name"], "geometry": {"type": "sphere", "center": metal["center"],
-                                                        "radius": metal["radius"]},
-                    "material": {"name": metal["material"], "model": "CookTorrance1982",
-                                 "distribution": cfg["distribution"], "convention": cfg["convention"],
-                                 "m": metal["m"], "s": 1.0, "d": 0.0, "fresnel": "exact",
-                                 "shadowing": "v-cavity"}})
-    objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
-                                                   "normal": [0, 0, 1], "size": [16, 16],
-                                                   "resolution": [32, 32]},
-                    "material": {"model": "Lambert", "convention": "physical",
-                                 "albedo": cfg["floor_albedo"]}})
-    doc = scene_document(cfg["camera"], objects,
-                         [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}], w, folder,
-                         observer=colour["observer"],
-                         ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
-                         display=display_from_colour(colour, illuminant=False))
     scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
     result = render_to_files(scene, out.scene, out.exr, out.render)
     image, scale = display_image(result)  # Cook & Torrance exposure over all three spheres

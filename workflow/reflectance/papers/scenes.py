@@ -463,7 +463,8 @@ def sweep_camera_Blinn1977(fig7, sweep):
 
 
 def spheres_scene_article(spheres, wavelengths, colour, spectra_dir):
-    """The article's pair of spheres (config ``figures.article.spheres``) on a grey floor."""
+    """The article's pair of plastic spheres and the gold one (config ``figures.article.spheres``)
+    on a grey floor."""
     cfg = spheres
     objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
                                                  "radius": s["radius"]},
@@ -472,6 +473,15 @@ def spheres_scene_article(spheres, wavelengths, colour, spectra_dir):
                              "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
                              "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
                for s in cfg["spheres"]]
+    metal = cfg.get("metal_sphere")  # the article: "on metallic materials such as gold ..."
+    if metal:
+        objects.append({"name": metal["name"],
+                        "geometry": {"type": "sphere", "center": metal["center"],
+                                     "radius": metal["radius"]},
+                        "material": {"name": metal["material"], "model": "CookTorrance1982",
+                                     "distribution": cfg["distribution"],
+                                     "convention": cfg["convention"], "m": metal["m"], "s": 1.0,
+                                     "d": 0.0, "fresnel": "exact", "shadowing": "v-cavity"}})
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
                                                    "normal": [0, 0, 1], "size": [16, 16],
                                                    "resolution": [32, 32]},
