@@ -22,6 +22,17 @@ def root():
 
 
 @pytest.fixture(scope="session")
+def built(root, tmp_path_factory):
+    """The whole workflow, `snakemake --cores 2`, run once per test session in a temporary copy
+    of the project; shared by every end-to-end test that reads (never changes) its results."""
+    from test_workflow import copy_project, snakemake
+
+    cwd = copy_project(root, tmp_path_factory.mktemp("workflow"))
+    snakemake(cwd, "--cores", "2")
+    return cwd
+
+
+@pytest.fixture(scope="session")
 def grid():
     from reflectance.optics.spectra import wavelength_grid
 
