@@ -5,12 +5,14 @@ The article's k_spec are not one quantity: Phong, Blinn-Phong, Heidrich-Seidel a
 N.L of the light, the Gaussian, Beckmann and mixture are bare facet distributions D(N.H), and its
 Cook-Torrance k_spec is a BRDF. Each panel is scaled to its own maximum."""
 
+import re
+
 import numpy as np
 import pandas as pd
 
 from reflectance.optics.brdf import brdf
 from reflectance.optics.microfacet import distribution
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -51,6 +53,31 @@ TITLES = {"phong": "Phong (R\u00b7V)$^n$", "blinn_phong": "Blinn-Phong (N\u00b7H
           "gaussian": "Gaussian", "beckmann": "Beckmann", "heidrich_seidel": "Heidrich-Seidel",
           "ward": "Ward", "cook_torrance": "Cook-Torrance", "mixture": "two Beckmann lobes"}
 
+SYMBOLS = {"rho_s": "$\\rho_s$", "alpha_x": "$\\alpha_x$", "alpha_y": "$\\alpha_y$", "thread_direction": "fibre D",
+           "tangent_x": "x axis", "lobes": "(w, m)"}
+
+
+def number_text(value):
+    """A parameter as the article writes it: 0.2, (1, 1, 0), or (0.4, 0.4), (0.6, 0.2) for lobes."""
+    if isinstance(value, (list, tuple)):
+        if value and isinstance(value[0], (list, tuple)):
+            return ", ".join(number_text(v) for v in value)
+        return "(" + ", ".join(f"{v:g}" for v in value) + ")"
+    return f"{value:g}"
+
+
+def parameters_text(q):
+    items = [f"{SYMBOLS.get(k, k)} = {number_text(v)}" for k, v in q.items()]
+    lines, line = [], ""
+    for item in items:  # at most about 30 printed characters per line
+        if line and len(re.sub(r"[$\\]|rho|alpha", "", line + item)) > 30:
+            lines.append(line)
+            line = item
+        else:
+            line = f"{line}, {item}" if line else item
+    return "\n".join(lines + [line])
+
+
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     N = np.array([0.0, 0.0, 1.0])
@@ -62,9 +89,9 @@ with script_log(snakemake) as log:
     theta_o = np.radians(np.arange(-90.0 + cfg["polar_step_deg"], 90.0 - 1e-9, cfg["polar_step_deg"]))
     L_dir, V_dir, _ = plane_of_incidence_vectors(np.radians(cfg["incidence_deg"]), theta_o)  # light at -x
 
-    fig = new_figure(12, 10.2)
-    grid = fig.add_gridspec(3, 4, height_ratios=[1, 1, 0.72], hspace=0.3, wspace=0.04, top=0.92,
-                            bottom=0.06, left=0.01, right=0.99)
+    fig = new_figure(PRINT_WIDTH_IN, 1.08 * PRINT_WIDTH_IN)
+    grid = fig.add_gridspec(3, 4, height_ratios=[1, 1, 0.95], hspace=0.5, wspace=0.06, top=0.9,
+                            bottom=0.07, left=0.01, right=0.99)
     curves = {"theta_o_deg": np.degrees(theta_o)}
     line_ax = fig.add_subplot(grid[2, :3])
     for i, (key, q) in enumerate(cfg["models"].items()):
@@ -72,26 +99,25 @@ with script_log(snakemake) as log:
         ax = fig.add_subplot(grid[i // 4, i % 4])
         ax.imshow(image / image.max(), origin="lower", extent=(-a, a, -a, a), cmap="inferno",
                   vmin=0, vmax=1, interpolation="nearest")
-        items = [f"{k} = {v}" for k, v in q.items()]
-        half = (len(items) + 1) // 2 if len(", ".join(items)) > 34 else len(items)
-        params = ", ".join(items[:half]) + ("\n" + ", ".join(items[half:]) if items[half:] else "")
-        ax.set_title(f"{TITLES[key]}\n{params}\nmax k$_{{spec}}$ = {image.max():.3g}", fontsize=8.5, pad=3)
+        ax.set_title(TITLES[key], pad=3)
+        ax.text(0.5, -0.03, f"{parameters_text(q)}\nmax k$_{{spec}}$ = {image.max():.3g}", transform=ax.transAxes,
+                ha="center", va="top", fontsize=TEXT_SIZE["table"], linespacing=1.25)
         ax.set_xticks([])
         ax.set_yticks([])
         curves[key] = k_spec(key, q, L_dir, V_dir, N)
-        line_ax.plot(np.degrees(theta_o), curves[key] / curves[key].max(), lw=1.4, label=TITLES[key],
+        line_ax.plot(np.degrees(theta_o), curves[key] / curves[key].max(), label=TITLES[key],
                      ls="-" if i % 2 == 0 else "--")
         log.info("%s: image max %.6g, plane-of-incidence max %.6g at %.2f deg", key, image.max(),
                  curves[key].max(), np.degrees(theta_o[np.argmax(curves[key])]))
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
-    line_ax.axvline(cfg["incidence_deg"], color="0.5", ls="--", lw=1)
+    line_ax.axvline(cfg["incidence_deg"], color="0.6", ls="-", lw=0.8, zorder=0)
     line_ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 15), ylim=(0, 1.05),
-                xlabel="viewing direction in the plane of incidence \u03b8o, mirror side (\u00b0; light at "
-                       f"\u2212{cfg['incidence_deg']:g}\u00b0, dashed: mirror direction)",
+                xlabel="view angle $\\theta_o$ in the plane of incidence (\u00b0; light at "
+                       f"\u2212{cfg['incidence_deg']:g}\u00b0; grey: the mirror direction)",
                 ylabel="k$_{spec}$ / its maximum")
-    line_ax.legend(ncol=1, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.02))
+    line_ax.legend(ncol=1, loc="upper left", bbox_to_anchor=(1.03, 1.05), labelspacing=0.3)
     line_ax.grid(True)
-    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: the article's k$_{spec}$ as printed, on a plane "
-                 f"z = 0 lit from {cfg['light_position']} and seen from {cfg['eye_position']} "
-                 "(each image scaled to its maximum)", fontsize=11)
+    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: the article's k$_{spec}$ as printed, on the plane z = 0\n"
+                 f"lit from {number_text(cfg['light_position'])}, seen from {number_text(cfg['eye_position'])}; "
+                 "each image and curve scaled to its maximum", y=0.995)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

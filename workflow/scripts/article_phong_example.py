@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 
 from reflectance.optics.brdf import brdf
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -73,22 +73,27 @@ with script_log(snakemake) as log:
     log.info("N.E = %.6g, N.L = %.6g; steps that disagree: %s", NE, NL,
              ", ".join(table.step[table.agree == "NO"]))
 
-    fig = new_figure(13, 0.45 + 0.24 * (len(table) + 1))
-    ax = fig.add_axes((0.01, 0.01, 0.98, 0.9))
+    row_in = 1.9 * TEXT_SIZE["table"] / 72  # a table row, in inches
+    fig = new_figure(PRINT_WIDTH_IN, row_in * (len(table) + 1) + 0.45)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0 - 0.45 / fig.get_figheight()))
     ax.axis("off")
     columns = ["formula", "as_printed", "recomputed", "agree", "from_printed_previous_step"]
     cells = ax.table(cellText=table[columns].values,
-                     colLabels=["step", "as printed in the article", "recomputed (exact inputs)",
-                                "agree?", "recomputed from the printed previous step"],
-                     loc="upper center", cellLoc="left", colWidths=[0.25, 0.19, 0.22, 0.07, 0.27])
+                     colLabels=["step", "as printed", "recomputed", "agree?", "from printed step before"],
+                     loc="upper center", cellLoc="left", colWidths=[0.28, 0.21, 0.2, 0.08, 0.23],
+                     bbox=(0.0, 0.0, 1.0, 1.0))
     cells.auto_set_font_size(False)
-    cells.set_fontsize(8.5)
-    cells.scale(1, 1.35)
+    cells.set_fontsize(TEXT_SIZE["table"])
     for (r, c), cell in cells.get_celld().items():
+        cell.set_edgecolor("0.8")
+        cell.set_linewidth(0.5)
+        cell.PAD = 0.03
         if r == 0:
             cell.set_text_props(weight="bold")
+            cell.set_facecolor("0.94")
         elif table.agree.iloc[r - 1] == "NO":
             cell.set_facecolor("#fbdada")
-    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d (oldid 793299363), Phong example recomputed: "
-                 f"N = {show(N)}, E = {show(E)}, L = {show(L)}, n = {n:g}", fontsize=10)
+    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: the Phong example recomputed from exact inputs\n"
+                 f"N = {show(N)}, E = {show(E)}, L = {show(L)}, n = {n:g}; red: off beyond the last printed digit",
+                 size=STYLE["axes.titlesize"], y=0.995, va="top")
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

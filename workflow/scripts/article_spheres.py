@@ -8,7 +8,7 @@ from pathlib import Path
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import STYLE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import spheres_scene_article
@@ -54,10 +54,10 @@ with script_log(snakemake) as log:
     ax.imshow(image, interpolation="nearest")
     ax.set_axis_off()
     names = ", ".join(pigments[s["diffuse_material"]]["notation"] for s in cfg["spheres"])
-    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: specular highlights on a pair of spheres\n"
+    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: the article's pair of plastic spheres, with a "
+                 f"{metal['name']} sphere between them\n"
                  f"the article's Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}\n"
                  f"clear coat F of {cfg['material']} over pigments Munsell {names}; middle: "
-                 f"{metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0)", fontsize=10,
-                 y=1 - 0.05 / (h + 0.95),
-                 va="top")
+                 f"{metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0)",
+                 size=STYLE["axes.titlesize"], y=1 - 0.05 / (h + 0.95), va="top")
     savefig(fig, out.png, dpi=100, tight=False)

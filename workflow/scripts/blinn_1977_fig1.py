@@ -4,18 +4,18 @@ simulated escaping fraction beside Blinn's closed form G = min(1, G_b, G_c)."""
 
 import pandas as pd
 
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.papers.vgroove_derivation import vgroove_case
 from reflectance.papers.vgroove_plot import COLOURS, draw_groove
 from reflectance.io.tables import write_csv
 
-TITLES = {"a": "(a) no attenuation", "b": "(b) reflected light partly masked",
-          "c": "(c) incident light partly shadowed"}
+TITLES = {"a": "(a) no attenuation", "b": "(b) reflected light masked",
+          "c": "(c) incident light shadowed"}
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
-    fig = new_figure(15, 5.6)
+    fig = new_figure(PRINT_WIDTH_IN, 0.5 * PRINT_WIDTH_IN)
     axes = fig.subplots(1, 3)
     rows = []
     for ax, name in zip(axes, sorted(cfg["cases"])):
@@ -28,15 +28,15 @@ with script_log(snakemake) as log:
         printed_sim = f"{r['G_simulated']:.4f}"
         printed_closed = f"{r['G_closed']:.4f}"
         draw_groove(ax, sim, names=True)
-        ax.set_title(TITLES[name], fontsize=12)
+        ax.set_title(TITLES[name])
         ax.text(0.5, -0.02,
-                f"L: \u03b8 = {light['theta_deg']:g}\u00b0, \u03c6 = {light['phi_deg']:g}\u00b0;  "
-                f"E: \u03b8 = {eye['theta_deg']:g}\u00b0, \u03c6 = {eye['phi_deg']:g}\u00b0;  "
-                f"\u03b1 = {r['alpha_deg']:.1f}\u00b0\n"
-                f"simulated ({cfg['n_rays']:,} rays): escaping fraction = {printed_sim}\n"
-                f"closed form: min(1, G_b, G_c) = min(1, {r['G_b']:.3f}, {r['G_c']:.3f}) = "
-                f"{printed_closed}",
-                transform=ax.transAxes, ha="center", va="top", fontsize=10, linespacing=1.5)
+                f"L (\u03b8, \u03c6) = ({light['theta_deg']:g}\u00b0, {light['phi_deg']:g}\u00b0), "
+                f"E = ({eye['theta_deg']:g}\u00b0, {eye['phi_deg']:g}\u00b0)\n"
+                f"\u03b1 = {r['alpha_deg']:.1f}\u00b0;  $G_b$ = {r['G_b']:.3f}, $G_c$ = {r['G_c']:.3f}\n"
+                f"min(1, $G_b$, $G_c$) = {printed_closed}\n"
+                f"simulated ({cfg['n_rays']:,} rays): {printed_sim}",
+                transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"],
+                linespacing=1.4)
         rows.append({
             "case": name, "L_theta_deg": light["theta_deg"], "L_phi_deg": light["phi_deg"],
             "E_theta_deg": eye["theta_deg"], "E_phi_deg": eye["phi_deg"],
@@ -52,9 +52,9 @@ with script_log(snakemake) as log:
     fig.legend(handles, ["incident ray (along L')", "reflected ray, escapes (along E')",
                          "reflected ray, masked", "ray landing on the other side",
                          "facet with normal H", "blocked part of the facet (black: shadowed)"],
-               loc="lower center", ncol=3, frameon=False, fontsize=9.5)
-    fig.suptitle("Blinn 1977, Fig. 1 \u2014 the three cases of the V-groove, in the plane of N "
-                 "and H (L', E': projections of L, E)", fontsize=13)
-    fig.subplots_adjust(left=0.01, right=0.99, top=0.9, bottom=0.25, wspace=0.05)
+               loc="lower center", ncol=2, bbox_to_anchor=(0.5, 0.0))
+    fig.suptitle("Blinn 1977, Fig. 1 \u2014 the three cases of the V-groove, in the plane of N and H",
+                 y=0.99)
+    fig.subplots_adjust(left=0.005, right=0.995, top=0.88, bottom=0.36, wspace=0.04)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.DataFrame(rows).pipe(write_csv, snakemake.output.csv, float_format="%.6g")

@@ -5,7 +5,7 @@ Blinn's angles a..f. Every point and number comes from the ray simulation of the
 import numpy as np
 import pandas as pd
 
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.papers.vgroove_derivation import groove_angles_Blinn1977, vgroove_case
 from reflectance.papers.vgroove_plot import (COLOURS, draw_angle, draw_arrow, draw_dimension, draw_groove,
@@ -44,20 +44,33 @@ with script_log(snakemake) as log:
                 f"d + a = {deg['d']:.2f}\u00b0 + {deg['a']:.2f}\u00b0 = {deg['d'] + deg['a']:.2f}\u00b0",
     }
 
-    fig = new_figure(16, 6.4)
-    ax2, ax3, ax4 = fig.subplots(1, 3)
+    # On the figure the same numbers as text[...] (the CSV), broken into lines that fit a third of the page.
+    shown = {
+        "fig2": f"L\u00b7g = {r['L'] @ axis:+.4f}, E\u00b7g = {r['E'] @ axis:+.4f}:\nequal and opposite, "
+                f"so H lies in the N-H plane\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f}; with {V}': {ratio_2d:.4f}",
+        "fig3": f"1 \u2212 m/l = 1 \u2212 {g.m_over_l_lengths:.4f} = {1 - g.m_over_l_lengths:.4f}\n"
+                f"simulated ({cfg['n_rays']:,} points): {r[sim_name]:.4f}\n"
+                f"closed form ${G_name}$ = {r[G_name]:.4f}",
+        "fig4": f"m/l = sin f / sin b = {g.m_over_l_sines:.4f}\n"
+                f"(f = {deg['f']:.2f}\u00b0, b = {deg['b']:.2f}\u00b0)\n"
+                f"sin b = {np.sin(g.b):.4f} = cos e = {np.cos(g.e):.4f}\n"
+                f"c = {deg['c']:.2f}\u00b0 = 2d;  d + a = {deg['d'] + deg['a']:.2f}\u00b0",
+    }
+
+    fig = new_figure(PRINT_WIDTH_IN, 0.5 * PRINT_WIDTH_IN)
+    ax2, ax3, ax4 = fig.subplots(1, 3, gridspec_kw={"width_ratios": [1, 1.1, 1.1]})
     draw_top_view(ax2, sim, r["L"], r["E"], r["H"])  # Fig. 2: looking down N
-    ax2.set_title("Fig. 2 \u2014 top view (seen along N)", fontsize=12)
+    titles = {"fig2": "Fig. 2 \u2014 top view (along N)", "fig3": f"Fig. 3 \u2014 1 \u2212 m/l {verb}",
+              "fig4": "Fig. 4 \u2014 m/l, law of sines"}
     # Fig. 3: the part of the facet whose light escapes.
     draw_groove(ax3, sim, names=True)
     draw_dimension(ax3, g.A, g.B, -sim.H2 * 0.13, "l")
     draw_dimension(ax3, g.P, g.B, -sim.H2 * 0.3, "m")
-    ax3.set_title(f"Fig. 3 \u2014 light which {verb} is 1 \u2212 m/l", fontsize=12)
     # Fig. 4: the triangle B, C, P and Blinn's angles.
     draw_groove(ax4, sim, rays=False, vectors=False, names=True)
     ax4.plot(*np.column_stack([g.P, g.C]), color=COLOURS[colour], lw=1.4)
     ax4.plot(*np.column_stack([g.B, g.B + [0, -g.B[1]]]), color="0.4", ls="--", lw=0.8)
-    ax4.text(*(g.P - 0.09 * sim.H2), "P", ha="center", va="center", fontsize=11)
+    ax4.text(*(g.P + [-0.09, 0.07]), "P", ha="center", va="center", fontsize=TEXT_SIZE["symbol"])
     draw_arrow(ax4, g.P, 0.45 * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
     draw_arrow(ax4, g.P, 0.45 * sim.H2, "H", "k")
     draw_arrow(ax4, g.P, 0.55 * V2, f"{V}'", COLOURS[colour])
@@ -66,20 +79,21 @@ with script_log(snakemake) as log:
             (g.P, up, sim.H2, 0.3, "a"), (g.P, sim.H2, V2, 0.22, "e"), (g.P, g.B - g.P, V2, 0.14, "b"),
             (g.B, g.A - g.B, g.C - g.B, 0.08, "c"), (g.B, up, g.C - g.B, 0.22, "d"),
             (g.C, g.B - g.C, g.P - g.C, 0.35, "f")):
-        draw_angle(ax4, vertex, u, v, radius, label)
+        draw_angle(ax4, vertex, u, v, radius, label, label_radius={"b": 1.9, "c": 1.7}.get(label, 1.45))
     side = np.array([np.sin(sim.alpha), -np.cos(sim.alpha)]) * 0.16  # outside BC
     draw_dimension(ax4, g.B, g.C, side, "l")
     draw_dimension(ax4, g.P, g.B, -sim.H2 * 0.16, "m")
     ax4.set(xlim=(g.A[0] - 0.1, g.C[0] + 0.25), ylim=(g.B[1] - 0.4, 0.6))
-    ax4.set_title("Fig. 4 \u2014 measurement of m/l (law of sines)", fontsize=12)
-    for ax, key in ((ax2, "fig2"), (ax3, "fig3"), (ax4, "fig4")):
-        ax.text(0.5, -0.04 if key != "fig2" else -0.1, text[key], transform=ax.transAxes,
-                ha="center", va="top", fontsize=9.5, linespacing=1.5)
-    fig.suptitle(f"Blinn 1977, Figs. 2-4 \u2014 case {name} of Fig. 1 (L: \u03b8 = "
-                 f"{case['light']['theta_deg']:g}\u00b0, \u03c6 = {case['light']['phi_deg']:g}\u00b0; "
-                 f"E: \u03b8 = {case['eye']['theta_deg']:g}\u00b0, \u03c6 = {case['eye']['phi_deg']:g}\u00b0)",
-                 fontsize=13)
-    fig.subplots_adjust(left=0.03, right=0.99, top=0.88, bottom=0.2, wspace=0.08)
+    fig.subplots_adjust(left=0.03, right=0.995, top=0.84, bottom=0.32, wspace=0.1)
+    for ax, key in ((ax2, "fig2"), (ax3, "fig3"), (ax4, "fig4")):  # aligned across the panels
+        box = ax.get_position()  # titles and notes on common lines (equal-aspect drawings differ in height)
+        fig.text((box.x0 + box.x1) / 2, 0.86, titles[key], ha="center", va="bottom",
+                 size=STYLE["axes.titlesize"])
+        fig.text((box.x0 + box.x1) / 2, 0.25, shown[key], ha="center", va="top",
+                 fontsize=TEXT_SIZE["annotation"], linespacing=1.4)
+    fig.suptitle(f"Blinn 1977, Figs. 2\u20134 \u2014 case {name} of Fig. 1: L (\u03b8, \u03c6) = "
+                 f"({case['light']['theta_deg']:g}\u00b0, {case['light']['phi_deg']:g}\u00b0), E = "
+                 f"({case['eye']['theta_deg']:g}\u00b0, {case['eye']['phi_deg']:g}\u00b0)", y=0.99)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     row = {"case": name, "blocked": blocked, **{f"{k}_deg": v for k, v in deg.items()},
            "m": g.m, "l": g.l, "m_over_l_lengths": g.m_over_l_lengths,

@@ -5,10 +5,11 @@ from pathlib import Path
 
 import colour
 
+import numpy as np
 import pandas as pd
 
 from reflectance.colour.colorimetry import illuminant_sd
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.fresnel import F0_from_nk
 from reflectance.optics.spectra import load_material, read_spectrum_csv, wavelength_grid
@@ -28,28 +29,33 @@ with script_log(snakemake) as log:
                           f"{colour_cfg['illuminant']}": light, "reflected": reflected})
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(10, 4.2)
+    name = paper_name(material.name)
+    fig = new_figure(PRINT_WIDTH_IN, 0.42 * PRINT_WIDTH_IN)
     ax_a, ax_b = fig.subplots(1, 2)
-    ax_a.plot(grid * scale, material.F0, color="#b3672b", label="from n, k interpolated linearly")
+    ax_a.plot(grid * scale, material.F0, color="#b3672b", label="from n, k (linear interpolation)")
     raw = read_spectrum_csv(snakemake.input.spectrum)
     raw = raw[(raw.wavelength_nm >= grid[0]) & (raw.wavelength_nm <= grid[-1])]
     if "n" in raw:
-        ax_a.plot(raw.wavelength_nm * scale, F0_from_nk(raw.n, raw.k), "o", ms=4,
-                  color="#5a3315", label="measured points")
-    ax_a.legend(frameon=False, loc="lower right")
-    ax_a.set(xlabel=f"wavelength ({unit})", ylabel="normal reflectance F0", ylim=(0, 1),
-             title=f"(a) {material.name} mirror, normal incidence")
+        ax_a.plot(raw.wavelength_nm * scale, F0_from_nk(raw.n, raw.k), "o", ms=3,
+                  color="#5a3315", label="measured n, k")
+    ax_a.legend(loc="lower right")
+    ax_a.set(xlabel=f"wavelength ({unit})", ylabel="normal reflectance $F_0$", ylim=(0, 1),
+             title=f"(a) {name} mirror, normal incidence")
     ax_b.plot(grid * scale, light, color="0.3", label=f"CIE {colour_cfg['illuminant']}")
     tabulated_end = colour.SDS_ILLUMINANTS[colour_cfg["illuminant"]].shape.end
     if grid[-1] > tabulated_end:  # colour-science's table stops here; beyond it, held constant
         ax_b.axvspan(tabulated_end * scale, grid[-1] * scale, color="0.92", zorder=0,
-                     label="beyond the tabulated SPD (held constant)")
-    ax_b.plot(grid * scale, reflected, color="#b3672b", label=f"reflected by {material.name}")
+                     label="held constant (past the table)")
+    ax_b.plot(grid * scale, reflected, color="#b3672b", label=f"reflected by {name}")
     ax_b.set(xlabel=f"wavelength ({unit})", ylabel="relative spectral energy",
+             ylim=(0, 1.45 * light.max()),
              title="(b) spectral energy distributions")
-    ax_b.legend(frameon=False)
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 4 \u2014 {material.name} "
-                 f"({material.kind} n,k; {grid[0]:g}-{grid[-1]:g} nm)")
-    fig.tight_layout()
+    ax_b.legend(loc="upper right")  # above the curves
+    for ax in (ax_a, ax_b):
+        ax.set_xticks(np.round(np.arange(0.4, grid[-1] * scale + 1e-9, 0.1), 1) if unit != "nm"
+                      else np.arange(400, grid[-1] + 1e-9, 100))
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 4 \u2014 {name} ({material.kind} n, k; "
+                 f"{grid[0]:g}\u2013{grid[-1]:g} nm)")
+    fig.tight_layout(w_pad=1.5)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     log.info("F0 of %s: %.4f .. %.4f", material.name, material.F0.min(), material.F0.max())

@@ -14,13 +14,13 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.audit.colour_shift import (COLOUR_METHODS, approximation_onset_CookTorrance1982,
                                             colour_table)
 from reflectance.io.images import write_exr_XYZ
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.io.tables import write_csv
 
-LABELS = {"exact": "(b) exact n, k", "approximation": "(c) C&T approximation",
-          "fitted": "k = 0 fit per wavelength", "schlick": "Schlick 1994", "f82": "F82 tint"}
+LABELS = {"exact": "(b) exact n, k", "approximation": "(c) C&T approx.",
+          "fitted": "k = 0 fit per \u03bb", "schlick": "Schlick 1994", "f82": "F82 tint"}
 
 with script_log(snakemake) as log:
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
@@ -56,26 +56,29 @@ with script_log(snakemake) as log:
         "rows": ",".join(rows), "angles_deg": ",".join(f"{a:g}" for a in angles),
         "illuminant": colour_cfg["illuminant"], "observer": colour_cfg["observer"]})
 
-    fig = new_figure(11.0, 1.2 + 0.42 * len(rows))
-    grid_spec = fig.add_gridspec(1, 3, width_ratios=[len(angles) * 0.5, 3.0, 3.0], wspace=0.08)
+    name = paper_name(material.name)
+    fig = new_figure(PRINT_WIDTH_IN, 0.9 + 0.3 * len(rows))
+    grid_spec = fig.add_gridspec(1, 3, width_ratios=[len(angles) * 0.5, 2.2, 2.2], wspace=0.12,
+                                 top=1 - 0.75 / fig.get_figheight(), bottom=0.38 / fig.get_figheight(),
+                                 left=0.15, right=0.995)
     ax = fig.add_subplot(grid_spec[0], facecolor="black")  # white swatches stay visible
     for i, method in enumerate(rows):
         part = table[table.method == method]
         for j, (_, r) in enumerate(part.iterrows()):
             y = len(rows) - 1 - i
-            ax.add_patch(Rectangle((j + 0.04, y + 0.34), 0.92, 0.62, color=(r.R, r.G, r.B)))
+            ax.add_patch(Rectangle((j + 0.05, y + 0.36), 0.9, 0.6, color=(r.R, r.G, r.B)))
             if method != "exact":
-                ax.text(j + 0.5, y + 0.17, f"{r.dE2000_vs_exact:.1f}", ha="center",
-                        va="center", fontsize=7.5, color="white")
+                ax.text(j + 0.5, y + 0.18, f"{r.dE2000_vs_exact:.1f}", ha="center",
+                        va="center", fontsize=TEXT_SIZE["table"] - 1, color="white")
     ax.set(xlim=(0, len(angles)), ylim=(0, len(rows)))
-    ax.set_xticks(np.arange(len(angles)) + 0.5, [f"{a:g}" for a in angles])
-    ax.set_yticks(np.arange(len(rows)) + 0.62, [LABELS.get(m, m) for m in reversed(rows)])
+    ax.set_xticks(np.arange(len(angles)) + 0.5, [f"{a:g}" for a in angles], fontsize=TEXT_SIZE["table"])
+    ax.set_yticks(np.arange(len(rows)) + 0.66, [LABELS.get(m, m) for m in reversed(rows)])
     ax.tick_params(length=0)
     for side in ax.spines.values():
         side.set_visible(False)
-    ax.set_xlabel("incidence angle \u03b8 (\u00b0); white numbers: CIEDE2000 vs (b)")
-    ax.set_title("swatches at the paper's angles", loc="left")
-    for k, (lo, ticks) in enumerate(((0.0, np.arange(0, 91, 15)), (st["fine_from_deg"], None))):
+    ax.set_xlabel("\u03b8 (\u00b0); white: \u0394E$_{00}$ from (b)")
+    ax.set_title("the paper's angles", fontsize=TEXT_SIZE["annotation"], pad=3)
+    for k, (lo, ticks) in enumerate(((0.0, np.arange(0, 91, 30)), (st["fine_from_deg"], None))):
         sax = fig.add_subplot(grid_spec[k + 1], facecolor="black")
         for i, method in enumerate(rows):
             part = strip[(strip.method == method) & (strip.angle_deg >= lo)]
@@ -83,24 +86,21 @@ with script_log(snakemake) as log:
             edges = np.concatenate([[lo], (part.angle_deg.to_numpy()[1:]
                                            + part.angle_deg.to_numpy()[:-1]) / 2, [90.0]])
             y = len(rows) - 1 - i
-            sax.pcolormesh(edges, [y + 0.34, y + 0.96], rgb, shading="flat", rasterized=True)
+            sax.pcolormesh(edges, [y + 0.36, y + 0.96], rgb, shading="flat", rasterized=True)
         if lo > 0:
             sax.axvline(onset["onset_deg"], color="white", lw=0.8, ls=(0, (2, 2)))
         sax.set(xlim=(lo, 90), ylim=(0, len(rows)), yticks=[])
-        sax.set_xticks(ticks if ticks is not None else np.arange(lo, 90.1, 2))
+        sax.set_xticks(ticks if ticks is not None else np.arange(lo, 90.1, 5))
         sax.tick_params(axis="y", length=0)
         for side in ("left", "right", "top"):
             sax.spines[side].set_visible(False)
-        sax.set_xlabel("\u03b8 (\u00b0, proportional axis)")
-        sax.set_title(f"{lo:g}\u201390\u00b0, step {st['fine_step_deg']:g}\u00b0; dashed: (c) leaves "
-                      f"copper at {onset['onset_deg']:.2f}\u00b0" if lo > 0 else
-                      f"continuous strip, 0\u201390\u00b0", loc="left", fontsize=9)
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {material.name} under "
-                 f"{colour_cfg['illuminant']} against the incidence angle ({colour_cfg['space']}, gamut clip "
-                 f"{colour_cfg['gamut_clip']})\n(c) interpolates with F of n = {onset['n_average']:.1f}, "
-                 f"the k = 0 index of the average F0 = {onset['F0_average']:.3f}; F \u2212 F0 < 0 "
-                 f"(clamped by max(0, \u2026)) up to {onset['onset_deg']:.2f}\u00b0", y=0.995)
-    fig.subplots_adjust(top=0.78, bottom=0.14, left=0.1, right=0.99)
+        sax.set_xlabel("\u03b8 (\u00b0)")
+        sax.set_title(f"{lo:g}\u201390\u00b0" + (f", step {st['fine_step_deg']:g}\u00b0" if lo > 0 else ""),
+                      fontsize=TEXT_SIZE["annotation"], pad=3)
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {name} against the incidence angle "
+                 f"({colour_cfg['illuminant']}, {colour_cfg['space']})\n"
+                 f"swatches, then continuous strips on a proportional angle axis; dashed: (c) leaves copper "
+                 f"at {onset['onset_deg']:.2f}\u00b0", y=0.995, va="top")
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     for method in rows:
         log.info("%s: max dE2000 vs exact %.3f (%s)", method,

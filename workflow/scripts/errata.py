@@ -4,43 +4,52 @@ row's function in reflectance.papers.errata, and the test that shows it."""
 
 import textwrap
 
-import numpy as np
-
 from reflectance.papers.errata import errata_table
 
 
 def render(table, png, pdf):
-    from reflectance.io.figures import new_figure, savefig
+    """The table as a figure at print width: per erratum, where it is (left) and what it is (right)."""
+    from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 
-    widths = {"text": 16, "location": 34, "printed": 48, "correct": 60, "consequence": 60,
-              "test": 52}
-    xs = np.cumsum([0.004] + [0.00345 * (w + 2) for w in list(widths.values())[:-1]])
-    short = table.assign(text=table.text.str.split(" (", regex=False).str[0],
-                         test=table.test.str.replace("::", ":: "))
-    cells = [[textwrap.wrap(str(r[c]), w, break_long_words=False) or [""]
-              for c, w in widths.items()] for _, r in short.iterrows()]
-    heights = [max(len(c) for c in row) for row in cells]
-    fig = new_figure(24, 0.9 + 0.155 * (sum(heights) + 0.6 * len(heights)))
-    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0 - 0.55 / fig.get_figheight()))
+    x_where, x_label, x_text = 0.005, 0.215, 0.335  # column edges, fractions of the width
+    wrap = {"where": 25, "text": 82, "test": 62}     # characters per line (the test in monospace)
+    fields = (("printed", "As printed"), ("correct", "Correct / other"), ("consequence", "Computed"),
+              ("test", "Test"))
+    blocks = []
+    for _, r in table.iterrows():
+        where = [(str(r.text).split(" (")[0], "bold")] + [
+            (line, "normal") for line in textwrap.wrap(str(r.location), wrap["where"])]
+        what = [(label if i == 0 else "", line, key) for key, label in fields
+                for i, line in enumerate(textwrap.wrap(str(r[key]).replace("::", ":: "), wrap.get(key, wrap["text"]),
+                                                       break_long_words=False) or [""])]
+        blocks.append((where, what, max(len(where), len(what))))
+    gap = 0.7  # lines between errata
+    total = sum(h for *_, h in blocks) + gap * len(blocks)
+    line_in = 1.4 * TEXT_SIZE["table"] / 72
+    fig = new_figure(PRINT_WIDTH_IN, (total + 3.5) * line_in + 0.3)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0 - 0.3 / fig.get_figheight()))
     ax.set_axis_off()
-    total = sum(heights) + 0.6 * len(heights)
     ax.set_xlim(0, 1)
-    ax.set_ylim(total + 1.6, -1.6)
-    for x, title in zip(xs, ("Text", "Location", "As printed", "Correct / other text",
-                             "Consequence (computed)", "Test that shows it")):
-        ax.text(x, -0.8, title, fontsize=9, fontweight="bold", va="center")
+    ax.set_ylim(total + 1.5, -2.4)
+    ax.text(x_where, -1.2, "Text, location", fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
+    ax.text(x_label, -1.2, "What the text prints, what it should, what follows (computed), and the test",
+            fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
+    ax.axhline(-0.55, color="0.2", lw=0.8)
     y = 0.0
-    for i, (row, h) in enumerate(zip(cells, heights)):
+    for i, (where, what, h) in enumerate(blocks):
         if i % 2 == 0:
-            ax.axhspan(y - 0.3, y + h + 0.3 - 0.6 + 0.3, color="0.93", lw=0)
-        for j, (x, lines) in enumerate(zip(xs, row)):
-            ax.text(x, y, "\n".join(lines), fontsize=7.5, va="top", linespacing=1.25,
-                    family="monospace" if j == len(xs) - 1 else None)
-        y += h + 0.6
+            ax.axhspan(y - 0.5 - gap / 2, y + h - 0.5 + gap / 2, color="0.94", lw=0)
+        for j, (line, weight) in enumerate(where):
+            ax.text(x_where, y + j, line, fontsize=TEXT_SIZE["table"], va="center", fontweight=weight)
+        for j, (label, line, key) in enumerate(what):
+            ax.text(x_label, y + j, label, fontsize=TEXT_SIZE["table"], va="center", color="0.35")
+            ax.text(x_text, y + j, line, fontsize=TEXT_SIZE["table"], va="center",
+                    family="monospace" if key == "test" else None)
+        y += h + gap
     sources = sorted(set(table.text[table.text.str.contains(" (", regex=False)]))
-    ax.text(0.004, total + 0.9, "; ".join(sources), fontsize=8, color="0.3", va="bottom")
-    fig.suptitle("Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article "
-                 "disagree with each other or with arithmetic", fontsize=11, y=0.995, va="top")
+    ax.text(x_where, total + 0.6, "; ".join(sources), fontsize=TEXT_SIZE["table"], color="0.3", va="center")
+    fig.suptitle("Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article disagree\n"
+                 "with each other or with arithmetic", size=STYLE["axes.titlesize"], y=0.998, va="top")
     savefig(fig, png, pdf)
 
 

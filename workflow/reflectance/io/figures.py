@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
-__all__ = ["STYLE", "OKABE_ITO", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
+__all__ = ["STYLE", "OKABE_ITO", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
            "save_plotter"]
 
 OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
@@ -72,6 +72,17 @@ STYLE = {
     "savefig.pad_inches": 0.04,
 }
 """The project's matplotlib style (see the module docstring)."""
+
+PRINT_WIDTH_IN = 7.0
+"""Width (inches) at which a full-width figure is drawn, and printed: a two-column page's text width."""
+
+TEXT_SIZE = {
+    "symbol": 9.5,       # a vector or angle name drawn on a diagram (N, H, L', a, b, ...)
+    "annotation": 8.0,   # numbers and notes written on or under a plot
+    "table": 7.5,        # the body of a table drawn as a figure (the smallest text of the project)
+}
+"""Font sizes (points, at :data:`PRINT_WIDTH_IN`) of the text a figure writes itself, beyond :data:`STYLE`'s
+axis, tick, legend and title sizes; every figure script takes them from here, never a literal."""
 
 
 def paper_name(name):

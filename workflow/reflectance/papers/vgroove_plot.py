@@ -15,6 +15,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Arc, Polygon
 
+from reflectance.io.figures import TEXT_SIZE
+
 __all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle", "draw_dimension"]
 
 #: Colours (Okabe-Ito, readable by colour-blind readers) of the groove drawings.
@@ -30,11 +32,11 @@ def draw_arrow(ax, start, vector, label=None, color="k", **kwargs):
                                 **kwargs))
     if label:
         tip = start + vector * (1 + 0.14 / max(np.linalg.norm(vector), 1e-9))
-        ax.text(*tip, label, color=color, ha="center", va="center", fontsize=11, zorder=6,
+        ax.text(*tip, label, color=color, ha="center", va="center", fontsize=TEXT_SIZE["symbol"], zorder=6,
                 bbox=dict(facecolor="white", edgecolor="none", alpha=0.85, pad=0.6))
 
 
-def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=11, label_radius=1.45):
+def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_radius=1.45):
     """Arc of the (smaller) angle between directions u and v at ``vertex``, labelled at its bisector."""
     a1, a2 = np.degrees(np.arctan2(u[1], u[0])), np.degrees(np.arctan2(v[1], v[0]))
     if (a2 - a1) % 360 > 180:  # draw counter-clockwise over the smaller angle
@@ -42,7 +44,7 @@ def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=11, label_ra
     ax.add_patch(Arc(vertex, 2 * radius, 2 * radius, theta1=a1, theta2=a2, color=color, lw=1.1))
     mid = np.radians(a1 + ((a2 - a1) % 360) / 2)
     ax.text(*(np.asarray(vertex) + label_radius * radius * np.array([np.cos(mid), np.sin(mid)])),
-            label, ha="center", va="center", fontsize=fontsize, color=color)
+            label, ha="center", va="center", fontsize=fontsize or TEXT_SIZE["symbol"], color=color)
 
 
 def draw_dimension(ax, P0, P1, offset, label, color="k"):
@@ -53,8 +55,8 @@ def draw_dimension(ax, P0, P1, offset, label, color="k"):
                                                       mutation_scale=4, shrinkA=0, shrinkB=0))
     for P, Q in ((P0, Q0), (P1, Q1)):
         ax.plot(*np.column_stack([P, Q + 0.25 * offset]), color=color, lw=0.5, ls=":")
-    ax.text(*((Q0 + Q1) / 2 + 0.9 * offset), label, ha="center", va="center", fontsize=12,
-            color=color, style="italic")
+    ax.text(*((Q0 + Q1) / 2 + 0.9 * offset), label, ha="center", va="center",
+            fontsize=TEXT_SIZE["symbol"], color=color, style="italic")
 
 
 def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=True, names=False):
@@ -103,7 +105,7 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])
     if names:
         for P, name, dy, va in ((A, "A", 0.06, "bottom"), (B, "B", -0.1, "top"), (C, "C", 0.06, "bottom")):
-            ax.text(P[0], P[1] + dy * h, name, ha="center", va=va, fontsize=11, zorder=6,
+            ax.text(P[0], P[1] + dy * h, name, ha="center", va=va, fontsize=TEXT_SIZE["symbol"], zorder=6,
                     bbox=dict(facecolor="white", edgecolor="none", alpha=0.85, pad=0.5))
     ax.set_aspect("equal")
     ax.set_xlim(-1.75 * h, 1.75 * h)
@@ -132,7 +134,8 @@ def draw_top_view(ax, sim, L, E, H):
     for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
         ax.axvline(u, color="k", lw=1, ls=ls)
     ax.axhline(0, color="0.4", lw=0.8, ls="-.")
-    ax.text(1.28, 0.04, "plane of N and H\n(edge-on)", ha="right", va="bottom", fontsize=9, color="0.3")
+    ax.text(0.94, -1.02, "dash-dot:\nplane of N, H\n(edge-on)", ha="right", va="bottom",
+            fontsize=TEXT_SIZE["annotation"], color="0.3")
     O = np.array([-0.5, 0.0])
     for vec, label, c in ((L, "L", COLOURS["light"]), (E, "E", COLOURS["eye"]), (H, "H", "k")):
         top = np.array([vec @ t, vec @ axis])
@@ -140,10 +143,10 @@ def draw_top_view(ax, sim, L, E, H):
         if label != "H":
             ax.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
             ax.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
-            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=11,
+            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=TEXT_SIZE["symbol"],
                     ha="center", va="bottom" if top[1] < 0 else "top")
     for u, label in ((-1, "A"), (0, "B"), (1, "C")):
-        ax.text(u, 1.06, label, ha="center", va="top", fontsize=11,
+        ax.text(u, 1.06, label, ha="center", va="top", fontsize=TEXT_SIZE["symbol"],
                 bbox=dict(facecolor="white", edgecolor="none", pad=1))
     ax.set(xlim=(-1.3, 1.3), ylim=(-1.1, 1.1), aspect="equal", xticks=[], yticks=[],
            xlabel="t: direction of H's tilt", ylabel="g: along the groove")
