@@ -1,7 +1,9 @@
 """Audit: how far each shortcut of the papers lies from the exact spectral answer.
 
 Modules: colour_shift (a smooth material's colour against angle, per Fresnel method); shortcuts
-(the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS).
+(the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS);
+rgb_render (a scene rendered spectrally and as a three-channel RGB renderer would); gamut (what
+each gamut clip does to a rendered figure's colours).
 
 Public names are loaded on first use (``from reflectance.audit import name``), so importing
 the package stays cheap.
@@ -10,7 +12,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("colour_shift", "shortcuts")
+_MODULES = ("colour_shift", "shortcuts", "rgb_render", "gamut")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -37,6 +39,14 @@ _EXPORTS = {
     "first_angle_above": "shortcuts",
     "format_audit_csv": "shortcuts",
     "write_audit": "shortcuts",
+    "render_spectral_and_rgb": "rgb_render",
+    "display_exposure": "rgb_render",
+    "dE2000_map": "rgb_render",
+    "dE2000_statistics": "rgb_render",
+    "exr_display_RGB": "gamut",
+    "out_of_gamut": "gamut",
+    "hue_difference_deg": "gamut",
+    "clip_differences": "gamut",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -226,13 +226,11 @@ def _XYZ_gulbrandsen(material, cos_theta, W):
 
 
 def _XYZ_rgb(material, cos_theta, W, space):
-    from reflectance.colour.display import XYZ_to_linear_RGB, linear_RGB_to_XYZ
+    from reflectance.render.shading import fresnel_XYZ_rgb
 
-    white = W.sum(axis=0)
-    F0_rgb = np.clip(XYZ_to_linear_RGB(material.F0 @ W, space, illuminant=white), 0.0, 1.0)
-    # Schlick 1994 per display channel: F = F0 + (1 - F0)(1 - c)^5.
-    F_rgb = F0_rgb + (1.0 - F0_rgb) * (1.0 - cos_theta[:, None]) ** 5
-    return linear_RGB_to_XYZ(F_rgb, space, illuminant=white)
+    # the RGB renderer's F0 per display channel and Schlick 1994 per channel (one definition,
+    # shared with the RGB render of audit 2)
+    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space)
 
 
 def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):

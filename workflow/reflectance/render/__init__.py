@@ -74,6 +74,8 @@ _EXPORTS = {
     "ambient_intensity": "shading",
     "emission_XYZ": "shading",
     "fresnel_XYZ_table": "shading",
+    "fresnel_XYZ_rgb": "shading",
+    "fresnel_XYZ_table_rgb": "shading",
     "lookup_table": "shading",
     "shade": "shading",
     "shadow_mask": "shadows",
