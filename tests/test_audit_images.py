@@ -150,7 +150,7 @@ def test_rgb_table_at_normal_incidence_is_the_exact_F0_inside_the_gamut():
 def test_rgb_render_of_a_flat_material_equals_the_spectral_render():
     """The whole render path: a flat metal with spectral Schlick F renders with dE2000 0 as the
     RGB renderer (one visibility pass, Fig. 6's lights and exposure, a tiny image)."""
-    from reflectance.audit.rgb_render import (dE2000_map, display_exposure,
+    from reflectance.render.rgb import (dE2000_map, display_exposure,
                                               render_spectral_and_rgb)
     from reflectance.papers.scenes import vase_scene_CookTorrance1982
     from reflectance.render.scene import scene_from_dict

@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.colors import BoundaryNorm
 
-from reflectance.audit.rgb_render import (dE2000_map, dE2000_statistics, display_exposure,
+from reflectance.render.rgb import (dE2000_map, dE2000_statistics, display_exposure,
                                           render_spectral_and_rgb)
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import XYZ_to_display, XYZ_to_linear_RGB

@@ -2,8 +2,7 @@
 
 Modules: colour_shift (a smooth material's colour against angle, per Fresnel method); shortcuts
 (the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS);
-rgb_render (a scene rendered spectrally and as a three-channel RGB renderer would); gamut (what
-each gamut clip does to a rendered figure's colours).
+gamut (what each gamut clip does to a rendered figure's colours).
 
 Public names are loaded on first use (``from reflectance.audit import name``), so importing
 the package stays cheap.
@@ -12,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("colour_shift", "shortcuts", "rgb_render", "gamut")
+_MODULES = ("colour_shift", "shortcuts", "gamut")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -39,10 +38,6 @@ _EXPORTS = {
     "first_angle_above": "shortcuts",
     "format_audit_csv": "shortcuts",
     "write_audit": "shortcuts",
-    "render_spectral_and_rgb": "rgb_render",
-    "display_exposure": "rgb_render",
-    "dE2000_map": "rgb_render",
-    "dE2000_statistics": "rgb_render",
     "exr_display_RGB": "gamut",
     "out_of_gamut": "gamut",
     "hue_difference_deg": "gamut",

@@ -226,7 +226,7 @@ def _XYZ_gulbrandsen(material, cos_theta, W):
 
 
 def _XYZ_rgb(material, cos_theta, W, space):
-    from reflectance.render.shading import fresnel_XYZ_rgb
+    from reflectance.colour.display import fresnel_XYZ_rgb
 
     # the RGB renderer's F0 per display channel and Schlick 1994 per channel (one definition,
     # shared with the RGB render of audit 2)

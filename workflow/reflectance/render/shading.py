@@ -63,7 +63,6 @@ __all__ = [
     "ambient_intensity",
     "emission_XYZ",
     "fresnel_XYZ_table",
-    "fresnel_XYZ_rgb",
     "fresnel_XYZ_table_rgb",
     "lookup_table",
     "shade",
@@ -413,30 +412,12 @@ def fresnel_XYZ_table(material, W, size=1025):
     return np.concatenate(rows)
 
 
-def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB"):
-    """XYZ of F by a three-channel RGB renderer: F0 per display channel, Schlick per channel.
-
-    What a renderer that stores a metal as an RGB "specular colour" does: the colour of the normal
-    reflectance ``F0_XYZ`` in the linear display space ``space`` with the light's ``white`` at RGB
-    (1, 1, 1), clipped to [0, 1] per channel (as a base-colour texture is); then Schlick 1994 per
-    channel, ``F_c(c) = F0_c + (1 - F0_c)(1 - c)^5``, and back to XYZ. Schlick is linear in F0,
-    so a spectrally flat material gives exactly the spectral Schlick colour.
-
-    Returns
-    -------
-    ndarray, shape (len(cos_theta), 3)
-    """
-    from reflectance.colour.display import XYZ_to_linear_RGB, linear_RGB_to_XYZ
-
-    c = np.asarray(cos_theta, dtype=np.float64).reshape(-1, 1)
-    F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)
-    F = F0 + (1.0 - F0) * (1.0 - c) ** 5  # Schlick 1994, per display channel
-    return linear_RGB_to_XYZ(F, space, illuminant=white)
-
-
 def fresnel_XYZ_table_rgb(material, W, size=1025, space="sRGB"):
-    """:func:`fresnel_XYZ_table` as a three-channel RGB renderer makes it (:func:`fresnel_XYZ_rgb`
-    of the material's exact F0 under the light ``W``); same arguments and result."""
+    """:func:`fresnel_XYZ_table` as a three-channel RGB renderer makes it: F0 per display channel
+    and Schlick 1994 per channel (:func:`reflectance.colour.display.fresnel_XYZ_rgb`) from the
+    material's exact F0 under the light ``W``; same arguments and result."""
+    from reflectance.colour.display import fresnel_XYZ_rgb
+
     c = np.linspace(0.0, 1.0, int(size))
     white = np.sum(W, axis=0)
     if not SHADING_MODELS[material.model]["fresnel"] or material.n is None:

@@ -1,4 +1,4 @@
-"""Spectral against three-channel RGB rendering of one scene (audit 2).
+"""Spectral against three-channel RGB rendering of one scene (colour-accuracy audit 2).
 
 The spectral renderer integrates ``F(lambda, V.H)`` against the light and the colour matching
 functions (:func:`reflectance.render.shading.fresnel_XYZ_table`); a three-channel renderer stores
