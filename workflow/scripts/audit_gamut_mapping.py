@@ -33,8 +33,8 @@ with script_log(snakemake) as log:
             image_rows.append({"figure": figure, "image": path, "space": space,
                                "object_pixels": int(lit.sum()), "out_of_gamut": int(outside.sum()),
                                "fraction": outside.sum() / max(lit.sum(), 1),
-                               "fraction_negative": (lit & (RGB < 0).any(-1)).sum() / max(lit.sum(), 1),
-                               "fraction_above_one": (lit & (RGB > 1).any(-1)).sum() / max(lit.sum(), 1)})
+                               "fraction_negative": (outside & (RGB < 0).any(-1)).sum() / max(lit.sum(), 1),
+                               "fraction_above_one": (outside & (RGB > 1).any(-1)).sum() / max(lit.sum(), 1)})
             RGB_out.append(RGB[outside])
         RGB_out = np.concatenate(RGB_out)
         lit_total = sum(r["object_pixels"] for r in image_rows if r["figure"] == figure)

@@ -39,6 +39,7 @@ _EXPORTS = {
     "format_audit_csv": "shortcuts",
     "write_audit": "shortcuts",
     "exr_display_RGB": "gamut",
+    "GAMUT_TOLERANCE": "gamut",
     "out_of_gamut": "gamut",
     "hue_difference_deg": "gamut",
     "clip_differences": "gamut",

@@ -24,7 +24,7 @@ import json
 
 import numpy as np
 
-__all__ = ["exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
+__all__ = ["GAMUT_TOLERANCE", "exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
 
 
 def exr_display_RGB(XYZ, header):
@@ -51,7 +51,10 @@ def exr_display_RGB(XYZ, header):
     scene = json.loads(header["scene"])
     d, w = scene["display"], scene["wavelengths"]
     grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
-    white = white_XYZ(d["illuminant"], scene["observer"], grid)
+    # the display white: display.illuminant, else the first light's spectrum (as load_scene)
+    lights = scene.get("lights") or []
+    illuminant = d.get("illuminant", lights[0]["spectrum"] if lights else "D65")
+    white = white_XYZ(illuminant, scene["observer"], grid)
     XYZ = np.asarray(XYZ, dtype=np.float64)
     scale = float(header["display_exposure_scale"])
     RGB = XYZ_to_linear_RGB(XYZ * scale, d["space"], illuminant=white)
@@ -60,10 +63,15 @@ def exr_display_RGB(XYZ, header):
     return RGB, d["space"], white, XYZ[..., 1] > 0
 
 
-def out_of_gamut(RGB):
-    """True where a linear RGB colour has a channel outside [0, 1]."""
+#: how far outside [0, 1] a channel must lie to count as out of gamut: float rounding of an exposure
+#: that puts the brightest colour's largest channel at exactly 1 (Cook & Torrance's) is not
+GAMUT_TOLERANCE = 1e-9
+
+
+def out_of_gamut(RGB, tolerance=GAMUT_TOLERANCE):
+    """True where a linear RGB colour has a channel outside [-tolerance, 1 + tolerance]."""
     RGB = np.asarray(RGB, dtype=np.float64)
-    return np.any((RGB < 0.0) | (RGB > 1.0), axis=-1)
+    return np.any((RGB < -tolerance) | (RGB > 1.0 + tolerance), axis=-1)
 
 
 def hue_difference_deg(h, h_reference):
