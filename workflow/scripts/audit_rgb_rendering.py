@@ -80,7 +80,8 @@ with script_log(snakemake) as log:
     for ax, name in zip(axes[:, 0], ("spectral\n(F per \u03bb)", "RGB renderer\n(Schlick on F0 RGB)",
                                       "\u0394E00")):
         ax.set_ylabel(name, fontsize=8)
-    bar = fig.colorbar(image, cax=fig.add_axes((0.88, 0.04, 0.02, 0.26)), ticks=BOUNDS)
+    bar = fig.colorbar(image, cax=fig.add_axes((0.88, 0.04, 0.02, 0.26)), ticks=BOUNDS,
+                       format="%g")
     bar.set_label("CIEDE2000", fontsize=8)
     bar.ax.tick_params(labelsize=7)
     fig.suptitle("Cook & Torrance 1982, Figs. 6b and 7: metal vases, spectral against RGB "
@@ -89,7 +90,7 @@ with script_log(snakemake) as log:
 
     worst = table.loc[table.dE2000_max.idxmax()]
     pkey = f"dE2000_p{cfg['percentile']:g}"
-    parts = "; ".join(f"{r.label} {r.dE2000_mean:.2f} / {getattr(r, pkey):.2f} / {r.dE2000_max:.1f}"
+    parts = "; ".join(f"{r.label} {r.dE2000_mean:.2f} / {getattr(r, pkey):.2f} / {r.dE2000_max:.2f}"
                       for r in table.itertuples(index=False))
     answer = (f"**Answer:** the RGB renderer's vases lie a mean CIEDE2000 of "
               f"{table.dE2000_mean.min():.2f} to {table.dE2000_mean.max():.2f} from the spectral "
