@@ -63,9 +63,10 @@ def exr_display_RGB(XYZ, header):
     return RGB, d["space"], white, XYZ[..., 1] > 0
 
 
-#: how far outside [0, 1] a channel must lie to count as out of gamut: float rounding of an exposure
-#: that puts the brightest colour's largest channel at exactly 1 (Cook & Torrance's) is not
-GAMUT_TOLERANCE = 1e-9
+#: how far outside [0, 1] a channel must lie to count as out of gamut: an exposure that puts the
+#: brightest colour's largest channel at exactly 1 (Cook & Torrance's), applied to the EXR's
+#: float32 XYZ (relative rounding 6e-8), is not
+GAMUT_TOLERANCE = 1e-6
 
 
 def out_of_gamut(RGB, tolerance=GAMUT_TOLERANCE):
