@@ -147,21 +147,45 @@ def test_rgb_table_at_normal_incidence_is_the_exact_F0_inside_the_gamut():
         ShadingMaterial(n=cu.n, k=cu.k, roughness=0.3), W, 33)[8], rtol=1e-3)
 
 
+def _tiny_vase(material):
+    from reflectance.papers.scenes import vase_scene_CookTorrance1982
+
+    config = yaml.safe_load((ROOT / "config.yaml").read_text())
+    fig6 = config["figures"]["cook_torrance_1982"]["fig6"]
+    return vase_scene_CookTorrance1982(fig6, material, "weighted", config["wavelengths"],
+                                       config["colour"], str(ROOT / "spectra"),
+                                       {"width": 24, "height": 32, "supersample": 1},
+                                       exposure=fig6["published"]["exposure"])
+
+
+def test_exr_display_RGB_is_what_the_png_shows(tmp_path):
+    """Audit 3 reads an EXR's colours as its PNG was made: clipping them with the scene's own
+    method and encoding gives the pipeline's display image."""
+    from reflectance.audit.gamut import exr_display_RGB
+    from reflectance.colour.display import encode
+    from reflectance.io.images import read_exr
+    from reflectance.render.pipeline import display_image, render, write_render
+    from reflectance.render.scene import scene_from_dict
+
+    result = render(scene_from_dict(_tiny_vase({"name": "Au", "s": 1.0, "d": 0.0, "m": 0.2})))
+    write_render(result, tmp_path / "vase.exr")
+    RGB, space, white, lit = exr_display_RGB(*read_exr(tmp_path / "vase.exr"))
+    shown, _ = display_image(result)
+    d = result.scene.display
+    np.testing.assert_allclose(encode(gamut_clip(RGB, d.gamut_clip, space), space), shown,
+                               atol=2e-6)  # the EXR holds float32 XYZ
+    assert lit.sum() == (result.XYZ[..., 1] > 0).sum() > 50
+
+
 def test_rgb_render_of_a_flat_material_equals_the_spectral_render():
     """The whole render path: a flat metal with spectral Schlick F renders with dE2000 0 as the
     RGB renderer (one visibility pass, Fig. 6's lights and exposure, a tiny image)."""
     from reflectance.render.rgb import (dE2000_map, display_exposure,
-                                              render_spectral_and_rgb)
-    from reflectance.papers.scenes import vase_scene_CookTorrance1982
+                                        render_spectral_and_rgb)
     from reflectance.render.scene import scene_from_dict
 
-    config = yaml.safe_load((ROOT / "config.yaml").read_text())
-    fig6 = config["figures"]["cook_torrance_1982"]["fig6"]
-    material = {"index": {"n": 0.4, "k": 3.0}, "s": 1.0, "d": 0.0, "m": 0.3, "fresnel": "schlick"}
-    document = vase_scene_CookTorrance1982(fig6, material, "weighted", config["wavelengths"],
-                                           config["colour"], str(ROOT / "spectra"),
-                                           {"width": 24, "height": 32, "supersample": 1},
-                                           exposure=fig6["published"]["exposure"])
+    document = _tiny_vase({"index": {"n": 0.4, "k": 3.0}, "s": 1.0, "d": 0.0, "m": 0.3,
+                           "fresnel": "schlick"})
     scene = scene_from_dict(document)
     spectral, rgb = render_spectral_and_rgb(scene, "sRGB")
     lit = spectral[..., 1] > 0
