@@ -8,6 +8,10 @@ TARGETS += [
     f"{AUDITS_OUT}/{name}"
     for name in ("fresnel_atlas.png", "fresnel_atlas.pdf", "fresnel_atlas.csv",
                  "fresnel_atlas_thresholds.csv", "fresnel_atlas_answer.rst",
+                 "rgb_rendering.png", "rgb_rendering.pdf", "rgb_rendering.csv",
+                 "rgb_rendering_answer.rst",
+                 "gamut_mapping.png", "gamut_mapping.pdf", "gamut_mapping.csv",
+                 "gamut_mapping_images.csv", "gamut_mapping_answer.rst",
                  "spectral_sampling.png", "spectral_sampling.pdf", "spectral_sampling.csv",
                  "spectral_sampling_answer.rst",
                  "spectral_recovery.png", "spectral_recovery.pdf", "spectral_recovery.csv",
@@ -39,6 +43,63 @@ rule audit_fresnel_atlas:
         "logs/audits/fresnel_atlas.log",
     script:
         "../scripts/audit_fresnel_atlas.py"
+
+
+rule audit_rgb_rendering:
+    input:
+        spectra=[spectrum_csv(m["material"]) for m in CT82["fig7"]["metals"]],
+    output:
+        png=report(f"{AUDITS_OUT}/rgb_rendering.png", caption="../report/audit_rgb_rendering.rst",
+                   category="Audits", subcategory="2. Spectral versus RGB rendering"),
+        pdf=f"{AUDITS_OUT}/rgb_rendering.pdf",
+        csv=report(f"{AUDITS_OUT}/rgb_rendering.csv",
+                   caption="../report/audit_rgb_rendering_table.rst",
+                   category="Audits", subcategory="2. Spectral versus RGB rendering"),
+        answer=f"{AUDITS_OUT}/rgb_rendering_answer.rst",
+    params:
+        audit=AUDITS["rgb_rendering"],
+        fig7=CT82["fig7"],
+        table1=CT82["table1"]["rows"],
+        fig6=CT82["fig6"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
+    log:
+        "logs/audits/rgb_rendering.log",
+    script:
+        "../scripts/audit_rgb_rendering.py"
+
+
+# Audit 3 reads the default (unsuffixed) figure of every rendered figure: its EXRs, one per image.
+GAMUT_FIGURES = {
+    "C&T 1982 Fig. 6": [f"{CT82_OUT}/fig6{panel}.exr" for panel in "ab"],
+    "C&T 1982 Fig. 7": [f"{CT82_OUT}/fig7/{vase}.exr" for vase in CT82_FIG7_VASES],
+    "C&T 1982 Fig. 8": [f"{CT82_OUT}/fig8.exr"],
+    "Blinn 1977 Fig. 7": [f"{stem}.exr" for stem in B77_FIG7_STEMS.values()],
+    "Blinn 1977 Fig. 8": [f"{B77_RENDER_OUT}/fig8{part}.exr" for part in "ab"],
+    "Article spheres": [f"{ARTICLE_SPHERES_OUT}/spheres.exr"],
+}
+
+
+rule audit_gamut_mapping:
+    input:
+        exrs=[path for paths in GAMUT_FIGURES.values() for path in paths],
+    output:
+        png=report(f"{AUDITS_OUT}/gamut_mapping.png", caption="../report/audit_gamut_mapping.rst",
+                   category="Audits", subcategory="3. Gamut mapping"),
+        pdf=f"{AUDITS_OUT}/gamut_mapping.pdf",
+        csv=report(f"{AUDITS_OUT}/gamut_mapping.csv",
+                   caption="../report/audit_gamut_mapping_table.rst",
+                   category="Audits", subcategory="3. Gamut mapping"),
+        images=f"{AUDITS_OUT}/gamut_mapping_images.csv",
+        answer=f"{AUDITS_OUT}/gamut_mapping_answer.rst",
+    params:
+        audit=AUDITS["gamut_mapping"],
+        figures=GAMUT_FIGURES,
+        observer=config["colour"]["observer"],
+    log:
+        "logs/audits/gamut_mapping.log",
+    script:
+        "../scripts/audit_gamut_mapping.py"
 
 
 rule audit_spectral_sampling:

@@ -1,7 +1,8 @@
 """Audit: how far each shortcut of the papers lies from the exact spectral answer.
 
 Modules: colour_shift (a smooth material's colour against angle, per Fresnel method); shortcuts
-(the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS).
+(the `reflectance audit` table: every shortcut against exact, CIEDE2000 and CAM16-UCS);
+gamut (what each gamut clip does to a rendered figure's colours).
 
 Public names are loaded on first use (``from reflectance.audit import name``), so importing
 the package stays cheap.
@@ -10,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("colour_shift", "shortcuts")
+_MODULES = ("colour_shift", "shortcuts", "gamut")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -37,6 +38,11 @@ _EXPORTS = {
     "first_angle_above": "shortcuts",
     "format_audit_csv": "shortcuts",
     "write_audit": "shortcuts",
+    "exr_display_RGB": "gamut",
+    "GAMUT_TOLERANCE": "gamut",
+    "out_of_gamut": "gamut",
+    "hue_difference_deg": "gamut",
+    "clip_differences": "gamut",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -6,11 +6,11 @@ spectrum ``I(lambda) F(lambda, theta)`` (Cook & Torrance 1982, "Spectral composi
 :data:`AUDIT_METHODS` computes F (or the colour) another way; :func:`audit_table` gives, per method
 and angle, the colour and its CIEDE2000 and CAM16-UCS differences from the exact colour.
 
-This module itself imports neither pandas nor matplotlib and formats its CSV by hand;
-:func:`write_audit` imports matplotlib for the figure only. (colour-science, which the colorimetry
-needs, imports both when it starts: that start-up, a few seconds, dominates the command's time;
-the audit of one material with every method and 32 angles then takes about 0.4 s, most of it
-colour-science's dominant wavelength.)
+This module imports neither pandas, matplotlib nor colour-science (whose start-up, a few seconds,
+used to dominate the command's time): the colorimetry reads colour-science's tables from the
+project's cache (:mod:`reflectance.colour.tables`), and CIELAB, CIEDE2000, the dominant wavelength
+and CAM16-UCS are numpy (:mod:`reflectance.colour`), each tested against colour-science;
+:func:`write_audit` imports matplotlib for the figure only.
 
 References
 ----------
@@ -197,21 +197,21 @@ def audit_weights(wavelengths, illuminant="D65", observer="2"):
     colour-science name). Returns ``(W, observer_name)``; ValueError names the known choices."""
     from reflectance.colour.colorimetry import tristimulus_weights, tristimulus_weights_spd
 
-    observer_name = OBSERVERS.get(str(observer), str(observer))
-    import colour
+    from reflectance.colour.tables import illuminant_names, observer_names
 
-    if observer_name not in colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER:
+    observer_name = OBSERVERS.get(str(observer), str(observer))
+    if observer_name not in observer_names():
         raise ValueError(f"unknown observer {observer!r}; known: {', '.join(OBSERVERS)} "
-                         f"(or {', '.join(colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER)})")
+                         f"(or {', '.join(observer_names())})")
     if _looks_like_path(illuminant):
         path = Path(illuminant)
         if not path.is_file():
             raise ValueError(f"illuminant {illuminant}: no such file")
         spd = _read_spd(path, wavelengths)
         return tristimulus_weights_spd(spd, wavelengths, observer_name), observer_name
-    if illuminant not in colour.SDS_ILLUMINANTS:
+    if illuminant not in illuminant_names():
         raise ValueError(f"unknown illuminant {illuminant!r}; known: "
-                         f"{', '.join(colour.SDS_ILLUMINANTS)} (or a CSV file "
+                         f"{', '.join(illuminant_names())} (or a CSV file "
                          f"'wavelength_nm,<power>')")
     return tristimulus_weights(wavelengths, illuminant, observer_name), observer_name
 
@@ -226,13 +226,11 @@ def _XYZ_gulbrandsen(material, cos_theta, W):
 
 
 def _XYZ_rgb(material, cos_theta, W, space):
-    from reflectance.colour.display import XYZ_to_linear_RGB, linear_RGB_to_XYZ
+    from reflectance.colour.display import fresnel_XYZ_rgb
 
-    white = W.sum(axis=0)
-    F0_rgb = np.clip(XYZ_to_linear_RGB(material.F0 @ W, space, illuminant=white), 0.0, 1.0)
-    # Schlick 1994 per display channel: F = F0 + (1 - F0)(1 - c)^5.
-    F_rgb = F0_rgb + (1.0 - F0_rgb) * (1.0 - cos_theta[:, None]) ** 5
-    return linear_RGB_to_XYZ(F_rgb, space, illuminant=white)
+    # the RGB renderer's F0 per display channel and Schlick 1994 per channel (one definition,
+    # shared with the RGB render of audit 2)
+    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space)
 
 
 def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):
@@ -287,9 +285,9 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
         dE_CAM16UCS_vs_exact (Euclidean J'a'b' distance, Li et al. 2017, viewing conditions
         :data:`CAM16_VIEWING_CONDITIONS`).
     """
-    import colour
-
-    from reflectance.colour.colorimetry import dominant_wavelength
+    from reflectance.colour.appearance import XYZ_to_CAM16UCS
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy, dominant_wavelength
+    from reflectance.colour.difference import delta_E_CIE2000
 
     unknown = [m for m in methods if m not in AUDIT_METHODS]
     if unknown:
@@ -301,18 +299,17 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     cos_theta = np.cos(np.radians(angles))
     methods = list(dict.fromkeys(methods))
     white = W.sum(axis=0)
-    white_xy = colour.XYZ_to_xy(white)
+    white_xy = XYZ_to_xy(white)
     XYZ = np.stack([shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm)
                     for m in methods])                                   # (method, angle, 3)
     exact = shortcut_XYZ(material, cos_theta, W, "exact")
-    Lab = colour.XYZ_to_Lab(XYZ, white_xy)
-    dE2000 = colour.delta_E(Lab, colour.XYZ_to_Lab(exact, white_xy), method="CIE 2000")
-    cam = dict(XYZ_w=100.0 * white, **CAM16_VIEWING_CONDITIONS)
-    cam["surround"] = colour.VIEWING_CONDITIONS_CAM16[cam["surround"]]
-    Jab = colour.XYZ_to_CAM16UCS(100.0 * XYZ, **cam)
-    dE_cam = colour.delta_E(Jab, colour.XYZ_to_CAM16UCS(100.0 * exact, **cam),
-                            method="CAM16-UCS")
-    xy = colour.XYZ_to_xy(XYZ)
+    Lab = XYZ_to_Lab(XYZ, white_xy)
+    dE2000 = delta_E_CIE2000(Lab, XYZ_to_Lab(exact, white_xy))
+    # CAM16-UCS on the Y_w = 100 scale (Y_b = 20: a background of 20 % of the white)
+    Jab, Jab_exact = (XYZ_to_CAM16UCS(100.0 * x, 100.0 * white, **CAM16_VIEWING_CONDITIONS)
+                      for x in (XYZ, exact))
+    dE_cam = np.linalg.norm(Jab - Jab_exact, axis=-1)  # Li et al. 2017: Euclidean in J'a'b'
+    xy = XYZ_to_xy(XYZ)
     wl, purity = dominant_wavelength(XYZ, white, observer=observer)
     n = len(methods) * angles.size
     kind = "nk" if material.kind == "measured" else "reflectance_k0"
@@ -336,15 +333,16 @@ def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
 
     The cheap core of :func:`audit_table` (no dominant wavelength, no CAM16), for fine grids.
     """
-    import colour
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy
+    from reflectance.colour.difference import delta_E_CIE2000
 
     cos_theta = np.cos(np.radians(np.asarray(angles_deg, dtype=np.float64)))
-    white_xy = colour.XYZ_to_xy(W.sum(axis=0))
-    lab_exact = colour.XYZ_to_Lab(shortcut_XYZ(material, cos_theta, W, "exact"), white_xy)
+    white_xy = XYZ_to_xy(W.sum(axis=0))
+    lab_exact = XYZ_to_Lab(shortcut_XYZ(material, cos_theta, W, "exact"), white_xy)
     return np.stack([
-        colour.delta_E(colour.XYZ_to_Lab(
+        delta_E_CIE2000(XYZ_to_Lab(
             shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm), white_xy),
-            lab_exact, method="CIE 2000")
+            lab_exact)
         for m in methods])
 
 

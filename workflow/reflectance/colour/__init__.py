@@ -1,6 +1,6 @@
 """Colour: CIE colorimetry and display encoding, knowing nothing of optics or rendering.
 
-Modules: colorimetry (CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength),
+Modules: appearance (CAM16 and CAM16-UCS, numpy only); colorimetry (CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength),
 difference (CIEDE2000), display (RGB spaces, Cook & Torrance's exposure, gamut clipping, transfer
 functions), tables (colour-science's tables, computed by colour-science once and cached, so that
 the colour path reads them with numpy only).
@@ -12,10 +12,13 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("colorimetry", "difference", "display", "tables")
+_MODULES = ("appearance", "colorimetry", "difference", "display", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
+    "CAM16_SURROUNDS": "appearance",
+    "XYZ_to_CAM16": "appearance",
+    "XYZ_to_CAM16UCS": "appearance",
     "OBSERVER_DEFAULT": "colorimetry",
     "cmfs": "colorimetry",
     "illuminant_sd": "colorimetry",
@@ -43,6 +46,7 @@ _EXPORTS = {
     "gamut_clip": "display",
     "encode": "display",
     "XYZ_to_display": "display",
+    "fresnel_XYZ_rgb": "display",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

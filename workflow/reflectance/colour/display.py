@@ -32,6 +32,8 @@ References
     EOTF. CIE 159:2004 (CIECAM02, CAT02). CIE 15:2004 §9.1 (dominant wavelength).
 -   W3C CSS Color Module Level 4, §13.2 "CSS Gamut Mapping to an RGB Destination" (binary search
     with local MINDE, deltaEOK, JND 0.02).
+-   Schlick, C. (1994). An Inexpensive BRDF Model for Physically-based Rendering. CGF 13(3)
+    (:func:`fresnel_XYZ_rgb`, an RGB renderer's F per display channel).
 """
 
 from __future__ import annotations
@@ -61,6 +63,7 @@ __all__ = [
     "gamut_clip",
     "encode",
     "XYZ_to_display",
+    "fresnel_XYZ_rgb",
 ]
 
 CHROMATIC_ADAPTATION_TRANSFORM = "CAT02"
@@ -680,3 +683,24 @@ def XYZ_to_display(
     if highlight_knee is not None:
         RGB = compress_highlights(RGB, highlight_knee)
     return encode(gamut_clip(RGB, clip, space), space)
+
+
+def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB"):
+    """XYZ of F by a three-channel RGB renderer: F0 per display channel, Schlick per channel.
+
+    What a renderer that stores a metal as an RGB "specular colour" does: the colour of the normal
+    reflectance ``F0_XYZ`` in the linear display space ``space`` with the light's ``white`` at RGB
+    (1, 1, 1), clipped to [0, 1] per channel (as a base-colour texture is); then Schlick 1994 per
+    channel, ``F_c(c) = F0_c + (1 - F0_c)(1 - c)^5``, and back to XYZ. Schlick is linear in F0,
+    so a spectrally flat material gives exactly the spectral Schlick colour. (Here, beside the
+    display channels it is defined by; the renderer's table and the shortcut audit's ``rgb``
+    method both use it.)
+
+    Returns
+    -------
+    ndarray, shape (len(cos_theta), 3)
+    """
+    c = np.asarray(cos_theta, dtype=np.float64).reshape(-1, 1)
+    F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)
+    F = F0 + (1.0 - F0) * (1.0 - c) ** 5  # Schlick 1994, per display channel
+    return linear_RGB_to_XYZ(F, space, illuminant=white)

@@ -2,7 +2,8 @@
 
 Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
-(spectral, per-angle Fresnel table); scene (scene files); pipeline (trace, shade, write);
+(spectral, per-angle Fresnel table); rgb (a scene also rendered as a three-channel RGB renderer
+would); scene (scene files); pipeline (trace, shade, write);
 composite (grids with one exposure); bench (speed and memory).
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
@@ -12,10 +13,14 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("bench", "camera", "composite", "idbuffer", "lights", "pipeline", "primitives", "rays", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("bench", "camera", "composite", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
+    "render_spectral_and_rgb": "rgb",
+    "display_exposure": "rgb",
+    "dE2000_map": "rgb",
+    "dE2000_statistics": "rgb",
     "load_bench_scene": "bench",
     "bench_size": "bench",
     "run_bench": "bench",
@@ -74,6 +79,7 @@ _EXPORTS = {
     "ambient_intensity": "shading",
     "emission_XYZ": "shading",
     "fresnel_XYZ_table": "shading",
+    "fresnel_XYZ_table_rgb": "shading",
     "lookup_table": "shading",
     "shade": "shading",
     "shadow_mask": "shadows",

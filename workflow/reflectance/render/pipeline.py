@@ -89,7 +89,7 @@ def trace(scene):
     return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
 
 
-def shade_samples(scene, samples, shadowed, spectral=None, components=False):
+def shade_samples(scene, samples, shadowed, spectral=None, components=False, fresnel_table=None):
     """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``)."""
     spectral = scene.spectral if spectral is None else spectral
     N = len(samples.hit)
@@ -110,7 +110,8 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False):
             out = shade(samples.position[idx], samples.normal[idx], samples.view[idx],
                         samples.uv[idx], material, scene.lights, shadowed[:, idx],
                         scene.ambient, scene.wavelengths, scene.observer, spectral,
-                        scene.table_size, components=components)
+                        scene.table_size, components=components,
+                        fresnel_table=fresnel_table)
             if components:
                 out, got = out
                 for name in COMPONENTS:
@@ -120,7 +121,7 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False):
     return (XYZ, parts) if components else XYZ
 
 
-def render(scene, spectral=None, components=False):
+def render(scene, spectral=None, components=False, fresnel_table=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -130,6 +131,9 @@ def render(scene, spectral=None, components=False):
         Overrides ``scene.spectral`` (``"table"`` or ``"brute-force"``).
     components : bool
         Also return the ambient, diffuse, specular and emitted parts (table shading only).
+    fresnel_table : callable, optional
+        How the Fresnel table is made (:func:`reflectance.render.shading.shade`; e.g.
+        :func:`reflectance.render.shading.fresnel_XYZ_table_rgb` for an RGB renderer's F).
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
@@ -137,7 +141,7 @@ def render(scene, spectral=None, components=False):
     t0 = time.perf_counter()
     samples, shadowed, timings = trace(scene)
     t1 = time.perf_counter()
-    shaded = shade_samples(scene, samples, shadowed, spectral, components)
+    shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
     XYZ, parts = shaded if components else (shaded, None)
     image = samples.to_pixels(XYZ)
     if components:

@@ -63,6 +63,7 @@ __all__ = [
     "ambient_intensity",
     "emission_XYZ",
     "fresnel_XYZ_table",
+    "fresnel_XYZ_table_rgb",
     "lookup_table",
     "shade",
 ]
@@ -411,6 +412,20 @@ def fresnel_XYZ_table(material, W, size=1025):
     return np.concatenate(rows)
 
 
+def fresnel_XYZ_table_rgb(material, W, size=1025, space="sRGB"):
+    """:func:`fresnel_XYZ_table` as a three-channel RGB renderer makes it: F0 per display channel
+    and Schlick 1994 per channel (:func:`reflectance.colour.display.fresnel_XYZ_rgb`) from the
+    material's exact F0 under the light ``W``; same arguments and result."""
+    from reflectance.colour.display import fresnel_XYZ_rgb
+
+    c = np.linspace(0.0, 1.0, int(size))
+    white = np.sum(W, axis=0)
+    if not SHADING_MODELS[material.model]["fresnel"] or material.n is None:
+        return np.broadcast_to(white, (len(c), 3)).copy()
+    F0_XYZ = fresnel(np.ones(1), material.n, material.k, method="exact") @ W
+    return fresnel_XYZ_rgb(F0_XYZ, c, white, space)
+
+
 def lookup_table(table, c):
     """Linear interpolation of a table over equally spaced c in [0, 1] at cosines ``c`` (n,)."""
     last = len(table) - 1
@@ -435,7 +450,7 @@ def _light_terms(light, position, shadowed):
 
 def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambient=None,
           wavelengths=None, observer=OBSERVER_DEFAULT, spectral="table", table_size=1025,
-          components=False):
+          components=False, fresnel_table=None):
     """XYZ reflected (and emitted) toward the viewer by surface samples of one material.
 
     ``I_r = I_ia R_a + sum_l I_il (N.L_l) d omega_il R_l(lambda)`` (Cook & Torrance 1982) with
@@ -463,6 +478,9 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
     components : bool
         Also return the parts ``{"ambient", "diffuse", "specular", "emission"}`` (brute force:
         only ``"ambient"`` and ``"emission"``).
+    fresnel_table : callable, optional
+        ``f(material, W, size)`` giving the Fresnel table (``spectral="table"`` only); default
+        :func:`fresnel_XYZ_table`, e.g. :func:`fresnel_XYZ_table_rgb` for an RGB renderer's F.
 
     Returns
     -------
@@ -473,6 +491,9 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
                          f"{', '.join(SPECTRAL_METHODS)}")
     if wavelengths is None:
         raise ValueError("shade needs the wavelength grid the material is resolved on")
+    if fresnel_table is not None and spectral != "table":
+        raise ValueError("fresnel_table needs spectral='table'")
+    fresnel_table = fresnel_XYZ_table if fresnel_table is None else fresnel_table
     position, normal, view = (np.asarray(a, dtype=np.float64).reshape(-1, 3)
                               for a in (position, normal, view))
     uv = np.asarray(uv, dtype=np.float64).reshape(-1, 2)
@@ -502,7 +523,7 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
         by_spectrum = {}  # one table per light spectrum (intensities enter through the energy)
         for light, w in zip(lights, W):
             if material.s > 0 and light.spectrum not in by_spectrum:
-                by_spectrum[light.spectrum] = fresnel_XYZ_table(material, w, table_size)
+                by_spectrum[light.spectrum] = fresnel_table(material, w, table_size)
         tables = [by_spectrum.get(light.spectrum) for light in lights]
         diffuse_XYZ = [albedo @ w for w in W]
         for start in range(0, n, _SAMPLE_CHUNK):
