@@ -524,10 +524,11 @@ def figure_scenes(config, spectra_dir="spectra"):
             yield (f"figures.cook_torrance_1982.fig6.published (panel {panel})", f"fig6{panel}",
                    vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
                                                spectra_dir, exposure=exposure))
-        for vase, _, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
+        for vase, group, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
             yield ("figures.cook_torrance_1982.fig7", f"fig7/{vase}",
                    vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
-                                               ct["fig7"]["vase_image"], exposure=exposure))
+                                               ct["fig7"]["vase_image"],
+                                               exposure=ct["fig7"]["exposure"][group]))
     yield ("figures.cook_torrance_1982.fig8", "fig8",
            watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
 
