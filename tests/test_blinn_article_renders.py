@@ -367,3 +367,41 @@ def test_config_check_builds_the_scenes_the_scripts_render(fig8):
         document = validate_scene(blinn_scene_Blinn1977(fig7, material, fig["light"], WAVELENGTHS))
         assert yaml.safe_load(yaml.safe_dump(document)) == yaml.safe_load(
             Path(out[f"{part}_scene"]).read_text()), part
+
+
+def test_fig7_rim_closeup_shows_the_edge_lit_highlight():
+    """The close-up inset of Fig. 7: aimed at the torus point whose normal is H (checked against
+    the torus's own parametrisation), it shows the Torrance-Sparrow rim several pixels wide, and
+    MgO's rim brighter than aluminium's (beyond the crossover), Phong's far dimmer."""
+    from reflectance.papers.scenes import (blinn_scene_Blinn1977, materials_Blinn1977,
+                                           rim_camera_Blinn1977)
+    from reflectance.render.pipeline import render
+    from reflectance.render.scene import scene_from_dict
+
+    fig7, edge = B77["fig7"], B77["fig7"]["lights"]["edge"]
+    cam = rim_camera_Blinn1977(fig7, edge)
+    # the point is on the torus: R (cos u, sin u, 0) + r (cos v cos u, cos v sin u, sin v), and
+    # its normal (cos v cos u, cos v sin u, sin v) bisects L and E
+    R, r = fig7["object"]["major_radius"], fig7["object"]["minor_radius"]
+    p = np.asarray(cam["look_at"])
+    u = np.arctan2(p[1], p[0])
+    n = (p - R * np.array([np.cos(u), np.sin(u), 0.0])) / r
+    assert np.linalg.norm(n) == pytest.approx(1.0, abs=1e-12)
+    c = fig7["camera"]
+    L = light_direction(c["position"], c["look_at"], c["up"], edge["angle_deg"], edge["azimuth_deg"])
+    E = np.subtract(c["position"], c["look_at"]) / np.linalg.norm(np.subtract(c["position"],
+                                                                            c["look_at"]))
+    np.testing.assert_allclose(n, (L + E) / np.linalg.norm(L + E), atol=1e-12)
+    peaks = {}
+    for panel in "ab":
+        q = fig7["panels"][panel]
+        m = materials_Blinn1977(q["p_s"], q["p_d"], q["c3"], q["n"], "matched")
+        for model in ("phong", "torrance_sparrow"):
+            Y = render(scene_from_dict(blinn_scene_Blinn1977(fig7, m[model], edge,
+                                                             CONFIG["wavelengths"], cam))).XYZ[..., 1]
+            peaks[panel, model] = Y.max()
+            if model == "torrance_sparrow":
+                bright = Y > 1  # brighter than display white
+                assert np.median(bright.sum(axis=0)[bright.any(axis=0)]) >= 4, panel
+    assert peaks["b", "torrance_sparrow"] > peaks["a", "torrance_sparrow"]
+    assert peaks["a", "torrance_sparrow"] > 5 * peaks["a", "phong"]

@@ -95,6 +95,23 @@ def test_lambert_white_facing_the_light_has_Y_I_omega_over_pi(spectra):
     assert np.allclose(XYZ[0, 0], 3.0 * 0.2 / np.pi * d65_white(), rtol=1e-9)
 
 
+def test_display_white_shows_a_white_card_at_its_luminance(spectra):
+    """display.white: the white Lambertian card facing the light (Y = I d omega / pi, as the test
+    above renders it) is shown at the given display luminance, whatever the light's strength."""
+    from reflectance.render.pipeline import display_image
+
+    for intensity, luminance in ((3.0, 0.5), (0.01, 0.08)):
+        doc = {"camera": camera((2, -4, 3), (0, 0, 0), 24, 16),
+               "objects": [{"geometry": {"type": "plane", "center": [0, 0, 0],
+                                         "normal": [0, 0, 1], "size": [20, 20]},
+                            "material": lambert(1.0)}],
+               "lights": [{"type": "directional", "direction": [0, 0, 1],
+                           "intensity": intensity, "solid_angle": 0.2}],
+               "display": {"white": {"luminance": luminance}}}
+        _, scale = display_image(render(scene_from_dict(doc, spectra_dir=spectra)))
+        assert scale * intensity * 0.2 / np.pi == pytest.approx(luminance, rel=1e-12)
+
+
 def test_sphere_casts_its_analytic_shadow_on_a_plane(spectra):
     cam = camera((0, -6, 5), (0, 0, 0), 64, 48, fov=35)
     doc = {"camera": cam,

@@ -251,3 +251,10 @@ def test_cook_torrance_with_s_0_needs_no_m(spectra):
     document["objects"][0]["material"].update(s=0.5, d=0.5)
     with pytest.raises(SceneError, match="needs 'm'"):
         scene_from_dict(document, spectra_dir=spectra)
+
+
+def test_display_meters_on_the_object_or_a_white_card_not_both(spectra):
+    doc = minimal(display={"key": {"percentile": 50, "luminance": 0.18},
+                           "white": {"luminance": 1.0}})
+    assert "display" in errors_of(doc, spectra)
+    scene_from_dict(minimal(display={"white": {"luminance": 2.0}}), spectra_dir=spectra)

@@ -5,15 +5,14 @@ i = 1 is display white). One figure per reading of Phong's p_s; a table of the d
 
 import numpy as np
 import pandas as pd
-from matplotlib.patches import Rectangle
-
 from reflectance.colour.display import encode
 
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import display_image, render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
-                                       materials_Blinn1977, mirror_highlight_Blinn1977)
+                                       materials_Blinn1977, mirror_highlight_Blinn1977,
+                                       rim_camera_Blinn1977)
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -25,7 +24,8 @@ MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 with script_log(snakemake) as log:
     fig_cfg, stems, out = snakemake.params.fig, snakemake.params.stems, snakemake.output
     w = snakemake.params.wavelengths
-    images, Y, rows = {}, {}, []
+    images, Y, rows, rims = {}, {}, [], {}
+    rim_camera = rim_camera_Blinn1977(fig_cfg, fig_cfg["lights"]["edge"])
     for panel in ("a", "b"):
         p = fig_cfg["panels"][panel]
         for reading in fig_cfg["phong_specular_readings"]:
@@ -42,6 +42,10 @@ with script_log(snakemake) as log:
                                              f"{stems[key]}.exr", f"{stems[key]}.png")
                     images[key], Y[key] = display_image(result)[0], result.XYZ[..., 1]
                     log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
+                    if light == "edge":  # the highlight close up (fig7.rim_closeup), for the inset
+                        rims[key] = render(scene_from_dict(blinn_scene_Blinn1977(
+                            fig_cfg, m[model], fig_cfg["lights"]["edge"], w, rim_camera))).XYZ[..., 1]
+                        log.info("%s close up: max i = %.4f", key, rims[key].max())
                 ph, ts = Y[f"{panel}_phong_{light}_{reading}"], Y[f"{panel}_torrance_sparrow_{light}"]
                 diff, lit = np.abs(ph - ts), (ph > 0) | (ts > 0)
                 rows.append({"panel": panel, "label": p["label"], "phong_specular": reading,
@@ -62,15 +66,8 @@ with script_log(snakemake) as log:
     # Edge lit beyond the crossover the highlight is a rim a few pixels thick (N.E = cos(angle/2)
     # at the mirror point) and brighter than i = 1: each edge-lit image gets an inset of the rim,
     # magnified, on one scale for all (white = the brightest edge-lit i), so the two materials compare.
-    zoom, (ch, cw) = 4, (22, 60)
-    rim_scale = max(Y[k].max() for k in Y if "_edge" in k)
-    crops = {}
-    for panel in ("a", "b"):
-        r0, c0 = np.unravel_index(np.argmax(Y[f"{panel}_torrance_sparrow_edge"]),
-                                  Y[f"{panel}_torrance_sparrow_edge"].shape)
-        r0 = int(np.clip(r0 - ch // 3, 0, Y[f"{panel}_torrance_sparrow_edge"].shape[0] - ch))
-        c0 = int(np.clip(c0 - cw // 2, 0, Y[f"{panel}_torrance_sparrow_edge"].shape[1] - cw))
-        crops[panel] = (r0, c0)
+    zoom = fig_cfg["camera"]["fov_deg"] / fig_cfg["rim_closeup"]["fov_deg"]
+    rim_scale = max(rim.max() for rim in rims.values())  # one grey scale for every close-up
 
     h, wd = (n / 100 for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches at 100 dpi
     gap, block, top, row_h = 0.05, 0.35, 0.7, h + 0.5  # row: title, image, difference line
@@ -90,17 +87,16 @@ with script_log(snakemake) as log:
                     ax.set_xticks([]), ax.set_yticks([])
                     ax.set_title(f"{MODELS[model]}, {light} lit", fontsize=9, pad=3)
                     if light == "edge":
-                        r0, c0 = crops[panel]
-                        ax.add_patch(Rectangle((c0 - 0.5, r0 - 0.5), cw, ch, fill=False,
-                                               ec="#e69f00", lw=0.8))
-                        grey = encode(np.clip(Y[key][r0:r0 + ch, c0:c0 + cw] / rim_scale, 0, 1))
-                        inset = ax.inset_axes((0.5 - zoom * cw / (2 * 100 * wd), 0.04,
-                                               zoom * cw / (100 * wd), zoom * ch / (100 * h)))
+                        grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
+                        rh, rw = rims[key].shape
+                        iw = 0.9  # the close-up across 90 % of the image, its aspect kept
+                        inset = ax.inset_axes((0.05, 0.04, iw, iw * rh / rw * wd / h))
                         inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="nearest")
                         inset.set_xticks([]), inset.set_yticks([])
                         for side in inset.spines.values():
                             side.set(color="#e69f00", lw=0.8, visible=True)
-                        inset.text(0.01, 0.03, f"rim \u00d7{zoom}, white = i {rim_scale:.1f}",
+                        inset.text(0.01, 0.03, f"rim close up \u00d7{zoom:.0f}, white = i "
+                                   f"{rim_scale:.1f}",
                                    transform=inset.transAxes, color="#e69f00", fontsize=7.5,
                                    va="bottom")
                 row = table[(table.panel == panel) & (table.phong_specular == reading)

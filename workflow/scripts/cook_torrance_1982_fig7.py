@@ -1,7 +1,8 @@
 """Cook & Torrance 1982, Fig. 7: "A variety of vases", six metals and six nonmetals with
 "R_d = F0/pi", rendered one vase at a time (reflectance.render.pipeline) under Fig. 6's lighting and
-composed into one grid. The default figure (``params.published``) exposes each vase on its own as
-Fig. 6's default does (the label gives its exposure relative to the first vase); the readings of
+composed into one grid. The default figure (``params.published``) exposes each row (metals,
+nonmetals) once, metered on a white card facing the lights (config ``fig7.exposure``; the label gives
+each vase's exposure relative to the first vase), so dark materials stay dark; the readings of
 the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
 (not in the paper) and a table of each vase's parameters, colour and how it reads."""
 
@@ -39,14 +40,14 @@ def label(material, sources, names):
 with script_log(snakemake) as log:
     p, out = snakemake.params, snakemake.output
     colour_cfg, reference, published = p.colour, p.reference, p.published
-    exposure = published["exposure"] if published else None
     spectra_dir = str(Path(snakemake.input.sources).parent)
     sources = list_materials(spectra_dir).set_index("material")
     rows, images, shown, groups, labels = [], [], [], [], []
     for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
         document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
                                                colour_cfg, spectra_dir, p.fig["vase_image"],
-                                               exposure=exposure)
+                                               exposure=p.fig["exposure"][group] if published
+                                               else None)
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
         result = render_to_files(scene, out.scenes[k], out.exrs[k],
@@ -76,11 +77,14 @@ with script_log(snakemake) as log:
 
     display = dict(illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
                    wavelengths=scene.wavelengths)
-    if published:  # each vase exposed on its own; the label says how much brighter than the first
+    if published:  # one exposure per row, metered on a white card; the label: relative to metals
         scales = [row["vase_exposure_scale"] for row in rows]
         labels = [f"{text}\nexposure x{s / scales[0]:.3g}" for text, s in zip(labels, scales)]
-        title = ("Cook & Torrance 1982, Fig. 7 \u2014 each vase metered on its own (median at "
-                 f"{exposure['key']['luminance']:g}), highlights compressed at constant chromaticity")
+        metered = {g: (f"white card at {e['white']['luminance']:g}" if "white" in e
+                       else f"median at {e['key']['luminance']:g}")
+                   for g, e in p.fig["exposure"].items()}
+        title = ("Cook & Torrance 1982, Fig. 7 \u2014 one exposure per row: metals "
+                 f"{metered['metal']}, nonmetals {metered['nonmetal']}")
     else:  # the grid is one scene: "all XYZ values in the scene are scaled equally"
         scale = common_exposure(images, colour_cfg["space"], **display)
         scales = [scale] * len(images)

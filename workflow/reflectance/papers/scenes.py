@@ -59,6 +59,7 @@ __all__ = [
     "mirror_highlight_Blinn1977",
     "highlight_crossover_Blinn1977",
     "blinn_scene_Blinn1977",
+    "rim_camera_Blinn1977",
     "table1_material",
     "fig7_vases_CookTorrance1982",
     "watch_part_material",
@@ -364,6 +365,32 @@ def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
                           display={"expose": False})
 
 
+def rim_camera_Blinn1977(fig7, light):
+    """A close-up of Blinn 1977 Fig. 7's edge-lit highlight: fig7's camera position, aimed at the
+    point of the torus whose normal is H = (L + E) / |L + E| (where Blinn's D3 peaks), with
+    ``fig7.rim_closeup``'s field of view and size.
+
+    For a light at angle a from the eye the lit and visible normals lie within 180 - a degrees of
+    the silhouette, so at the full view the highlight is a rim about a pixel wide; the close-up
+    magnifies it by the ratio of the fields of view. The torus is the one of config ``object``
+    (about the z axis through its ``center``); the mirror point of normal n is
+    ``center + R (n_x, n_y, 0) / |(n_x, n_y)| + r n``.
+    """
+    obj, cam = fig7["object"], dict(fig7["camera"])
+    if obj["type"] != "torus":
+        raise ValueError("config.yaml figures.blinn_1977.fig7.rim_closeup: needs object.type "
+                         f"torus, got {obj['type']!r}")
+    L = light_direction(cam["position"], cam["look_at"], cam["up"], light["angle_deg"],
+                        light["azimuth_deg"])
+    E = unit_vector(np.subtract(cam["position"], cam["look_at"]), "position - look_at")
+    H = unit_vector(L + E, "L + E")
+    ring = unit_vector(np.array([H[0], H[1], 0.0]), "H projected on the ring's plane")
+    point = (np.asarray(obj.get("center", (0.0, 0.0, 0.0)), dtype=np.float64)
+             + obj["major_radius"] * ring + obj["minor_radius"] * H)
+    cam.update(look_at=[float(x) for x in point], **fig7["rim_closeup"])
+    return cam
+
+
 # --------------------------------------------------------------------------------------------
 # Every rendered figure's scenes, straight from config.yaml (what the figure scripts render;
 # reflectance.config builds and validates them all when the workflow is parsed)
@@ -524,10 +551,11 @@ def figure_scenes(config, spectra_dir="spectra"):
             yield (f"figures.cook_torrance_1982.fig6.published (panel {panel})", f"fig6{panel}",
                    vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
                                                spectra_dir, exposure=exposure))
-        for vase, _, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
+        for vase, group, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
             yield ("figures.cook_torrance_1982.fig7", f"fig7/{vase}",
                    vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
-                                               ct["fig7"]["vase_image"], exposure=exposure))
+                                               ct["fig7"]["vase_image"],
+                                               exposure=ct["fig7"]["exposure"][group]))
     yield ("figures.cook_torrance_1982.fig8", "fig8",
            watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
 
@@ -541,6 +569,10 @@ def figure_scenes(config, spectra_dir="spectra"):
                     yield (f"figures.blinn_1977.fig7.panels.{panel}",
                            f"fig7{panel}_{model}_{light}_{reading}",
                            blinn_scene_Blinn1977(fig7, m[model], fig7["lights"][light], w))
+            for model in ("phong", "torrance_sparrow"):  # the edge-lit highlight, close up
+                yield ("figures.blinn_1977.fig7.rim_closeup", f"fig7{panel}_{model}_rim_{reading}",
+                       blinn_scene_Blinn1977(fig7, m[model], fig7["lights"]["edge"], w,
+                                             rim_camera_Blinn1977(fig7, fig7["lights"]["edge"])))
     angles = np.linspace(*sweep["angles_deg"], sweep["n_frames"])
     lights = [{"angle_deg": float(a), "azimuth_deg": sweep["azimuth_deg"]} for a in angles]
     for key in sweep["panels"]:

@@ -77,6 +77,7 @@ _EXPORTS = {
     "Light": "shading",
     "Ambient": "shading",
     "ambient_intensity": "shading",
+    "white_card_luminance": "shading",
     "emission_XYZ": "shading",
     "fresnel_XYZ_table": "shading",
     "fresnel_XYZ_table_rgb": "shading",

@@ -28,7 +28,7 @@ import numpy as np
 from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
-from reflectance.render.shading import shade
+from reflectance.render.shading import shade, white_card_luminance
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
 
@@ -195,6 +195,9 @@ def display_image(result):
     XYZ, scale = result.XYZ, 1.0
     if d.expose and d.key is not None:
         XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
+    elif d.expose and d.white is not None:  # metered on a white card facing the lights
+        scale = d.white / white_card_luminance(scene.lights)
+        XYZ = XYZ * scale
     elif d.expose:
         # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
         # at the maximum luminance of its chromaticity

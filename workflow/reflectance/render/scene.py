@@ -120,6 +120,7 @@ class Display:
     png_bit_depth: int = 8
     key: tuple | None = None  # (percentile, luminance): reflectance.colour.display.expose_key
     highlight_knee: float | None = None  # reflectance.colour.display.compress_highlights
+    white: float | None = None  # display luminance of a white card: shading.white_card_luminance
 
 
 @dataclass(frozen=True, eq=False)
@@ -454,8 +455,11 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     if "illuminant" in d:
         _illuminant(check, ["display", "illuminant"], display_white)
     key = (float(d["key"]["percentile"]), float(d["key"]["luminance"])) if "key" in d else None
+    white = float(d["white"]["luminance"]) if "white" in d else None
+    if white is not None and any(light.area is not None for light in lights):
+        check.add(["display", "white"], "a white card needs every light's solid_angle")
     display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
-                      d["png_bit_depth"], key, d.get("highlight_knee"))
+                      d["png_bit_depth"], key, d.get("highlight_knee"), white)
 
     cache, objects = {}, []
     for i, obj in enumerate(doc["objects"]):

@@ -61,6 +61,7 @@ __all__ = [
     "Light",
     "Ambient",
     "ambient_intensity",
+    "white_card_luminance",
     "emission_XYZ",
     "fresnel_XYZ_table",
     "fresnel_XYZ_table_rgb",
@@ -256,6 +257,27 @@ def ambient_intensity(ambient, lights):
                          "solid_angle (a light given by its area has no single d omega)")
     weighted = ambient.fraction * sum(light.intensity * light.solid_angle for light in lights)
     return weighted if ambient.reference == "weighted" else weighted / np.pi
+
+
+def white_card_luminance(lights):
+    """Luminance Y of a white Lambertian card (albedo 1) turned to face each light in turn, summed.
+
+    A light of intensity I and solid angle d omega with a spectrum of Y = 1 gives a surface facing
+    it the irradiance I d omega; a perfect diffuser shows it as radiance I d omega / pi. Summed over
+    the lights, ``sum_l I_l d omega_l / pi``: the reference white a photographer's incident-light
+    meter reads, independent of the object (the exposure of ``display.white``).
+
+    Examples
+    --------
+    >>> lights = [Light(DirectionalLight((0, 0, 1)), solid_angle=1e-4),
+    ...           Light(DirectionalLight((0, 1, 1)), solid_angle=2e-4)]
+    >>> print(f"{white_card_luminance(lights) * np.pi:.1e}")
+    3.0e-04
+    """
+    if any(light.area is not None for light in lights):
+        raise ValueError("a white card needs every light's solid_angle (a light given by its "
+                         "area has no single d omega)")
+    return float(sum(light.intensity * light.solid_angle for light in lights)) / np.pi
 
 
 def emission_XYZ(dominant_wavelength_nm, luminance, purity=1.0, white="D65",
