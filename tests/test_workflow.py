@@ -341,3 +341,18 @@ def test_report_reads_in_a_browser(built, root, tmp_path):
         plain = re.sub(r"<[^>]+>", "", html.unescape(caption))
         assert not re.search(r"\[\s*'|\{\s*'|\[\s*\{|\{\{|\{%", plain), f"{path}: {plain}"
     assert seen["badLinks"] == []
+
+
+def test_readme_strip_is_the_committed_picture(built, root):
+    """README shows workflow/docs/strip.png, a committed copy of results/readme/strip.png: the
+    build must give the same picture (same size; pixels equal up to last-bit differences a
+    different numpy or VTK may make), so the copy cannot go stale unnoticed."""
+    import numpy as np
+    from PIL import Image
+
+    with Image.open(built / "results/readme/strip.png") as im:
+        fresh = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
+    with Image.open(root / "workflow/docs/strip.png") as im:
+        committed = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
+    assert fresh.shape == committed.shape
+    assert np.abs(fresh - committed).mean() < 0.005, "refresh it: README.md says how"
