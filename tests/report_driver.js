@@ -23,9 +23,10 @@
     return true;
   }
 
-  async function imageLoads() {
+  // the page's <img> of this result (not, e.g., the report's own logo) has decoded
+  async function imageLoads(uri) {
     for (let i = 0; i < 100; i++) {
-      const img = document.querySelector("#app img[src^='data:']");
+      const img = Array.from(document.querySelectorAll("#app img")).find((el) => el.src === uri);
       if (img && img.complete) return img.naturalWidth > 0 && img.naturalHeight > 0;
       await sleep(50);
     }
@@ -74,7 +75,7 @@
           if (/\.(png|jpe?g|svg|gif)$/i.test(path)) {   // the eye button: the image in the page
             app.setView({ content: "img", contentPath: entry.data_uri, resultPath: path });
             await sleep(50);
-            seen.shown = await imageLoads();
+            seen.shown = await imageLoads(entry.data_uri);
           } else {
             seen.shown = typeof entry.data_uri === "string" && entry.data_uri.startsWith("data:")
               && entry.data_uri.length > 64;
