@@ -264,3 +264,86 @@ def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(built, tmp_path,
     proc = snakemake(cwd, "-n", "--cores", "2")
     text = proc.stdout + proc.stderr
     assert set(_planned_jobs(text)) == dependents | {"all"}, text
+
+
+# The report, `snakemake --report report.html` of the build, read in a real headless browser
+# (Debian's chromium; .ci/run installs it): tests/report_driver.js clicks through every category
+# and subcategory of the page, opens each result's caption and shows each image, then replaces
+# the page with what it saw, which `chromium --dump-dom` prints.
+
+def _chromium():
+    for name in ("chromium", "chromium-browser"):
+        if shutil.which(name):
+            return shutil.which(name)
+    pytest.skip("no chromium (Debian: apt-get install chromium; .ci/run installs it)")
+
+
+def _rules_text(root):
+    return "\n".join(p.read_text() for p in sorted((root / "workflow" / "rules").glob("*.smk")))
+
+
+def test_report_reads_in_a_browser(built, root, tmp_path):
+    import html
+    import json
+    import re
+
+    chromium = _chromium()
+    report = tmp_path / "report.html"
+    snakemake(built, "--report", str(report))
+    page = report.read_text()
+    driver = (Path(__file__).parent / "report_driver.js").read_text()
+    end = page.rindex("</body>")
+    driven = tmp_path / "driven.html"
+    driven.write_text(page[:end] + "<script>" + driver + "</script>" + page[end:])
+    proc = subprocess.run(
+        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=600000",
+         "--dump-dom", driven.as_uri()], capture_output=True, text=True, timeout=600)
+    found = re.search(r'<pre id="report-check">(.*?)</pre>', proc.stdout, re.S)
+    assert found, proc.stderr[-2000:]
+    seen = json.loads(html.unescape(found.group(1)))
+    assert seen["errors"] == []
+
+    # the landing page is the workflow description, not a bare rule graph
+    assert "How to read it" in seen["landing"]
+    # every category and subcategory the rules name is in the menu, opens, and lists its results
+    text = _rules_text(root)
+    categories = set(re.findall(r'(?<![a-z])category="([^"]+)"', text))
+    subcategories = set(re.findall(r'subcategory="([^"]+)"', text))
+    assert set(seen["menu"]) == categories
+    for name, category in seen["categories"].items():
+        assert category["opened"], name
+        for sub, rows in category["subcategories"].items():
+            assert rows, (name, sub)  # a subcategory that opened with its results listed
+    assert {s for c in seen["categories"].values() for s in c["subcategories"]} == subcategories
+    # every figure the rules put in the report is there and shown; every caption reads clean
+    assert any(p.endswith(".png") for p in seen["results"])
+    problems = []
+    for path, result in seen["results"].items():
+        caption = result["captionHtml"]
+        plain = re.sub(r"<[^>]+>", "", html.unescape(caption))
+        # a list or mapping printed by Python (an interval [0, 90] is prose), or raw Jinja
+        repr_ = re.search(r".{0,40}(\[\s*'|\{\s*'|\[\s*\{|\[\s*\[|\{\{|\{%|"
+                          r"\[-?[\d.]+(, -?[\d.e+-]+){2,}\]).{0,40}", plain)
+        problems += [f"{path}: {what}" for what, bad in [
+            ("not shown", not result["shown"]),
+            ("no caption", not caption.strip()),
+            ("a Docutils system message", "system-message" in caption or "System Message" in caption),
+            (f"a Python repr: {repr_ and repr_.group(0)}", repr_),
+        ] if bad]
+    assert problems == [], "\n".join(problems)
+    assert seen["badLinks"] == []
+
+
+def test_readme_strip_is_the_committed_picture(built, root):
+    """README shows workflow/docs/strip.png, a committed copy of results/readme/strip.png: the
+    build must give the same picture (same size; pixels equal up to last-bit differences a
+    different numpy or VTK may make), so the copy cannot go stale unnoticed."""
+    import numpy as np
+    from PIL import Image
+
+    with Image.open(built / "results/readme/strip.png") as im:
+        fresh = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
+    with Image.open(root / "workflow/docs/strip.png") as im:
+        committed = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
+    assert fresh.shape == committed.shape
+    assert np.abs(fresh - committed).mean() < 0.005, "refresh it: README.md says how"

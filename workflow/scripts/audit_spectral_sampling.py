@@ -88,8 +88,9 @@ with script_log(snakemake) as log:
         parts.append(f"{label} {w.dE2000_vs_1nm:.2f} ({w.material}, {w.angle_deg:g}\u00b0)")
     answer = (f"**Answer:** the largest CIEDE2000 against the {reference} grid, over "
               f"{len(cfg['materials'])} materials and the angles, is: " + "; ".join(parts)
-              + f"; the light's own white moves by {worst.loc[light].iloc[:-1].round(2).tolist()}"
-              f" on the coarser grids.\n")
+              + "; the light's own white moves by "
+              + ", ".join(f"{v:.2f} ({k})" for k, v in worst.loc[light].iloc[:-1].items())
+              + " on the coarser grids.\n")
     with atomic_write(snakemake.output.answer) as tmp:
         Path(tmp).write_text(answer)
     log.info("%s", answer.strip())

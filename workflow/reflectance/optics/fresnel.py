@@ -126,7 +126,7 @@ def fresnel_conductor(cos_theta, n, k):
 
     With ``eta = n + i k``, ``c = cos(theta_i)`` and ``w = eta cos(theta_t) = sqrt(eta^2 - sin^2
     theta_i)`` (Snell's law; the principal complex root, Re w >= 0 and Im w >= 0, is the wave that
-    decays into the medium):
+    decays into the medium)::
 
         r_s = (c - w) / (c + w),   r_p = (eta^2 c - w) / (eta^2 c + w),
         F   = (|r_s|^2 + |r_p|^2) / 2.
@@ -462,7 +462,7 @@ def _n_min_max_Gulbrandsen2014(r):
 
 
 def nk_from_reflectivity_Gulbrandsen2014(r, g):
-    """Complex index ``(n, k)`` from reflectivity ``r`` (= F0) and edge tint ``g``.
+    """Complex index ``(n, k)`` from reflectivity ``r`` (= F0) and edge tint ``g``::
 
         n = g n_min + (1 - g) n_max,   n_min = (1 - r) / (1 + r),
                                         n_max = (1 + sqrt r) / (1 - sqrt r),

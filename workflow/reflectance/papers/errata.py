@@ -47,7 +47,7 @@ class Consequence:
     numbers: dict = field(default_factory=dict)
 
 
-#: erratum id -> function(**settings) -> Consequence; filled by :func:`_erratum`
+#: erratum id -> ``function(**settings) -> Consequence``; filled by :func:`_erratum`
 ERRATA = {}
 
 

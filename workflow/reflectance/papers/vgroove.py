@@ -2,7 +2,7 @@
 
 Torrance & Sparrow (1967) and Blinn (1977, Figs. 1-4) model the surface as long symmetric
 V-grooves whose sides make equal and opposite angles alpha with the mean normal N; the facet that
-reflects light from L to E is the side whose normal is H = (L + E)/|L + E|. Along the groove the
+reflects light from L to E is the side whose normal is ``H = (L + E)/|L + E|``. Along the groove the
 geometry does not change, so every ray stays in its own plane parallel to the plane of N and H
 and the problem is exactly two-dimensional once L and E are projected onto that plane (Blinn's
 E', Fig. 4). This module builds the groove in that plane and traces rays through it, counting:
@@ -159,7 +159,7 @@ def _unit(v, name):
 
 
 def simulate_vgroove(L, E, N=(0.0, 0.0, 1.0), n_rays=100_000, n_keep=24, half_width=1.0):
-    """Trace a parallel beam from L through the V-groove whose facet normal is H = (L + E)/|L + E|.
+    """Trace a parallel beam from L through the V-groove whose facet normal is ``H = (L + E)/|L + E|``.
 
     Parameters
     ----------

@@ -1,0 +1,37 @@
+"""Sphinx configuration of the API reference (built from the numpydoc docstrings).
+
+Build (README.md, "API reference"): ``python -m sphinx -W -b html workflow/docs docs_html``.
+"""
+
+import sys
+from pathlib import Path
+
+# The library as this checkout holds it (workflow/reflectance), installed or not.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+import reflectance  # noqa: E402
+
+project = "reflectance"
+author = "the reflectance authors"
+copyright = "2026, the reflectance authors (BSD-3-Clause)"
+release = version = reflectance.__version__
+
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon"]
+# numpydoc-style sections (Parameters, Returns, Raises, References, Examples) through napoleon,
+# which ships with Sphinx: no extra package.
+napoleon_google_docstring = False
+napoleon_numpy_docstring = True
+napoleon_use_rtype = False
+autodoc_default_options = {"members": True, "member-order": "bysource"}
+autodoc_typehints = "none"
+# Heavy libraries are real dependencies; nothing is mocked, so the reference documents the code
+# that runs.
+# numpydoc type fields ("array_like, shape (N, 3)") make every word a cross-reference; "shape"
+# then finds two attributes of that name (Camera.shape, SurfaceSamples.shape) and Sphinx warns
+# that it cannot choose. Those words are prose, not references: this silences only the
+# "more than one target found" warnings of the Python domain.
+suppress_warnings = ["ref.python"]
+exclude_patterns = ["_build"]
+html_theme = "alabaster"
+html_title = f"reflectance {release}"
+html_static_path = []

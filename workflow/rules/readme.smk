@@ -1,0 +1,27 @@
+# README's picture strip: a few of the rendered figures side by side, built like any other output
+# (results/readme/strip.png; README.md says how the copy it shows is refreshed).
+
+README_STRIP = config.get("readme", {}).get("strip", {"fig7_vases": []})
+README_OUT = "results/readme"
+_unknown = [v for v in README_STRIP["fig7_vases"] if v not in CT82_FIG7_VASES]
+if _unknown:
+    raise WorkflowError(f"config.yaml: readme.strip.fig7_vases: {', '.join(_unknown)} is not a vase "
+                        f"of Fig. 7; known: {', '.join(CT82_FIG7_VASES)}")
+
+if "readme" in config:  # (a config without the section builds no strip)
+    TARGETS += [f"{README_OUT}/strip.png"]
+
+
+rule readme_strip:
+    input:
+        vase=f"{CT82_OUT}/fig6b.png",
+        vases=[f"{CT82_OUT}/fig7/{vase}.png" for vase in README_STRIP["fig7_vases"]],
+        colours=f"{CT82_OUT}/fig5bc_strip.csv",
+    output:
+        png=f"{README_OUT}/strip.png",
+    params:
+        strip=README_STRIP,
+    log:
+        "logs/readme/strip.log",
+    script:
+        "../scripts/readme_strip.py"
