@@ -10,6 +10,12 @@
 3. the n x n samples of each pixel averaged in linear XYZ (box filter,
    :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
 
+An image of more than :data:`SINGLE_TILE_SAMPLES` samples runs these steps band by band of
+pixel rows (:func:`tiles`), each band at most :data:`TILE_SAMPLES` samples, so that memory does
+not grow with the image beyond the image itself. Every sample is traced and shaded as in one
+pass (the same rays, the same exact tests); only the light maps that propose occluders are
+drawn per band (over that band's samples, at the whole image's map size).
+
 :func:`write_render` writes the linear XYZ image as OpenEXR (the validated scene and the package
 versions in its header) and, optionally, the display PNG (Cook & Torrance exposure over the image,
 gamut clipping, transfer function: :mod:`reflectance.colour.display`). Everything is deterministic: the
@@ -28,6 +34,7 @@ import numpy as np
 from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
+from reflectance.render.primitives import Primitives
 from reflectance.render.shading import shade
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
@@ -37,6 +44,9 @@ __all__ = [
     "COMPONENTS",
     "RenderResult",
     "trace",
+    "tiles",
+    "SINGLE_TILE_SAMPLES",
+    "TILE_SAMPLES",
     "shade_samples",
     "render",
     "display_image",
@@ -76,13 +86,50 @@ class RenderResult:
     scene: object = field(repr=False)
 
 
-def trace(scene):
-    """(samples, shadowed, timings): camera visibility and each light's shadow mask."""
+#: images of at most this many samples are traced in one pass (every figure of the workflow is)
+SINGLE_TILE_SAMPLES = 1 << 21
+#: samples per band of a larger image (bounds the per-sample arrays of visibility, shadows and
+#: shading to a few hundred MiB whatever the image size)
+TILE_SAMPLES = 1 << 19
+
+
+def tiles(camera, single=None, tile=None):
+    """Bands ``(start, stop)`` of rows of the camera's fine grid that :func:`render` traces one
+    at a time: the whole grid if it has at most ``single`` samples (default
+    :data:`SINGLE_TILE_SAMPLES`), else bands of whole pixel rows of at most ``tile`` samples
+    (default :data:`TILE_SAMPLES`; at least one pixel row)."""
+    single = SINGLE_TILE_SAMPLES if single is None else int(single)
+    tile = TILE_SAMPLES if tile is None else int(tile)
+    rows, cols = camera.shape
+    if rows * cols <= single:
+        return [(0, rows)]
+    n = camera.supersample
+    step = max(n, tile // cols // n * n)
+    return [(start, min(start + step, rows)) for start in range(0, rows, step)]
+
+
+def _map_size(camera, rows=None):
+    """Light-map side: what :func:`shadow_masks` picks for the whole grid, and for a band of
+    ``rows`` that side scaled by twice the square root of the band's share of the samples (the
+    band's samples cover about that share of the whole map; twice as fine again, as a margin),
+    at least 256 and at most the whole grid's."""
+    whole = int(np.clip(max(camera.shape), 256, 4096))
+    if rows is None or (rows[0], rows[1]) == (0, camera.shape[0]):
+        return whole
+    share = (rows[1] - rows[0]) / camera.shape[0]
+    return int(np.clip(round(2.0 * whole * np.sqrt(share)), 256, whole))
+
+
+def trace(scene, rows=None, primitives=None):
+    """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
+    whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
+    (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given."""
     t0 = time.perf_counter()
-    samples = visibility(scene.mesh, scene.camera)
+    samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows)
     t1 = time.perf_counter()
     if scene.shadows and scene.lights:
-        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights])
+        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
+                                _map_size(scene.camera, rows))
     else:
         shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
     t2 = time.perf_counter()
@@ -135,30 +182,65 @@ def render(scene, spectral=None, components=False):
     if components and spectral != "table":
         raise ValueError("components are available with spectral='table' only")
     t0 = time.perf_counter()
-    samples, shadowed, timings = trace(scene)
-    t1 = time.perf_counter()
-    shaded = shade_samples(scene, samples, shadowed, spectral, components)
-    XYZ, parts = shaded if components else (shaded, None)
-    image = samples.to_pixels(XYZ)
-    if components:
-        parts = {name: samples.to_pixels(value) for name, value in parts.items()}
-    t2 = time.perf_counter()
-    timings.update(shading=t2 - t1, total=t2 - t0)
-    hit = samples.hit
-    stats = dict(samples.stats, hit=float(hit.mean()),
-                 shadowed=[float(s[hit].mean()) if hit.any() else 0.0 for s in shadowed],
-                 seen_from_back=_seen_from_back(scene, samples))
-    return RenderResult(image, parts, timings, stats, scene)
+    camera, n_ss = scene.camera, scene.camera.supersample
+    bands = tiles(camera)
+    primitives = Primitives(scene.mesh)
+    image = np.zeros((camera.height, camera.width, 3))
+    parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
+    timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
+    count = _Counts(len(scene.lights), len(scene.objects))
+    for start, stop in bands:
+        samples, shadowed, t = trace(scene, (start, stop), primitives)
+        t1 = time.perf_counter()
+        shaded = shade_samples(scene, samples, shadowed, spectral, components)
+        XYZ, got = shaded if components else (shaded, None)
+        rows = slice(start // n_ss, stop // n_ss)
+        image[rows] = samples.to_pixels(XYZ)
+        if components:
+            for name, value in got.items():
+                parts[name][rows] = samples.to_pixels(value)
+        count.add(samples, shadowed)
+        del samples, shadowed, shaded, XYZ, got
+        timings["visibility"] += t["visibility"]
+        timings["shadows"] += t["shadows"]
+        timings["shading"] += time.perf_counter() - t1
+    timings["total"] = time.perf_counter() - t0
+    return RenderResult(image, parts, timings, count.stats(), scene)
 
 
-def _seen_from_back(scene, samples):
-    """Per object: the fraction of its visible samples seen from the back of the surface (None
-    where it is not visible)."""
-    fractions = []
-    for i in range(len(scene.objects)):
-        mine = samples.hit & (samples.object_id == i)
-        fractions.append(float(samples.flipped[mine].mean()) if mine.any() else None)
-    return fractions
+class _Counts:
+    """Sample counts over the bands of a render, and the fractions of :attr:`RenderResult.stats`
+    (the same numbers whether the image was traced in one band or several)."""
+
+    VISIBILITY = ("raster_miss", "recovered", "searched", "dropped")
+
+    def __init__(self, n_lights, n_objects):
+        self.samples, self.hit = 0, 0
+        self.visibility = dict.fromkeys(self.VISIBILITY, 0)
+        self.shadowed = [0] * n_lights
+        self.visible, self.back = [0] * n_objects, [0] * n_objects
+
+    def add(self, samples, shadowed):
+        n, hit = len(samples.hit), samples.hit
+        self.samples += n
+        self.hit += int(np.count_nonzero(hit))
+        for key in self.VISIBILITY:  # the band's fractions are counts / n, exactly
+            self.visibility[key] += round(samples.stats[key] * n)
+        for i, s in enumerate(shadowed):
+            self.shadowed[i] += int(np.count_nonzero(s & hit))
+        for i in range(len(self.visible)):
+            mine = hit & (samples.object_id == i)
+            self.visible[i] += int(np.count_nonzero(mine))
+            self.back[i] += int(np.count_nonzero(samples.flipped & mine))
+
+    def stats(self):
+        out = {key: value / self.samples for key, value in self.visibility.items()}
+        out.update(hit=self.hit / self.samples,
+                   shadowed=[s / self.hit if self.hit else 0.0 for s in self.shadowed],
+                   # per object: the fraction of its visible samples seen from the back of the
+                   # surface (None where it is not visible)
+                   seen_from_back=[b / v if v else None for b, v in zip(self.back, self.visible)])
+        return out
 
 
 #: an object more than this fraction of whose visible surface is seen from the back is reported
