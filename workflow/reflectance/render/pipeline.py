@@ -55,6 +55,7 @@ __all__ = [
     "render_warnings",
     "BACK_FRACTION_WARNING",
     "image_difference_CIEDE2000",
+    "pixel_difference_CIEDE2000",
 ]
 
 COMPONENTS = ("ambient", "diffuse", "specular", "emission")
@@ -320,14 +321,10 @@ def write_render(result, exr_path, png_path=None):
             write_png(png_tmp, rgb, bit_depth=scene.display.png_bit_depth)
 
 
-def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
                                wavelengths=None):
-    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
-
-    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
-    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
-    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
-    """
+    """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
+    reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
     from reflectance.colour.colorimetry import OBSERVER_DEFAULT, XYZ_to_Lab, white_XYZ
     from reflectance.colour.difference import delta_E_CIE2000
 
@@ -338,9 +335,21 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     lab = [XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
     dE = delta_E_CIE2000(lab[0], lab[1])
     lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
-    if not lit.any():
+    return dE[lit]
+
+
+def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                               wavelengths=None):
+    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
+
+    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
+    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
+    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
+    """
+    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer, wavelengths)
+    if not len(dE):
         return 0.0, 0.0
-    return float(dE[lit].mean()), float(dE[lit].max())
+    return float(dE.mean()), float(dE.max())
 
 
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):
