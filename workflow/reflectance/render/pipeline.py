@@ -271,15 +271,57 @@ def display_image(result):
     scene, d = result.scene, result.scene.display
     kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
               "wavelengths": scene.wavelengths}
-    XYZ, scale = result.XYZ, 1.0
-    if d.expose and d.key is not None:
+    XYZ, scale, factor = result.XYZ, 1.0, 1.0
+    rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
+    if XYZ.shape[0] > rows:  # a large image: the scale from a few pixels, applied band by band
+        scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
+    elif d.expose and d.key is not None:
         XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
     elif d.expose:
         # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
         # at the maximum luminance of its chromaticity
         XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False,
-                          highlight_knee=d.highlight_knee, **kwargs), scale
+    # pixel by pixel from here on: in bands of rows, so that the conversion's temporaries stay
+    # small at any image size (the same numbers as in one call)
+    out = np.empty(XYZ.shape)
+    for start in range(0, XYZ.shape[0], rows):
+        band = XYZ[start:start + rows]
+        out[start:start + rows] = XYZ_to_display(band * factor if factor != 1.0 else band,
+                                                 d.space, d.gamut_clip, expose=False,
+                                                 highlight_knee=d.highlight_knee, **kwargs)
+    return out, scale
+
+
+def _exposure_scale(XYZ, d, rows, kwargs):
+    """The exposure scale of a large image, from the pixels that decide it: for the metered key,
+    the luminances of the lit pixels (their percentile is the scale); for Cook & Torrance, the
+    pixels of each band within 1e-9 of that band's greatest display luminance (the most
+    luminous colour is among them). The exposure functions themselves then pick the scale."""
+    if not d.expose:
+        return 1.0
+    if d.key is not None:
+        Y = XYZ[..., 1]
+        lit = Y[np.isfinite(Y) & (Y > 0)]
+        probe = np.zeros((len(lit), 3))
+        probe[:, 1] = lit
+        return expose_key(probe, *d.key)[1]
+    from reflectance.colour.display import XYZ_to_linear_RGB, display_space
+
+    luminance = display_space(d.space).matrix_RGB_to_XYZ[1]
+    candidates = []
+    for start in range(0, XYZ.shape[0], rows):
+        band = XYZ[start:start + rows].reshape(-1, 3)
+        RGB = XYZ_to_linear_RGB(band, d.space, **kwargs)
+        Y = np.where(np.all(np.isfinite(RGB), axis=-1), RGB @ luminance, -np.inf)
+        top = Y.max()
+        if top > 0:
+            candidates.append(band[Y >= top * (1.0 - 1e-9)])
+    if not candidates:
+        return 1.0
+    return expose_CookTorrance1982(np.concatenate(candidates), d.space, **kwargs)[1]
+
+
+_DISPLAY_BAND_PIXELS = 1 << 20  # pixels converted to display RGB at once
 
 
 def software_versions():
