@@ -72,3 +72,20 @@ def test_banded_render_equals_one_pass(root, monkeypatch):
     differs = np.any(banded.XYZ != one.XYZ, axis=-1)
     assert differs.mean() < 0.01
     assert one.XYZ[..., 1].max() > 0.1 and (one.XYZ[..., 1] == 0).mean() > 0.05  # lit and shadow
+
+
+@pytest.mark.parametrize("key", [None, (50.0, 0.18)])
+def test_display_in_bands_is_the_same_image(root, monkeypatch, key):
+    """A large image's exposure scale (Cook & Torrance's, or the metered key) and display RGB,
+    computed band by band, equal the one-call result exactly."""
+    import dataclasses
+
+    scene = sphere_on_plane(root / "spectra")
+    if key is not None:
+        scene = dataclasses.replace(scene, display=dataclasses.replace(scene.display, key=key))
+    result = render(scene)
+    whole, scale = pipeline.display_image(result)
+    monkeypatch.setattr(pipeline, "_DISPLAY_BAND_PIXELS", 200)  # 3 rows of 64 pixels
+    banded, banded_scale = pipeline.display_image(result)
+    assert banded_scale == scale != 1.0
+    np.testing.assert_array_equal(banded, whole)
