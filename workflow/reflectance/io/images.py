@@ -187,7 +187,7 @@ def write_exr_XYZ(path, XYZ, attributes=None):
     XYZ = _finite_array(XYZ, "XYZ")
     if XYZ.ndim != 3 or XYZ.shape[-1] != 3 or 0 in XYZ.shape[:2]:
         raise ValueError(f"XYZ: expected shape (H, W, 3) with H, W >= 1, got {XYZ.shape}")
-    if np.abs(XYZ).max() > np.finfo(np.float32).max:
+    if max(XYZ.max(), -XYZ.min()) > np.finfo(np.float32).max:  # (no temporary of |XYZ|)
         raise ValueError("XYZ: values exceed the float32 range of the EXR file")
     if attributes is not None and not isinstance(attributes, Mapping):
         raise ValueError(f"attributes: expected a mapping, got {type(attributes).__name__}")
