@@ -96,3 +96,20 @@ def test_dielectric_table_at_the_default_size_equals_brute_force(root, grid):
                         colour.XYZ_to_Lab(brute * scale, white), method="CIE 2000")
     assert np.nanmax(dE) < 0.01, (default_size, np.nanmax(dE))
     np.testing.assert_allclose(table, brute, rtol=1e-4, atol=1e-6 * brute[:, 1].max())  # 65 entries: 9e-4
+
+
+def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(root):
+    """The bench's converged-reference error is 0 when the image is the reference itself, and
+    positive (CIEDE2000 mean <= p95) with fewer samples."""
+    from reflectance.cli import _default_bench_scene
+    from reflectance.render.bench import bench_size
+
+    doc = _default_bench_scene(root / "spectra")
+    same = bench_size(doc, 16, supersample=2, runs=1, brute_force_runs=0,
+                      spectra_dir=root / "spectra", reference_supersample=2)
+    assert same["spp"] == 4 and same["dE_reference_mean"] == same["dE_reference_p95"] == 0.0
+    fewer = bench_size(doc, 16, supersample=1, runs=1, brute_force_runs=0,
+                       spectra_dir=root / "spectra", reference_supersample=4)
+    assert 0.0 < fewer["dE_reference_mean"] and fewer["dE_reference_p95"] > 0.0
+    from reflectance.render.bench import crosscheck_status
+    assert "Mitsuba" in crosscheck_status()

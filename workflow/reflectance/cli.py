@@ -549,7 +549,9 @@ def _add_bench(sub):
                     "square at each --sizes with 2 x 2 supersampling, each size in its own "
                     "process: median seconds of visibility, shadows and shading, samples per "
                     "second, peak resident memory, brute-force per-wavelength shading against "
-                    "the per-angle table (speed ratio, CIEDE2000), and the shading time on 5 nm "
+                    "the per-angle table (speed ratio, CIEDE2000), the error against a "
+                    "converged reference (the same render at --reference-supersample, "
+                    "CIEDE2000 mean and 95th percentile), and the shading time on 5 nm "
                     "and 1 nm wavelength grids.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
@@ -563,6 +565,9 @@ def _add_bench(sub):
                    help="wavelength steps compared at --grid-size, 0 < NM <= 100 (default 5 1)")
     p.add_argument("--grid-size", type=PIXELS, default=512,
                    help="size of the grid comparison (1 to 16384)")
+    p.add_argument("--reference-supersample", type=_whole(0, 64), default=8,
+                   help="n x n samples per pixel of the converged reference (0: skip; skipped "
+                        "where it would exceed 2**24 samples)")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.set_defaults(run=_run_bench)
@@ -587,7 +592,8 @@ def _run_bench(args):
     try:
         scene = args.scene or _default_bench_scene(args.spectra_dir)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
-                            args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir)
+                            args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
+                            args.reference_supersample)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))

@@ -115,8 +115,11 @@ def write_png(path, rgb01, bit_depth=8):
             f"rgb01: values must lie in [0, 1], got min {image.min():.6g}, max {image.max():.6g}"
         )
     height, width, channels = image.shape
-    codes = np.rint(image * (2**bit_depth - 1))
-    samples = codes.astype(">u2" if bit_depth == 16 else np.uint8)
+    samples = np.empty(image.shape, ">u2" if bit_depth == 16 else np.uint8)
+    step = max(1, (1 << 20) // (width * channels))  # rows quantised at once: small temporaries
+    for start in range(0, height, step):
+        codes = image[start:start + step] * (2**bit_depth - 1)
+        samples[start:start + step] = np.rint(codes, out=codes)
     rows = samples.reshape(height, width * channels).view(np.uint8).reshape(height, -1)
     # PNG specification (2003) §9.2: each scanline starts with its filter type byte (0 = None).
     raw = np.concatenate([np.zeros((height, 1), dtype=np.uint8), rows], axis=1).tobytes()
@@ -184,7 +187,7 @@ def write_exr_XYZ(path, XYZ, attributes=None):
     XYZ = _finite_array(XYZ, "XYZ")
     if XYZ.ndim != 3 or XYZ.shape[-1] != 3 or 0 in XYZ.shape[:2]:
         raise ValueError(f"XYZ: expected shape (H, W, 3) with H, W >= 1, got {XYZ.shape}")
-    if np.abs(XYZ).max() > np.finfo(np.float32).max:
+    if max(XYZ.max(), -XYZ.min()) > np.finfo(np.float32).max:  # (no temporary of |XYZ|)
         raise ValueError("XYZ: values exceed the float32 range of the EXR file")
     if attributes is not None and not isinstance(attributes, Mapping):
         raise ValueError(f"attributes: expected a mapping, got {type(attributes).__name__}")

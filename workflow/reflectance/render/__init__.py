@@ -53,6 +53,8 @@ _EXPORTS = {
     "render_warnings": "pipeline",
     "BACK_FRACTION_WARNING": "pipeline",
     "image_difference_CIEDE2000": "pipeline",
+    "pixel_difference_CIEDE2000": "pipeline",
+    "tiles": "pipeline",
     "ray_triangle_MollerTrumbore1997": "rays",
     "ray_sphere": "rays",
     "SurfaceSamples": "samples",

@@ -7,13 +7,22 @@ supersampling,
 each size runs in its own Python process (so that its peak resident memory, ``ru_maxrss``, which
 includes VTK's, belongs to that size alone) and reports:
 
-- median wall seconds over ``runs`` renders of visibility (camera ID buffer + exact hits), cast
-  shadows (every light) and shading (table path), and samples per second of each;
-- the peak resident memory of those renders;
+- median wall seconds over ``runs`` renders (:func:`reflectance.render.pipeline.render`, in
+  bands of rows for large images) of visibility (camera ID buffer + exact hits), cast shadows
+  (every light) and shading (table path), and samples per second of each;
+- the peak resident memory of those renders, and the samples per pixel;
+- the error of the image against a converged reference: the same scene rendered with
+  ``reference_supersample`` x ``reference_supersample`` samples per pixel (brute-force
+  supersampling of the same shading; box filter), as CIEDE2000 mean and 95th percentile over
+  the lit pixels on the reference's exposure;
 - brute-force per-wavelength shading of the same samples: its seconds, its speed ratio to the
-  table and the CIEDE2000 (mean, max over the lit pixels) between the two images;
+  table and the CIEDE2000 (mean, max over the lit pixels) between the two images (images of
+  one band only);
 - at one size, the table and brute-force shading times on wavelength grids of different steps
   (5 nm and 1 nm by default): the table's time does not grow with the number of wavelengths.
+
+A path tracer as a second reference (Mitsuba 3) is not wired in: the report says whether it
+is installed and that the comparison is skipped.
 
 Speed targets are measured here, never asserted in tests.
 """
@@ -29,7 +38,12 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report"]
+__all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
+
+#: default samples per pixel side of the converged reference
+REFERENCE_SUPERSAMPLE = 8
+#: the reference is skipped at sizes where it would exceed this many samples
+REFERENCE_MAX_SAMPLES = 1 << 24
 
 
 def _peak_MiB():
@@ -61,30 +75,35 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
 
 
 def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
-               spectra_dir=None):
+               spectra_dir=None, reference_supersample=REFERENCE_SUPERSAMPLE,
+               reference_max_samples=REFERENCE_MAX_SAMPLES):
     """Measurements for one image size, in this process (see :func:`run_bench`)."""
+    import numpy as np
+
     from reflectance.colour.colorimetry import tristimulus_weights
-    from reflectance.render.pipeline import image_difference_CIEDE2000, shade_samples, trace
+    from reflectance.render.pipeline import (image_difference_CIEDE2000,
+                                             pixel_difference_CIEDE2000, render, shade_samples,
+                                             tiles, trace)
     from reflectance.render.shading import fresnel_XYZ_table
 
+    document = scene
     t0 = time.perf_counter()
-    scene = load_bench_scene(scene, spectra_dir=spectra_dir, width=size, height=size,
+    scene = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
                              supersample=supersample, spectral="table")
     load_s = time.perf_counter() - t0
     times = {"visibility": [], "shadows": [], "shading": []}
     for _ in range(runs):
-        samples, shadowed, t = trace(scene)
-        t1 = time.perf_counter()
-        XYZ = shade_samples(scene, samples, shadowed, "table")
-        times["shading"].append(time.perf_counter() - t1)
-        times["visibility"].append(t["visibility"])
-        times["shadows"].append(t["shadows"])
+        result = render(scene)
+        for key, value in times.items():
+            value.append(result.timings[key])
     peak = _peak_MiB()
-    n_samples, n_hit = len(samples.hit), int(samples.hit.sum())
+    n_samples = size * size * supersample**2
+    n_hit = round(result.stats["hit"] * n_samples)
     median = {k: statistics.median(v) for k, v in times.items()}
     out = {
-        "size": size, "supersample": supersample, "runs": runs, "samples": n_samples,
-        "hit_samples": n_hit, "triangles": int(scene.mesh.n_cells), "lights": len(scene.lights),
+        "size": size, "supersample": supersample, "spp": supersample**2, "runs": runs,
+        "samples": n_samples, "hit_samples": n_hit, "bands": len(tiles(scene.camera)),
+        "triangles": int(scene.mesh.n_cells), "lights": len(scene.lights),
         "wavelengths": len(scene.wavelengths), "load_s": load_s, "peak_MiB": peak,
         **{f"{k}_s": v for k, v in median.items()},
         "total_s": sum(median.values()),
@@ -92,6 +111,24 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         "shadows_samples_per_s": n_hit * len(scene.lights) / max(median["shadows"], 1e-12),
         "shading_samples_per_s": n_hit / median["shading"],
     }
+    if reference_supersample and n_samples / supersample**2 * reference_supersample**2 \
+            <= reference_max_samples:
+        t1 = time.perf_counter()
+        reference = render(load_bench_scene(document, spectra_dir=spectra_dir, width=size,
+                                            height=size, supersample=reference_supersample,
+                                            spectral="table")).XYZ
+        dE = pixel_difference_CIEDE2000(result.XYZ, reference, scene.display.illuminant,
+                                        scene.observer, scene.wavelengths)
+        out.update(reference_supersample=reference_supersample,
+                   reference_s=time.perf_counter() - t1,
+                   dE_reference_mean=float(dE.mean()) if len(dE) else 0.0,
+                   dE_reference_p95=float(np.percentile(dE, 95)) if len(dE) else 0.0)
+    del result
+    if len(tiles(scene.camera)) > 1:  # the sample-level comparisons need the whole image
+        brute_force_runs, grids_nm = 0, ()
+    if brute_force_runs or grids_nm:
+        samples, shadowed, _ = trace(scene)
+        XYZ = shade_samples(scene, samples, shadowed, "table")
     if brute_force_runs:
         brute_times = []
         for _ in range(brute_force_runs):
@@ -107,7 +144,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     grid_rows = []
     for step in grids_nm:
         w = scene.document["wavelengths"]
-        other = load_bench_scene(scene, spectra_dir=spectra_dir, width=size, height=size,
+        other = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
                                  supersample=supersample,
                                  wavelengths={"start_nm": w["start_nm"], "end_nm": w["end_nm"],
                                               "step_nm": step})
@@ -129,8 +166,19 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     return out
 
 
+def crosscheck_status():
+    """One line on the path-tracer cross-check (Mitsuba 3): not run, and why."""
+    from importlib.util import find_spec
+
+    if find_spec("mitsuba") is None:
+        return "path tracer (Mitsuba 3): not installed; cross-check skipped"
+    return ("path tracer (Mitsuba 3): installed, but no scene export to it is implemented; "
+            "cross-check skipped")
+
+
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
-              grids_nm=(5, 1), grid_size=512, spectra_dir=None):
+              grids_nm=(5, 1), grid_size=512, spectra_dir=None,
+              reference_supersample=REFERENCE_SUPERSAMPLE):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict)."""
@@ -141,7 +189,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
                "grids_nm": list(grids_nm) if size == grid_size else [],
-               "spectra_dir": spectra_dir}
+               "spectra_dir": spectra_dir, "reference_supersample": reference_supersample}
         proc = subprocess.run([sys.executable, "-m", "reflectance.render.bench", "--worker",
                                json.dumps(job)], capture_output=True, text=True)
         if proc.returncode != 0:
@@ -159,23 +207,31 @@ def format_report(results):
                      f"{r0['supersample']} x {r0['supersample']} samples per pixel, "
                      f"{r0['wavelengths']} wavelengths; median of {r0['runs']} runs; "
                      "peak = max resident memory of the process (VTK included)")
-    head = (f"{'size':>6} {'samples':>9} {'hit':>8} {'scene s':>8} {'visib. s':>9} {'shadow s':>9} "
-            f"{'shade s':>8} {'total s':>8} {'vis Ms/s':>9} {'shd Ms/s':>9} {'peak MiB':>9} "
+    head = (f"{'size':>6} {'spp':>4} {'samples':>9} {'bands':>5} {'scene s':>8} {'visib. s':>9} "
+            f"{'shadow s':>9} {'shade s':>8} {'total s':>8} {'vis Ms/s':>9} {'shd Ms/s':>9} "
+            f"{'peak MiB':>9} {'ref spp':>7} {'dE ref mean':>11} {'dE ref p95':>10} "
             f"{'brute s':>8} {'brute/tab':>9} {'dE00 mean':>10} {'dE00 max':>9}")
     lines.append(head)
     for r in results:
+        ref = (f"{r['reference_supersample']**2:>7} {r['dE_reference_mean']:11.3f} "
+               f"{r['dE_reference_p95']:10.3f}" if "dE_reference_mean" in r
+               else f"{'-':>7} {'-':>11} {'-':>10}")
         brute = (f"{r['brute_force_s']:8.3f} {r['brute_over_table']:9.1f} "
                  f"{r['dE2000_mean']:10.2e} {r['dE2000_max']:9.2e}"
                  if "brute_force_s" in r else f"{'-':>8} {'-':>9} {'-':>10} {'-':>9}")
         lines.append(
-            f"{r['size']:>6} {r['samples']:>9} {r['hit_samples']:>8} {r['load_s']:8.3f} "
+            f"{r['size']:>6} {r['spp']:>4} {r['samples']:>9} {r['bands']:>5} {r['load_s']:8.3f} "
             f"{r['visibility_s']:9.3f} "
             f"{r['shadows_s']:9.3f} {r['shading_s']:8.3f} {r['total_s']:8.3f} "
             f"{r['visibility_samples_per_s'] / 1e6:9.2f} {r['shading_samples_per_s'] / 1e6:9.2f} "
-            f"{r['peak_MiB']:9.0f} {brute}")
+            f"{r['peak_MiB']:9.0f} {ref} {brute}")
     lines.append("(scene s: reading the scene, building the mesh, resampling the spectra, once; "
                  "total s = visibility + shadows + shading; vis Ms/s: camera samples per second "
-                 "of visibility; shd Ms/s: hit samples per second of table shading, all lights)")
+                 "of visibility; shd Ms/s: hit samples per second of table shading, all lights; "
+                 "dE ref: CIEDE2000 of the image against the same render at 'ref spp' samples "
+                 "per pixel, over the lit pixels; brute: per-wavelength shading of the same "
+                 "samples against the table, images of one band only)")
+    lines.append(crosscheck_status())
     for r in results:
         for g in r.get("grids", []):
             lines.append(f"size {r['size']}, {g['step_nm']:g} nm grid ({g['wavelengths']} "
@@ -188,7 +244,8 @@ def format_report(results):
 def _worker(argv):
     job = json.loads(argv[0])
     result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
-                        job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"])
+                        job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
+                        job["reference_supersample"])
     print(json.dumps(result))
 
 

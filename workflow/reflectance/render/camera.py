@@ -22,7 +22,9 @@ class View:
     Image coordinates (x, y) are in pixels, x from the left edge and y from the top edge; pixel
     (row, col) covers [col, col + 1) x [row, row + 1), its centre at (col + 1/2, row + 1/2).
     ``half`` is tan(vertical half angle) for perspective views and the half height in world
-    units for orthographic ones (VTK's view angle and parallel scale).
+    units for orthographic ones (VTK's view angle and parallel scale). ``shift`` moves the
+    window vertically by that many half heights (VTK's window centre): :meth:`band` uses it to
+    draw a band of rows of a larger view with the larger view's projection.
     """
 
     eye: np.ndarray
@@ -33,6 +35,7 @@ class View:
     height: int
     perspective: bool
     half: float
+    shift: float = 0.0
 
     @classmethod
     def look(cls, eye, forward, up, width, height, perspective, half):
@@ -46,7 +49,21 @@ class View:
                    bool(perspective), float(half))
 
     def ndc(self, x, y):
+        if self.shift:
+            return 2.0 * x / self.width - 1.0, 1.0 - 2.0 * y / self.height + self.shift
         return 2.0 * x / self.width - 1.0, 1.0 - 2.0 * y / self.height
+
+    def band(self, start, stop):
+        """The view of rows ``start .. stop - 1`` alone: the same rays through the same pixels,
+        on a (stop - start) x width grid (a tile of an ID buffer too large to draw at once)."""
+        if self.shift or not 0 <= start < stop <= self.height:
+            raise ValueError(f"rows {start}..{stop} are not a band of a {self.height}-row view")
+        h = stop - start
+        # the band's window spans rows start..stop of the full one: its half height is h / H of
+        # the full one, its centre (H - 2 start - h) / h of its own half heights above the axis
+        return View(self.eye, self.right, self.up, self.forward, self.width, h,
+                    self.perspective, self.half * h / self.height,
+                    (self.height - 2.0 * start - h) / h)
 
     def rays(self, x, y):
         """Ray origins and unit directions through image points, components first.
@@ -63,20 +80,22 @@ class View:
             return self.eye[:, None], d / np.sqrt(d[0] ** 2 + d[1] ** 2 + d[2] ** 2)
         return self.eye[:, None] + offset, np.repeat(self.forward[:, None], len(a), axis=1)
 
-    def pixel_rays(self):
+    def pixel_rays(self, start=0, stop=None):
         """Perspective rays through every pixel centre, row-major: eye (3, 1), unit d (3, N).
 
         The same numbers as :meth:`rays` at the pixel centres, built from one row and one
         column of offsets, so that no temporaries of the image's size are made besides the
-        result and its norm.
+        result and its norm. ``start`` and ``stop`` select a band of rows (the same numbers
+        as those rows of the whole image).
         """
         if not self.perspective:
             raise ValueError("pixel_rays needs a perspective view")
+        stop = self.height if stop is None else stop
         sx, _ = self.ndc(np.arange(self.width) + 0.5, 0.0)
-        _, sy = self.ndc(0.0, np.arange(self.height) + 0.5)
+        _, sy = self.ndc(0.0, np.arange(start, stop) + 0.5)
         a = sx * (self.half * self.width / self.height)
         b = (sy * self.half)[:, None]
-        d = np.empty((3, self.height, self.width))
+        d = np.empty((3, stop - start, self.width))
         for k in range(3):
             np.add(self.right[k] * a, self.up[k] * b, out=d[k])
             d[k] += self.forward[k]
@@ -94,6 +113,8 @@ class View:
         scale = self.half * np.where(depth > 0, depth, np.nan) if self.perspective else self.half
         sx = along(self.right) / (scale * (self.width / self.height))
         sy = along(self.up) / scale
+        if self.shift:
+            sy = sy - self.shift
         return (sx + 1.0) * 0.5 * self.width, (1.0 - sy) * 0.5 * self.height, depth
 
     def clipping_range(self, points, triangles=None):
@@ -138,7 +159,9 @@ class View:
                    - np.linalg.norm(P - centre[:, None], axis=2).max(axis=1))
         distance = float(np.maximum(np.maximum(to_plane, to_ball), 0.0).min())
         aspect = self.width / self.height
-        cos_corner = 1.0 / np.sqrt(1.0 + self.half**2 * (1.0 + aspect**2))
+        cos_corner = 1.0 / np.sqrt(1.0 + self.half**2 * ((1.0 + abs(self.shift))**2 + aspect**2)
+                                   if self.shift else
+                                   1.0 + self.half**2 * (1.0 + aspect**2))  # farthest corner
         near = distance * cos_corner * (1.0 - 1e-3)
         # the eye on a triangle's plane, inside its bounding sphere: that triangle is seen
         # edge-on; any near > 0 keeps the rest
@@ -148,7 +171,7 @@ class View:
         camera.SetPosition(*self.eye)
         camera.SetFocalPoint(*(self.eye + self.forward))
         camera.SetViewUp(*self.up)
-        camera.SetWindowCenter(0.0, 0.0)
+        camera.SetWindowCenter(0.0, self.shift)
         camera.SetUseHorizontalViewAngle(False)
         if self.perspective:
             camera.SetParallelProjection(False)

@@ -36,12 +36,16 @@ def encode_ids(ids):
 
 
 def decode_ids(rgb):
-    """Inverse of :func:`encode_ids` for an (..., 3) uint8 image."""
+    """Inverse of :func:`encode_ids` for an (..., 3) uint8 image (int32: 24 bits fit)."""
     rgb = np.asarray(rgb)
     if rgb.dtype != np.uint8 or rgb.shape[-1] != 3:
         raise ValueError("an ID image must be uint8 with 3 channels")
-    red, green, blue = (rgb[..., k].astype(np.int64) for k in range(3))
-    return (red << 16) | (green << 8) | blue
+    ids = rgb[..., 0].astype(np.int32)  # built in place: one int32 array of the image's size
+    ids <<= 8
+    ids |= rgb[..., 1]
+    ids <<= 8
+    ids |= rgb[..., 2]
+    return ids
 
 
 class IdRenderer:
@@ -92,7 +96,7 @@ class IdRenderer:
         self.window, self.renderer, self._poly = window, renderer, poly
 
     def render(self, view):
-        """(height, width) int64 array: 0 background, k the triangle k - 1."""
+        """(height, width) int32 array: 0 background, k the triangle k - 1."""
         if max(view.width, view.height) > MAX_BUFFER_SIDE:
             raise ValueError(f"an ID buffer of {view.width} x {view.height} pixels exceeds "
                              f"{MAX_BUFFER_SIDE} per side: lower the resolution or supersample")
@@ -120,7 +124,7 @@ class IdRenderer:
 
 
 def id_buffer(meshes, camera):
-    """The ID buffer of a camera's fine grid: (rows, cols) int64, 0 background, k triangle k - 1.
+    """The ID buffer of a camera's fine grid: (rows, cols) int32, 0 background, k triangle k - 1.
 
     Parameters
     ----------

@@ -10,6 +10,12 @@
 3. the n x n samples of each pixel averaged in linear XYZ (box filter,
    :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
 
+An image of more than :data:`SINGLE_TILE_SAMPLES` samples runs these steps band by band of
+pixel rows (:func:`tiles`), each band at most :data:`TILE_SAMPLES` samples, so that memory does
+not grow with the image beyond the image itself. Every sample is traced and shaded as in one
+pass (the same rays, the same exact tests); only the light maps that propose occluders are
+drawn per band (over that band's samples, at the whole image's map size).
+
 :func:`write_render` writes the linear XYZ image as OpenEXR (the validated scene and the package
 versions in its header) and, optionally, the display PNG (Cook & Torrance exposure over the image,
 gamut clipping, transfer function: :mod:`reflectance.colour.display`). Everything is deterministic: the
@@ -28,6 +34,7 @@ import numpy as np
 from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
+from reflectance.render.primitives import Primitives
 from reflectance.render.shading import shade, white_card_luminance
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
@@ -37,6 +44,9 @@ __all__ = [
     "COMPONENTS",
     "RenderResult",
     "trace",
+    "tiles",
+    "SINGLE_TILE_SAMPLES",
+    "TILE_SAMPLES",
     "shade_samples",
     "render",
     "display_image",
@@ -45,6 +55,7 @@ __all__ = [
     "render_warnings",
     "BACK_FRACTION_WARNING",
     "image_difference_CIEDE2000",
+    "pixel_difference_CIEDE2000",
 ]
 
 COMPONENTS = ("ambient", "diffuse", "specular", "emission")
@@ -76,13 +87,50 @@ class RenderResult:
     scene: object = field(repr=False)
 
 
-def trace(scene):
-    """(samples, shadowed, timings): camera visibility and each light's shadow mask."""
+#: images of at most this many samples are traced in one pass (every figure of the workflow is)
+SINGLE_TILE_SAMPLES = 1 << 21
+#: samples per band of a larger image (bounds the per-sample arrays of visibility, shadows and
+#: shading to a few hundred MiB whatever the image size)
+TILE_SAMPLES = 1 << 19
+
+
+def tiles(camera, single=None, tile=None):
+    """Bands ``(start, stop)`` of rows of the camera's fine grid that :func:`render` traces one
+    at a time: the whole grid if it has at most ``single`` samples (default
+    :data:`SINGLE_TILE_SAMPLES`), else bands of whole pixel rows of at most ``tile`` samples
+    (default :data:`TILE_SAMPLES`; at least one pixel row)."""
+    single = SINGLE_TILE_SAMPLES if single is None else int(single)
+    tile = TILE_SAMPLES if tile is None else int(tile)
+    rows, cols = camera.shape
+    if rows * cols <= single:
+        return [(0, rows)]
+    n = camera.supersample
+    step = max(n, tile // cols // n * n)
+    return [(start, min(start + step, rows)) for start in range(0, rows, step)]
+
+
+def _map_size(camera, rows=None):
+    """Light-map side: what :func:`shadow_masks` picks for the whole grid, and for a band of
+    ``rows`` that side scaled by twice the square root of the band's share of the samples (the
+    band's samples cover about that share of the whole map; twice as fine again, as a margin),
+    at least 256 and at most the whole grid's."""
+    whole = int(np.clip(max(camera.shape), 256, 4096))
+    if rows is None or (rows[0], rows[1]) == (0, camera.shape[0]):
+        return whole
+    share = (rows[1] - rows[0]) / camera.shape[0]
+    return int(np.clip(round(2.0 * whole * np.sqrt(share)), 256, whole))
+
+
+def trace(scene, rows=None, primitives=None):
+    """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
+    whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
+    (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given."""
     t0 = time.perf_counter()
-    samples = visibility(scene.mesh, scene.camera)
+    samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows)
     t1 = time.perf_counter()
     if scene.shadows and scene.lights:
-        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights])
+        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
+                                _map_size(scene.camera, rows))
     else:
         shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
     t2 = time.perf_counter()
@@ -139,30 +187,65 @@ def render(scene, spectral=None, components=False, fresnel_table=None):
     if components and spectral != "table":
         raise ValueError("components are available with spectral='table' only")
     t0 = time.perf_counter()
-    samples, shadowed, timings = trace(scene)
-    t1 = time.perf_counter()
-    shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
-    XYZ, parts = shaded if components else (shaded, None)
-    image = samples.to_pixels(XYZ)
-    if components:
-        parts = {name: samples.to_pixels(value) for name, value in parts.items()}
-    t2 = time.perf_counter()
-    timings.update(shading=t2 - t1, total=t2 - t0)
-    hit = samples.hit
-    stats = dict(samples.stats, hit=float(hit.mean()),
-                 shadowed=[float(s[hit].mean()) if hit.any() else 0.0 for s in shadowed],
-                 seen_from_back=_seen_from_back(scene, samples))
-    return RenderResult(image, parts, timings, stats, scene)
+    camera, n_ss = scene.camera, scene.camera.supersample
+    bands = tiles(camera)
+    primitives = Primitives(scene.mesh)
+    image = np.zeros((camera.height, camera.width, 3))
+    parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
+    timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
+    count = _Counts(len(scene.lights), len(scene.objects))
+    for start, stop in bands:
+        samples, shadowed, t = trace(scene, (start, stop), primitives)
+        t1 = time.perf_counter()
+        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
+        XYZ, got = shaded if components else (shaded, None)
+        rows = slice(start // n_ss, stop // n_ss)
+        image[rows] = samples.to_pixels(XYZ)
+        if components:
+            for name, value in got.items():
+                parts[name][rows] = samples.to_pixels(value)
+        count.add(samples, shadowed)
+        del samples, shadowed, shaded, XYZ, got
+        timings["visibility"] += t["visibility"]
+        timings["shadows"] += t["shadows"]
+        timings["shading"] += time.perf_counter() - t1
+    timings["total"] = time.perf_counter() - t0
+    return RenderResult(image, parts, timings, count.stats(), scene)
 
 
-def _seen_from_back(scene, samples):
-    """Per object: the fraction of its visible samples seen from the back of the surface (None
-    where it is not visible)."""
-    fractions = []
-    for i in range(len(scene.objects)):
-        mine = samples.hit & (samples.object_id == i)
-        fractions.append(float(samples.flipped[mine].mean()) if mine.any() else None)
-    return fractions
+class _Counts:
+    """Sample counts over the bands of a render, and the fractions of :attr:`RenderResult.stats`
+    (the same numbers whether the image was traced in one band or several)."""
+
+    VISIBILITY = ("raster_miss", "recovered", "searched", "dropped")
+
+    def __init__(self, n_lights, n_objects):
+        self.samples, self.hit = 0, 0
+        self.visibility = dict.fromkeys(self.VISIBILITY, 0)
+        self.shadowed = [0] * n_lights
+        self.visible, self.back = [0] * n_objects, [0] * n_objects
+
+    def add(self, samples, shadowed):
+        n, hit = len(samples.hit), samples.hit
+        self.samples += n
+        self.hit += int(np.count_nonzero(hit))
+        for key in self.VISIBILITY:  # the band's fractions are counts / n, exactly
+            self.visibility[key] += round(samples.stats[key] * n)
+        for i, s in enumerate(shadowed):
+            self.shadowed[i] += int(np.count_nonzero(s & hit))
+        for i in range(len(self.visible)):
+            mine = hit & (samples.object_id == i)
+            self.visible[i] += int(np.count_nonzero(mine))
+            self.back[i] += int(np.count_nonzero(samples.flipped & mine))
+
+    def stats(self):
+        out = {key: value / self.samples for key, value in self.visibility.items()}
+        out.update(hit=self.hit / self.samples,
+                   shadowed=[s / self.hit if self.hit else 0.0 for s in self.shadowed],
+                   # per object: the fraction of its visible samples seen from the back of the
+                   # surface (None where it is not visible)
+                   seen_from_back=[b / v if v else None for b, v in zip(self.back, self.visible)])
+        return out
 
 
 #: an object more than this fraction of whose visible surface is seen from the back is reported
@@ -192,18 +275,63 @@ def display_image(result):
     scene, d = result.scene, result.scene.display
     kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
               "wavelengths": scene.wavelengths}
-    XYZ, scale = result.XYZ, 1.0
-    if d.expose and d.key is not None:
-        XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
-    elif d.expose and d.white is not None:  # metered on a white card facing the lights
+    XYZ, scale, factor = result.XYZ, 1.0, 1.0
+    rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
+    if d.expose and d.white is not None:  # metered on a white card facing the lights
         scale = d.white / white_card_luminance(scene.lights)
-        XYZ = XYZ * scale
+        if XYZ.shape[0] > rows:
+            factor = scale  # applied band by band below
+        else:
+            XYZ = XYZ * scale
+    elif XYZ.shape[0] > rows:  # a large image: the scale from a few pixels, applied band by band
+        scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
+    elif d.expose and d.key is not None:
+        XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
     elif d.expose:
         # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
         # at the maximum luminance of its chromaticity
         XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False,
-                          highlight_knee=d.highlight_knee, **kwargs), scale
+    # pixel by pixel from here on: in bands of rows, so that the conversion's temporaries stay
+    # small at any image size (the same numbers as in one call)
+    out = np.empty(XYZ.shape)
+    for start in range(0, XYZ.shape[0], rows):
+        band = XYZ[start:start + rows]
+        out[start:start + rows] = XYZ_to_display(band * factor if factor != 1.0 else band,
+                                                 d.space, d.gamut_clip, expose=False,
+                                                 highlight_knee=d.highlight_knee, **kwargs)
+    return out, scale
+
+
+def _exposure_scale(XYZ, d, rows, kwargs):
+    """The exposure scale of a large image, from the pixels that decide it: for the metered key,
+    the luminances of the lit pixels (their percentile is the scale); for Cook & Torrance, the
+    pixels of each band within 1e-9 of that band's greatest display luminance (the most
+    luminous colour is among them). The exposure functions themselves then pick the scale."""
+    if not d.expose:
+        return 1.0
+    if d.key is not None:
+        Y = XYZ[..., 1]
+        lit = Y[np.isfinite(Y) & (Y > 0)]
+        probe = np.zeros((len(lit), 3))
+        probe[:, 1] = lit
+        return expose_key(probe, *d.key)[1]
+    from reflectance.colour.display import XYZ_to_linear_RGB, display_space
+
+    luminance = display_space(d.space).matrix_RGB_to_XYZ[1]
+    candidates = []
+    for start in range(0, XYZ.shape[0], rows):
+        band = XYZ[start:start + rows].reshape(-1, 3)
+        RGB = XYZ_to_linear_RGB(band, d.space, **kwargs)
+        Y = np.where(np.all(np.isfinite(RGB), axis=-1), RGB @ luminance, -np.inf)
+        top = Y.max()
+        if top > 0:
+            candidates.append(band[Y >= top * (1.0 - 1e-9)])
+    if not candidates:
+        return 1.0
+    return expose_CookTorrance1982(np.concatenate(candidates), d.space, **kwargs)[1]
+
+
+_DISPLAY_BAND_PIXELS = 1 << 20  # pixels converted to display RGB at once
 
 
 def software_versions():
@@ -245,14 +373,10 @@ def write_render(result, exr_path, png_path=None):
             write_png(png_tmp, rgb, bit_depth=scene.display.png_bit_depth)
 
 
-def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
                                wavelengths=None):
-    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
-
-    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
-    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
-    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
-    """
+    """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
+    reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
     from reflectance.colour.colorimetry import OBSERVER_DEFAULT, XYZ_to_Lab, white_XYZ
     from reflectance.colour.difference import delta_E_CIE2000
 
@@ -263,9 +387,21 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     lab = [XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
     dE = delta_E_CIE2000(lab[0], lab[1])
     lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
-    if not lit.any():
+    return dE[lit]
+
+
+def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                               wavelengths=None):
+    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
+
+    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
+    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
+    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
+    """
+    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer, wavelengths)
+    if not len(dE):
         return 0.0, 0.0
-    return float(dE[lit].mean()), float(dE[lit].max())
+    return float(dE.mean()), float(dE.max())
 
 
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):

@@ -27,18 +27,24 @@ from reflectance.render.samples import SurfaceSamples
 __all__ = ["visibility"]
 
 
-def visibility(meshes, camera):
+def visibility(meshes, camera, rows=None):
     """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
 
     Parameters
     ----------
-    meshes : pyvista.PolyData or sequence of (mesh, object_id)
-        A scene from :func:`reflectance.geometry.shapes.compose`, or the pairs to compose.
+    meshes : pyvista.PolyData, sequence of (mesh, object_id) or Primitives
+        A scene from :func:`reflectance.geometry.shapes.compose`, the pairs to compose, or their
+        :class:`reflectance.render.primitives.Primitives` (reused as they are).
     camera : Camera
+    rows : (int, int), optional
+        A band ``(start, stop)`` of rows of the fine grid, each a multiple of the camera's
+        supersampling: only those samples are traced (a tile; the ID buffer drawn is that band
+        and one row around it). Default: the whole image.
 
     Returns
     -------
     SurfaceSamples
+        Of shape (stop - start, columns) for a band; ``pixel`` indexes the whole image.
 
     Examples
     --------
@@ -50,21 +56,29 @@ def visibility(meshes, camera):
     """
     if not isinstance(camera, Camera):
         raise ValueError(f"camera must be a Camera, got {type(camera).__name__}")
-    scene = Primitives(meshes)
+    scene = meshes if isinstance(meshes, Primitives) else Primitives(meshes)
     view = camera.view()
+    height, cols = camera.shape
+    start, stop = (0, height) if rows is None else (int(rows[0]), int(rows[1]))
+    n_ss = camera.supersample
+    if not (0 <= start < stop <= height and start % n_ss == 0 and stop % n_ss == 0):
+        raise ValueError(f"rows {start}..{stop} are not a band of whole pixels of the "
+                         f"{height}-row sample grid")
+    # the ID buffer of the band and one row around it (the 3 x 3 neighbourhoods below)
+    top, bottom = max(start - 1, 0), min(stop + 1, height)
     with IdRenderer(scene) as renderer:
-        keys = key_image(scene, renderer.render(view))
-    rows, cols = camera.shape
-    N = rows * cols
-    eye, d = view.pixel_rays()
-    raster = keys.ravel()
+        keys = key_image(scene, renderer.render(
+            view if (top, bottom) == (0, height) else view.band(top, bottom)))
+    N = (stop - start) * cols
+    eye, d = view.pixel_rays(start, stop)
+    raster = keys[start - top:stop - top].ravel()
     best_t, best_key = np.full(N, np.inf), np.full(N, -1, np.int32)
     barycentric = np.zeros((N, 2))  # (b1, b2) of the best hit so far, written in place
     best_b1, best_b2 = barycentric[:, 0], barycentric[:, 1]
 
     def offer(sel, k):  # each sample at most once per call; chunks bound the temporaries
-        for start in range(0, len(sel), _CHUNK):
-            sc, kc = sel[start:start + _CHUNK], k[start:start + _CHUNK]
+        for first in range(0, len(sel), _CHUNK):
+            sc, kc = sel[first:first + _CHUNK], k[first:first + _CHUNK]
             t, b1, b2, hit = scene.intersect(eye, np.take(d, sc, axis=1), kc, 0.0, np.inf)
             better = hit & (t < best_t[sc])
             s = sc[better]
@@ -76,9 +90,10 @@ def visibility(meshes, camera):
     missed = surface[best_key[surface] < 0]
     del surface
     # where raster and exact rays disagree: retry with the neighbouring pixels' primitives
-    near = np.nonzero((raster < 0) & dilate(keys >= 0).ravel())[0]
+    near = np.nonzero((raster < 0) & dilate(keys >= 0)[start - top:stop - top].ravel())[0]
     retry = np.concatenate([missed, near])
-    candidates = distinct_keys(neighbour_keys(keys, retry // cols, retry % cols), raster[retry])
+    candidates = distinct_keys(neighbour_keys(keys, retry // cols + (start - top), retry % cols),
+                               raster[retry])
     del keys, raster, near
     for j in range(candidates.shape[1]):
         m = candidates[:, j] >= 0
@@ -90,8 +105,8 @@ def visibility(meshes, camera):
     # tested against every primitive whose projected bounding box contains it.
     lost = missed[best_key[missed] < 0]
     if len(lost):
-        _search_projected_boxes(scene, view, eye, d, lost, cols, best_t, best_key, best_b1,
-                                best_b2)
+        _search_projected_boxes(scene, view, eye, d, lost, cols, start, best_t, best_key,
+                                best_b1, best_b2)
     hit = best_key >= 0
     stats = {
         "raster_miss": len(missed) / N,
@@ -104,22 +119,23 @@ def visibility(meshes, camera):
     np.negative(d.T, out=towards_camera)  # V = -d, sample-major
     del d
     # best_t is inf and barycentric 0 wherever nothing was hit: they are the final arrays
-    return _samples(scene, camera, eye, towards_camera, hit, best_t, best_key, barycentric,
-                    stats)
+    return _samples(scene, camera, (start, stop), eye, towards_camera, hit, best_t, best_key,
+                    barycentric, stats)
 
 
 _CHUNK = 1 << 18  # camera rays tested at once (bounds the memory of the ray-test temporaries)
 
 
-def _search_projected_boxes(scene, view, eye, d, samples, cols, best_t, best_key, best_b1,
-                            best_b2):
+def _search_projected_boxes(scene, view, eye, d, samples, cols, first_row, best_t, best_key,
+                            best_b1, best_b2):
     """Exact nearest hit of each sample's ray among the primitives whose screen-space bounding
-    box holds the sample (updates the ``best_*`` arrays in place)."""
+    box holds the sample (updates the ``best_*`` arrays in place); samples are numbered from
+    row ``first_row`` of the view."""
     x, y, _ = view.project(scene.P)
     tx, ty = x[scene.T], y[scene.T]  # (3, n) corners of every triangle on the fine grid
     x0, x1, y0, y1 = tx.min(axis=0), tx.max(axis=0), ty.min(axis=0), ty.max(axis=0)
     for s in samples:
-        px, py = s % cols + 0.5, s // cols + 0.5
+        px, py = s % cols + 0.5, s // cols + first_row + 0.5
         near = np.nonzero((x0 <= px) & (px <= x1) & (y0 <= py) & (py <= y1))[0]
         keys = np.unique(scene.key[near])
         if not len(keys):
@@ -131,8 +147,9 @@ def _search_projected_boxes(scene, view, eye, d, samples, cols, best_t, best_key
             best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
 
 
-def _samples(scene, camera, eye, view, hit, t, key, barycentric, stats):
-    """SurfaceSamples from the best exact hits; ``view`` (N, 3) is the unit V = -d."""
+def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats):
+    """SurfaceSamples of the rows ``band`` (start, stop) from the best exact hits; ``view``
+    (N, 3) is the unit V = -d."""
     N = len(hit)
     position, normal, geometric = np.zeros((N, 3)), np.zeros((N, 3)), np.zeros((N, 3))
     uv = np.zeros((N, 2))
@@ -178,15 +195,16 @@ def _samples(scene, camera, eye, view, hit, t, key, barycentric, stats):
     flipped = hit & (dot(geometric, view) < 0)  # seen from the back: two-sided surface
     normal[flipped] *= -1.0
     geometric[flipped] *= -1.0
-    rows, cols = camera.shape
+    _, cols = camera.shape
+    start, stop = band
     n_ss = camera.supersample
     # final-image pixel of each sample, row * width + col (< 2**28: int32 suffices)
-    pixel = ((np.arange(rows, dtype=np.int32) // n_ss * np.int32(camera.width))[:, None]
+    pixel = ((np.arange(start, stop, dtype=np.int32) // n_ss * np.int32(camera.width))[:, None]
              + (np.arange(cols, dtype=np.int32) // n_ss)[None, :]).ravel()
     object_id = np.full(N, -1, np.int32)
     object_id[hit] = scene.object_id[triangle[hit]]
     return SurfaceSamples(
-        shape=(rows, cols), supersample=n_ss, hit=hit, object_id=object_id,
+        shape=(stop - start, cols), supersample=n_ss, hit=hit, object_id=object_id,
         triangle=triangle, barycentric=barycentric, position=position, normal=normal,
         geometric_normal=geometric, flipped=flipped, uv=uv, view=view, depth=t, pixel=pixel,
         stats=stats, scene=scene,
