@@ -37,6 +37,12 @@ rule audit_fresnel_atlas:
         colour=config["colour"],
     log:
         "logs/audits/fresnel_atlas.log",
+    benchmark:
+        "benchmarks/audits/fresnel_atlas.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 165 MB
+        runtime=10,  # 46 s
     script:
         "../scripts/audit_fresnel_atlas.py"
 
@@ -58,6 +64,12 @@ rule audit_spectral_sampling:
         colour=config["colour"],
     log:
         "logs/audits/spectral_sampling.log",
+    benchmark:
+        "benchmarks/audits/spectral_sampling.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 192 MB
+        runtime=10,  # 50 s
     script:
         "../scripts/audit_spectral_sampling.py"
 
@@ -79,6 +91,8 @@ rule audit_illuminant_observer:
         wavelengths=config["wavelengths"],
     log:
         "logs/audits/illuminant_observer.log",
+    benchmark:
+        "benchmarks/audits/illuminant_observer.tsv",
     script:
         "../scripts/audit_illuminant_observer.py"
 
@@ -101,6 +115,12 @@ rule audit_spectral_recovery:
         colour=config["colour"],
     log:
         "logs/audits/spectral_recovery.log",
+    benchmark:
+        "benchmarks/audits/spectral_recovery.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 192 MB
+        runtime=10,  # 147 s
     script:
         "../scripts/audit_spectral_recovery.py"
 
@@ -118,5 +138,11 @@ rule audit_white_furnace:
         audit=AUDITS["white_furnace"],
     log:
         "logs/audits/white_furnace.log",
+    benchmark:
+        "benchmarks/audits/white_furnace.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 192 MB
+        runtime=10,  # 50 s
     script:
         "../scripts/audit_white_furnace.py"

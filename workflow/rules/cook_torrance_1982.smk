@@ -28,6 +28,8 @@ rule ct82_fig4:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig4.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig4.tsv",
     threads: 1
     resources:
         mem_mb=1000,  # peak 640 MB (the job's Snakemake ~450 MB + script)
@@ -49,6 +51,8 @@ rule ct82_fig5a:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig5a.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig5a.tsv",
     script:
         "../scripts/cook_torrance_1982_fig5a.py"
 
@@ -73,6 +77,8 @@ rule ct82_fig5bc:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig5bc.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig5bc.tsv",
     script:
         "../scripts/cook_torrance_1982_fig5bc.py"
 
@@ -111,6 +117,12 @@ rule ct82_fig1:
         fig=CT82["fig1"],
     log:
         "logs/cook_torrance_1982/fig1.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig1.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 163 MB
+        runtime=10,  # 23 s
     script:
         "../scripts/cook_torrance_1982_fig1.py"
 
@@ -124,6 +136,12 @@ rule ct82_fig2:
         fig=CT82["fig2"],
     log:
         "logs/cook_torrance_1982/fig2.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig2.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # peak 200 MB
+        runtime=10,  # 41 s
     script:
         "../scripts/cook_torrance_1982_fig2.py"
 
@@ -137,6 +155,12 @@ rule ct82_fig3:
         fig=CT82["fig3"],
     log:
         "logs/cook_torrance_1982/fig3.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig3.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # peak 581 MB
+        runtime=10,  # 61 s
     script:
         "../scripts/cook_torrance_1982_fig3.py"
 
@@ -157,6 +181,8 @@ rule ct82_table1:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/table1.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/table1.tsv",
     script:
         "../scripts/cook_torrance_1982_table1.py"
 
@@ -174,5 +200,7 @@ rule errata:
         errata=CT82_ERRATA,
     log:
         "logs/errata/errata.log",
+    benchmark:
+        "benchmarks/errata/errata.tsv",
     script:
         "../scripts/errata.py"

@@ -42,6 +42,8 @@ rule ct82_fig6_published:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig6.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6.tsv",
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -70,6 +72,8 @@ rule ct82_fig6:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig6_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6_{reading}.tsv",
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -107,6 +111,8 @@ rule blinn77_fig7:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig7.tsv",
     script:
         "../scripts/blinn_1977_fig7.py"
 
@@ -130,6 +136,8 @@ rule blinn77_fig7_sweep:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7_sweep.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig7_sweep.tsv",
     script:
         "../scripts/blinn_1977_fig7_sweep.py"
 
@@ -183,6 +191,8 @@ rule ct82_fig7_published:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig7.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7.tsv",
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -210,6 +220,8 @@ rule ct82_fig7:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig7_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7_{reading}.tsv",
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -243,6 +255,8 @@ rule ct82_fig8:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig8.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig8.tsv",
     script:
         "../scripts/cook_torrance_1982_fig8.py"
 
@@ -272,6 +286,8 @@ rule blinn77_fig8:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig8.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig8.tsv",
     script:
         "../scripts/blinn_1977_fig8.py"
 
@@ -308,6 +324,8 @@ rule article_spheres:
         colour=config["colour"],
     log:
         "logs/article/spheres.log",
+    benchmark:
+        "benchmarks/article/spheres.tsv",
     threads: 1
     resources:
         mem_mb=1500,  # peak 1090 MB (the job's Snakemake ~450 MB + render)
