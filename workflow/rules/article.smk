@@ -25,8 +25,8 @@ rule article_distributions:
         "benchmarks/article/distributions.tsv",
     threads: 1
     resources:
-        mem_mb=900,  # peak 141 MB
-        runtime=10,  # 44 s
+        mem_mb=900,  # script peak 141 MB
+        runtime=10,  # measured 44 s
     script:
         "../scripts/article_distributions.py"
 
@@ -47,7 +47,7 @@ rule article_phong_example:
         "benchmarks/article/phong_example.tsv",
     threads: 1
     resources:
-        mem_mb=900,  # peak 150 MB
-        runtime=10,  # 40 s
+        mem_mb=900,  # script peak 150 MB
+        runtime=10,  # measured 40 s
     script:
         "../scripts/article_phong_example.py"

@@ -29,8 +29,8 @@ rule blinn77_fig1:
         "benchmarks/blinn_1977/fig1.tsv",
     threads: 1
     resources:
-        mem_mb=900,  # peak 130 MB
-        runtime=10,  # 41 s
+        mem_mb=900,  # script peak 130 MB
+        runtime=10,  # measured 41 s
     script:
         "../scripts/blinn_1977_fig1.py"
 
@@ -51,8 +51,8 @@ rule blinn77_fig2_4:
         "benchmarks/blinn_1977/fig2_4.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 159 MB
-        runtime=10,  # 21 s
+        mem_mb=1000,  # script peak 159 MB
+        runtime=10,  # measured 21 s
     script:
         "../scripts/blinn_1977_fig2_4.py"
 
@@ -78,8 +78,8 @@ rule blinn77_fig5_6:
         "benchmarks/blinn_1977/{fig}.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 150 MB
-        runtime=10,  # 47 s
+        mem_mb=1000,  # script peak 150 MB
+        runtime=10,  # measured 47 s
     script:
         "../scripts/blinn_1977_fig5_6.py"
 
@@ -102,7 +102,7 @@ rule blinn77_distributions:
         "benchmarks/blinn_1977/distributions.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 164 MB
-        runtime=10,  # 51 s
+        mem_mb=1000,  # script peak 164 MB
+        runtime=10,  # measured 51 s
     script:
         "../scripts/blinn_1977_distributions.py"

@@ -29,8 +29,8 @@ rule lecture_distributions:
         "benchmarks/lecture/distributions.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 171 MB
-        runtime=10,  # 36 s
+        mem_mb=1000,  # script peak 171 MB
+        runtime=10,  # measured 36 s
     script:
         "../scripts/lecture_distributions.py"
 
@@ -47,6 +47,10 @@ rule lecture_brdf_lobes_2d:
         "logs/lecture/brdf_lobes_2d.log",
     benchmark:
         "benchmarks/lecture/brdf_lobes_2d.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 159 MB
+        runtime=10,  # measured 74 s
     script:
         "../scripts/lecture_brdf_lobes_2d.py"
 
@@ -61,6 +65,10 @@ rule lecture_brdf_lobes_3d:
         "logs/lecture/brdf_lobes_3d.log",
     benchmark:
         "benchmarks/lecture/brdf_lobes_3d.tsv",
+    threads: 1
+    resources:
+        mem_mb=1400,  # script peak 544 MB
+        runtime=10,  # measured 75 s
     script:
         "../scripts/lecture_brdf_lobes_3d.py"
 
@@ -81,6 +89,10 @@ rule lecture_fresnel:
         "logs/lecture/fresnel.log",
     benchmark:
         "benchmarks/lecture/fresnel.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 133 MB
+        runtime=10,  # measured 59 s
     script:
         "../scripts/lecture_fresnel.py"
 
@@ -103,7 +115,7 @@ rule lecture_shadowing_masking:
         "benchmarks/lecture/shadowing_masking.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 160 MB
-        runtime=10,  # 52 s
+        mem_mb=1000,  # script peak 160 MB
+        runtime=10,  # measured 52 s
     script:
         "../scripts/lecture_shadowing_masking.py"

@@ -44,6 +44,10 @@ rule ct82_fig6_published:
         "logs/cook_torrance_1982/fig6.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig6.tsv",
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 891 MB
+        runtime=10,  # measured 99 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -74,6 +78,10 @@ rule ct82_fig6:
         "logs/cook_torrance_1982/fig6_{reading}.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig6_{reading}.tsv",
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 873 MB
+        runtime=10,  # measured 152 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -113,6 +121,10 @@ rule blinn77_fig7:
         "logs/blinn_1977/fig7.log",
     benchmark:
         "benchmarks/blinn_1977/fig7.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 634 MB
+        runtime=15,  # measured 242 s
     script:
         "../scripts/blinn_1977_fig7.py"
 
@@ -138,6 +150,10 @@ rule blinn77_fig7_sweep:
         "logs/blinn_1977/fig7_sweep.log",
     benchmark:
         "benchmarks/blinn_1977/fig7_sweep.tsv",
+    threads: 1
+    resources:
+        mem_mb=1400,  # script peak 494 MB
+        runtime=10,  # measured 185 s
     script:
         "../scripts/blinn_1977_fig7_sweep.py"
 
@@ -193,6 +209,10 @@ rule ct82_fig7_published:
         "logs/cook_torrance_1982/fig7.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig7.tsv",
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 183 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -222,6 +242,10 @@ rule ct82_fig7:
         "logs/cook_torrance_1982/fig7_{reading}.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig7_{reading}.tsv",
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 171 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -257,6 +281,10 @@ rule ct82_fig8:
         "logs/cook_torrance_1982/fig8.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig8.tsv",
+    threads: 1
+    resources:
+        mem_mb=1700,  # script peak 743 MB
+        runtime=10,  # measured 139 s
     script:
         "../scripts/cook_torrance_1982_fig8.py"
 
@@ -288,6 +316,10 @@ rule blinn77_fig8:
         "logs/blinn_1977/fig8.log",
     benchmark:
         "benchmarks/blinn_1977/fig8.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 590 MB
+        runtime=10,  # measured 88 s
     script:
         "../scripts/blinn_1977_fig8.py"
 
@@ -328,7 +360,7 @@ rule article_spheres:
         "benchmarks/article/spheres.tsv",
     threads: 1
     resources:
-        mem_mb=1500,  # peak 1090 MB (the job's Snakemake ~450 MB + render)
-        runtime=10,
+        mem_mb=2100,  # script peak 1079 MB
+        runtime=10,  # measured 83 s
     script:
         "../scripts/article_spheres.py"
