@@ -184,6 +184,8 @@ def memory_kills(log_text, read_text=lambda path: Path(path).read_text(errors="r
 def report_memory_kills(log_path, stream=sys.stderr):
     """Say, for each job of the run in ``log_path`` killed for its memory, which rule and request.
 
+    ``log_path`` is one log file or a list of them (what Snakemake hands ``onerror:``).
+
     Called by the Snakefile's ``onerror:`` (Snakemake's main process, once a run has failed), so
     the run ends with e.g. "rule ct82_fig4 (SLURM job 12) was killed for exceeding its memory
     request, mem_mb=200 (...); rerun with more: --set-resources ct82_fig4:mem_mb=400".
@@ -193,10 +195,13 @@ def report_memory_kills(log_path, stream=sys.stderr):
     list of str
         The lines written (none when no job was killed for memory, or the log cannot be read).
     """
-    try:
-        text = Path(log_path).read_text(errors="replace")
-    except (OSError, TypeError):
-        return []
+    paths = [log_path] if isinstance(log_path, (str, os.PathLike)) else list(log_path or [])
+    text = ""
+    for path in paths:  # Snakemake 9 passes the list of its log files
+        try:
+            text += Path(path).read_text(errors="replace")
+        except (OSError, TypeError):
+            continue
     lines = []
     for kill in memory_kills(text):
         rule, mem = kill["rule"], kill["mem_mb"]
