@@ -254,11 +254,16 @@ def runs(slurm, root, tmp_path_factory):
     local = _workdir(root, tmp / "local", REMOVED_SPECTRA)
     cluster = _workdir(root, tmp / "cluster", REMOVED_SPECTRA)
     local_run = _snakemake(local, "--cores", "2", *TARGETS)
-    # (targets first: --set-resources takes every word after it)
-    first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, "--keep-going",
-                               "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
-    second = _finish(_snakemake(cluster, "--profile", PROFILE, *TARGETS))
-    _finish(local_run)
+    try:
+        # (targets first: --set-resources takes every word after it)
+        first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, "--keep-going",
+                                   "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
+        second = _finish(_snakemake(cluster, "--profile", PROFILE, *TARGETS))
+        _finish(local_run)
+    finally:
+        if local_run.poll() is None:  # a cluster run failed: leave nothing running
+            local_run.kill()
+            local_run.wait()
     return {"local": local, "cluster": cluster, "first": first, "second": second,
             "jobcomp": _jobcomp(slurm)}
 
