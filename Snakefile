@@ -7,7 +7,7 @@ from pathlib import Path
 from snakemake.utils import min_version, validate
 
 from reflectance.config import ConfigError, read_config
-from reflectance.resume import resume_after_kill
+from reflectance.resume import report_memory_kills, resume_after_kill
 
 min_version("9.14")  # update(): a failing job restores the committed spectrum it would replace
 
@@ -46,6 +46,12 @@ include: "workflow/rules/article.smk"
 include: "workflow/rules/renders.smk"
 include: "workflow/rules/audits.smk"
 include: "workflow/rules/readme.smk"
+
+
+# A job a cluster killed for its memory: Snakemake's SLURM executor says only that it failed; name
+# the rule, its mem_mb request and SLURM's line about it (reflectance/resume.py, memory_kills).
+onerror:
+    report_memory_kills(log)
 
 
 rule all:

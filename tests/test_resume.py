@@ -4,6 +4,7 @@ The end-to-end test (a real `snakemake --cores 2` killed with SIGKILL mid-render
 rerun) is in test_workflow_resume.py; these check the pieces on their own.
 """
 
+import io
 import json
 import os
 import signal
@@ -16,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from reflectance.io.atomic import atomic_write, remove_stale_temporaries
-from reflectance.resume import resume_after_kill
+from reflectance.resume import memory_kills, report_memory_kills, resume_after_kill
 
 WORKFLOW = str(Path(__file__).resolve().parents[1] / "workflow")
 
@@ -185,3 +186,78 @@ def test_every_script_writes_its_outputs_atomically(root):
     assert _unguarded_writes("with atomic_write(p) as tmp:\n    im.save(tmp)\n") == []
     assert _unguarded_writes("with atomic_write(p) as tmp:\n    Path(tmp).write_text(s)\n") == []
     assert _unguarded_writes("Path(out).write_text(s)\n") == ["Path(out).write_text(s)"]
+
+
+# --- jobs a cluster killed for their memory (the Snakefile's onerror) ------------------------------
+
+# What Snakemake 9.27 with snakemake-executor-plugin-slurm 2.8 printed for a job killed by
+# SLURM 22.05 (tests/test_slurm.py's run; ids and paths shortened), and SLURM's log of that job.
+RUN_LOG = """\
+[Tue Dec  1 22:49:00 2026]
+rule ct82_fig4:
+    input: spectra/Cu.csv
+    output: results/cook_torrance_1982/fig4.png, results/cook_torrance_1982/fig4.csv
+    log: logs/cook_torrance_1982/fig4.log
+    jobid: 3
+    reason: Missing output files: results/cook_torrance_1982/fig4.csv
+    resources: tmpdir=<TBD>, mem_mb=200, mem=200 MB, mem_mib=191, disk_mb=1000, runtime=10
+Job 3 has been submitted with SLURM jobid 17 (log: {slurm_log}).
+[Tue Dec  1 22:49:00 2026]
+rule ct82_fig2:
+    output: results/cook_torrance_1982/fig2.png
+    log: logs/cook_torrance_1982/fig2.log
+    jobid: 4
+    resources: tmpdir=<TBD>, mem_mb=1000, mem=1000 MB, runtime=10
+Job 4 has been submitted with SLURM jobid 18 (log: {other_log}).
+[Tue Dec  1 22:49:30 2026]
+Error in rule ct82_fig4:
+    message: SLURM-job '17' failed, SLURM status is: 'FAILED'. Detailed failure reason unavailable (status command is not 'sacct').
+    jobid: 3
+    input: spectra/Cu.csv
+    log: logs/cook_torrance_1982/fig4.log, {slurm_log} (check log file(s) for error details)
+    external_jobid: 17
+[Tue Dec  1 22:49:31 2026]
+Error in rule ct82_fig2:
+    message: SLURM-job '18' failed, SLURM status is: 'FAILED'. Detailed failure reason unavailable (status command is not 'sacct').
+    jobid: 4
+    log: logs/cook_torrance_1982/fig2.log, {other_log} (check log file(s) for error details)
+    external_jobid: 18
+Exiting because a job execution failed. Look above for error messages
+"""
+SLURM_LOG = """\
+host: vm
+slurmstepd-vm: error: StepId=17.batch exceeded memory limit (229134336 > 209715200), being killed
+slurmstepd-vm: error: Exceeded job memory limit
+slurmstepd-vm: error: *** JOB 17 ON vm CANCELLED AT 2026-12-01T22:49:18 ***
+"""
+
+
+def test_a_job_killed_for_memory_is_named_with_its_rule_and_request(tmp_path):
+    slurm_log, other_log = tmp_path / "17.log", tmp_path / "18.log"
+    slurm_log.write_text(SLURM_LOG)
+    other_log.write_text("Traceback (most recent call last):\nValueError: not memory\n")
+    run_log = tmp_path / "run.snakemake.log"
+    run_log.write_text(RUN_LOG.format(slurm_log=slurm_log, other_log=other_log))
+
+    # ct82_fig2 failed too, but not for memory: only ct82_fig4 is named
+    (kill,) = memory_kills(run_log.read_text())
+    assert (kill["rule"], kill["jobid"], kill["external_jobid"], kill["mem_mb"]) == (
+        "ct82_fig4", "3", "17", 200)
+    assert "exceeded memory limit (229134336 > 209715200)" in kill["evidence"]
+    stream = io.StringIO()
+    # Snakemake 9 hands onerror the list of its log files
+    (line,) = report_memory_kills([run_log], stream=stream)
+    assert report_memory_kills(run_log, stream=io.StringIO()) == [line]
+    assert stream.getvalue() == line + "\n"
+    assert line.startswith("reflectance: rule ct82_fig4 (SLURM job 17) was killed for exceeding "
+                           "its memory request, mem_mb=200 (")
+    assert line.endswith("; rerun with more: --set-resources ct82_fig4:mem_mb=400")
+
+
+def test_out_of_memory_status_alone_names_the_job_and_a_missing_log_is_no_error(tmp_path):
+    text = RUN_LOG.format(slurm_log=tmp_path / "gone.log", other_log=tmp_path / "gone2.log")
+    assert memory_kills(text) == []  # FAILED and no log to read: nothing claimed
+    text = text.replace("SLURM status is: 'FAILED'", "SLURM status is: 'OUT_OF_MEMORY'", 1)
+    (kill,) = memory_kills(text)
+    assert kill["rule"] == "ct82_fig4" and kill["evidence"] == "SLURM status OUT_OF_MEMORY"
+    assert report_memory_kills(tmp_path / "no-such.log") == []

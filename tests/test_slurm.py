@@ -32,12 +32,16 @@ pytestmark = [pytest.mark.slurm, pytest.mark.workflow]
 SLURM_CONF = Path("/etc/slurm/slurm.conf")
 PROFILE = "workflow/profiles/slurm"
 #: A subset with every kind of rule: a measured spectrum exported (Cu, which Fig. 4 reads), one
-#: derived from a Munsell notation (RedPigment, which the spheres read), an analytic figure and a
-#: render. The copies start without those two spectra, so all four rules run.
+#: derived from a Munsell notation (RedPigment, which the spheres read), an analytic figure, a
+#: render and an audit. The copies start without those two spectra, so all five rules run.
 REMOVED_SPECTRA = ["spectra/Cu.csv", "spectra/RedPigment.csv"]
-TARGETS = ["results/cook_torrance_1982/fig4.csv", "results/article/spheres.png"]
-RULES = {"export_spectrum", "derive_spectrum", "ct82_fig4", "article_spheres"}
-
+AUDIT = "audit_white_furnace"
+TARGETS = ["results/cook_torrance_1982/fig4.csv", "results/article/spheres.png",
+           "results/audits/white_furnace.csv"]
+RULES = {"export_spectrum", "derive_spectrum", "ct82_fig4", "article_spheres", AUDIT}
+#: The audit's request in the first cluster run: less than the Snakemake process that runs the
+#: job inside SLURM needs by itself (about 300 MB), so SLURM kills it whatever the audit does.
+SMALL_MB = 200
 
 def _why_not():
     """Why SLURM cannot be started here, or None."""
@@ -195,10 +199,19 @@ def _workdir(root, path, removed=()):
     return path
 
 
-def _snakemake(cwd, *args, ok=True):
-    proc = subprocess.run([sys.executable, "-m", "snakemake", *args], cwd=cwd,
-                          capture_output=True, text=True, timeout=1500)
-    out = proc.stdout + proc.stderr
+def _snakemake(cwd, *args):
+    """Start Snakemake in ``cwd``, its output to a file there (no pipe to fill while it runs)."""
+    out = cwd / f"snakemake-{len(list(cwd.glob('snakemake-*.out')))}.out"
+    with open(out, "w") as stream:
+        proc = subprocess.Popen([sys.executable, "-m", "snakemake", *args], cwd=cwd,
+                                stdout=stream, stderr=subprocess.STDOUT)
+    proc.out = out
+    return proc
+
+
+def _finish(proc, ok=True):
+    proc.wait(timeout=1500)  # a loaded 2-core machine
+    out = proc.out.read_text()
     assert (proc.returncode == 0) == ok, out
     return out
 
@@ -228,20 +241,42 @@ def _outputs(cwd):
     return {str(f.relative_to(cwd)): f.read_bytes() for f in files if f.is_file()}
 
 
-def test_every_job_is_a_slurm_job_with_the_rules_resources_and_the_local_result(
-        slurm, root, tmp_path):
-    local = _workdir(root, tmp_path / "local", REMOVED_SPECTRA)
-    cluster = _workdir(root, tmp_path / "cluster", REMOVED_SPECTRA)
-    _snakemake(local, "--cores", "2", *TARGETS)
-    out = _snakemake(cluster, "--profile", PROFILE, *TARGETS)
+@pytest.fixture(scope="module")
+def runs(slurm, root, tmp_path_factory):
+    """The subset built three ways, the local reference beside the SLURM runs (it waits on nothing):
 
-    jobs = _submitted(out)
-    assert {rule for rule, *_ in jobs} == RULES, out
-    assert len(jobs) == 4, out
-    records = _jobcomp(slurm)
+    - ``local``: ``snakemake --cores 2``;
+    - ``first``: the SLURM profile with the audit's request cut to SMALL_MB and ``--keep-going``
+      (everything else completes, SLURM kills the audit);
+    - ``second``: the SLURM profile as it is: only the audit runs again, with its own request.
+    """
+    tmp = tmp_path_factory.mktemp("runs")
+    local = _workdir(root, tmp / "local", REMOVED_SPECTRA)
+    cluster = _workdir(root, tmp / "cluster", REMOVED_SPECTRA)
+    local_run = _snakemake(local, "--cores", "2", *TARGETS)
+    try:
+        # (targets first: --set-resources takes every word after it)
+        first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, "--keep-going",
+                                   "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
+        second = _finish(_snakemake(cluster, "--profile", PROFILE, *TARGETS))
+        _finish(local_run)
+    finally:
+        if local_run.poll() is None:  # a cluster run failed: leave nothing running
+            local_run.kill()
+            local_run.wait()
+    return {"local": local, "cluster": cluster, "first": first, "second": second,
+            "jobcomp": _jobcomp(slurm)}
+
+
+def test_every_job_is_a_slurm_job_with_the_resources_its_rule_declares(runs):
+    first, second, records = _submitted(runs["first"]), _submitted(runs["second"]), runs["jobcomp"]
+    assert sorted(rule for rule, *_ in first) == sorted(RULES), runs["first"]
+    assert [rule for rule, *_ in second] == [AUDIT], runs["second"]
     default_mem = "2000"  # the profile's default-resources: every rule here declares its own
-    for rule, resources, threads, slurm_id in jobs:
+    for rule, resources, threads, slurm_id in first + second:
         record = records[slurm_id]
+        if (rule, resources["mem_mb"]) == (AUDIT, str(SMALL_MB)):
+            continue  # the job killed for its memory (next test)
         assert record["JobState"] == "COMPLETED", (rule, record)
         assert resources["mem_mb"] != default_mem, (rule, resources)
         assert f"mem={resources['mem_mb']}M" in record["Tres"].split(","), (rule, record)
@@ -249,34 +284,31 @@ def test_every_job_is_a_slurm_job_with_the_rules_resources_and_the_local_result(
         assert record["ProcCnt"] == str(threads), (rule, record)
         assert record["Partition"] == "debug", record  # slurm.conf's default partition
 
-    local_files, cluster_files = _outputs(local), _outputs(cluster)
+
+def test_the_outputs_are_byte_identical_to_a_local_run(runs):
+    local_files, cluster_files = _outputs(runs["local"]), _outputs(runs["cluster"])
     assert set(local_files) == set(cluster_files)
-    assert len(local_files) >= 2 + 3 + 5  # two spectra, Fig. 4 (csv, png, pdf), the spheres
+    # two spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
+    assert len(local_files) >= 2 + 3 + 5 + 4, sorted(local_files)
     assert [f for f in local_files if local_files[f] != cluster_files[f]] == []
 
 
-def test_a_job_over_its_memory_request_is_killed_and_a_larger_request_completes(
-        slurm, root, tmp_path):
-    cwd = _workdir(root, tmp_path / "memory")
-    target = "results/cook_torrance_1982/fig4.csv"
-    # 200 MB: less than the Snakemake process that runs the job inside it needs (~450 MB)
-    out = _snakemake(cwd, target, "--profile", PROFILE, "--set-resources", "ct82_fig4:mem_mb=200",
-                     ok=False)
-    jobs = _submitted(out)
-    assert len(jobs) == 1, out
-    (rule, resources, _, slurm_id), = jobs
-    assert rule == "ct82_fig4" and resources["mem_mb"] == "200", out
-    assert "Error in rule ct82_fig4" in out
-    assert f"SLURM-job '{slurm_id}' failed" in out
+def test_a_job_over_its_memory_request_is_killed_named_and_completes_with_its_own(runs):
+    out = runs["first"]
+    (slurm_id,) = [sid for rule, res, _, sid in _submitted(out)
+                   if rule == AUDIT and res["mem_mb"] == str(SMALL_MB)]
+    assert runs["jobcomp"][slurm_id]["JobState"] in ("FAILED", "OUT_OF_MEMORY", "CANCELLED")
+    assert f"Error in rule {AUDIT}" in out
+    # SLURM's own line, in its log of the job: the job step's resident memory over the limit
     log = re.search(rf"(\S+/{slurm_id}\.log)", out).group(1)
-    assert re.search(r"exceeded memory limit \(\d+ > 209715200\)", Path(cwd, log).read_text())
-    assert _jobcomp(slurm)[slurm_id]["JobState"] in ("FAILED", "OUT_OF_MEMORY", "CANCELLED")
-    assert not (cwd / target).exists()
-
-    out = _snakemake(cwd, "--profile", PROFILE, target)  # the rule's own mem_mb
-    jobs = _submitted(out)
-    assert len(jobs) == 1, out
-    (rule, resources, _, slurm_id), = jobs
-    assert rule == "ct82_fig4" and int(resources["mem_mb"]) > 200
-    assert _jobcomp(slurm)[slurm_id]["JobState"] == "COMPLETED"
-    assert (cwd / target).exists()
+    assert re.search(rf"exceeded memory limit \(\d+ > {SMALL_MB * 2**20}\)",
+                     Path(runs["cluster"], log).read_text())
+    # and the Snakefile's onerror says it, with the rule and the resource (reflectance.resume)
+    assert re.search(rf"^reflectance: rule {AUDIT} \(SLURM job {slurm_id}\) was killed for "
+                     rf"exceeding its memory request, mem_mb={SMALL_MB} \(.*exceeded memory limit"
+                     rf".*\); rerun with more: --set-resources {AUDIT}:mem_mb={2 * SMALL_MB}$",
+                     out, flags=re.M), out
+    # the second run, with the rule's own request, completed it (the previous test checks how)
+    (rule, resources, _, _), = _submitted(runs["second"])
+    assert rule == AUDIT and int(resources["mem_mb"]) > SMALL_MB
+    assert (runs["cluster"] / "results/audits/white_furnace.csv").exists()

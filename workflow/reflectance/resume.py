@@ -31,13 +31,14 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import socket
 import sys
 from pathlib import Path
 
 from reflectance.io.atomic import process_alive, process_start_time
 
-__all__ = ["resume_after_kill"]
+__all__ = ["resume_after_kill", "memory_kills", "report_memory_kills"]
 
 #: records of the runs that may hold Snakemake's locks, inside Snakemake's lock folder
 RUN_RECORDS = "reflectance-run.*.json"
@@ -114,3 +115,101 @@ def resume_after_kill(main_process=True, state_dir=".snakemake", stream=sys.stde
     if cleared:
         print(f"reflectance: resuming; cleared {' and '.join(cleared)}.", file=stream)
     return cleared
+
+
+# --- jobs a cluster killed for their memory --------------------------------------------------------
+
+#: What SLURM writes into a job's log when it kills the job for its memory: jobacct_gather's
+#: OverMemoryKill ("StepId=12.batch exceeded memory limit (229134336 > 209715200), being killed")
+#: and the cgroup plugin's ("Detected 1 oom_kill event in StepId=12.0").
+MEMORY_KILL = re.compile(r"^.*(?:exceeded (?:job )?memory limit|oom[-_]kill event).*$",
+                         re.IGNORECASE | re.MULTILINE)
+_BLOCK = r"^{head}:\n((?:    .*\n?)+)"
+
+
+def _fields(body):
+    return dict(re.findall(r"^    (\w+): (.*)$", body, flags=re.MULTILINE))
+
+
+def memory_kills(log_text, read_text=lambda path: Path(path).read_text(errors="replace")):
+    """The jobs of a Snakemake run that the cluster killed for exceeding their memory request.
+
+    Snakemake's SLURM executor reports such a job only as failed ("SLURM status is: 'FAILED'",
+    or 'OUT_OF_MEMORY' where its status command can tell), and names neither the memory nor the
+    request. This reads the run's log (what Snakemake printed): each failed job's rule, its
+    ``mem_mb`` as submitted, and the memory line of the cluster's log of the job.
+
+    Parameters
+    ----------
+    log_text : str
+        Snakemake's log of the run (``.snakemake/log/*.snakemake.log``).
+    read_text : callable
+        Reads a log file named by the run (SLURM's log of the job); may raise OSError.
+
+    Returns
+    -------
+    list of dict
+        One per job killed for memory: ``rule``, ``jobid`` (Snakemake's), ``external_jobid``,
+        ``mem_mb`` (None if the run did not print it) and ``evidence`` (the cluster's line).
+    """
+    submitted = {}
+    for rule, body in re.findall(_BLOCK.format(head=r"(?:local)?rule (\w+)"), log_text,
+                                 flags=re.MULTILINE):
+        fields = _fields(body)
+        mem = re.search(r"(?:^|, )mem_mb=(\d+)", fields.get("resources", ""))
+        submitted[fields.get("jobid")] = int(mem.group(1)) if mem else None
+    kills = []
+    for rule, body in re.findall(_BLOCK.format(head=r"Error in rule (\w+)"), log_text,
+                                 flags=re.MULTILINE):
+        fields = _fields(body)
+        evidence = None
+        if "OUT_OF_MEMORY" in fields.get("message", ""):
+            evidence = "SLURM status OUT_OF_MEMORY"
+        logs = re.sub(r"\s*\(check log file\(s\) for error details\)$", "", fields.get("log", ""))
+        for path in (p.strip() for p in logs.split(", ") if p.strip()):
+            try:
+                found = MEMORY_KILL.search(read_text(path))
+            except OSError:
+                continue
+            if found:
+                evidence = found.group(0).strip()
+                break
+        if evidence:
+            kills.append({"rule": rule, "jobid": fields.get("jobid"),
+                          "external_jobid": fields.get("external_jobid"),
+                          "mem_mb": submitted.get(fields.get("jobid")), "evidence": evidence})
+    return kills
+
+
+def report_memory_kills(log_path, stream=sys.stderr):
+    """Say, for each job of the run in ``log_path`` killed for its memory, which rule and request.
+
+    ``log_path`` is one log file or a list of them (what Snakemake hands ``onerror:``).
+
+    Called by the Snakefile's ``onerror:`` (Snakemake's main process, once a run has failed), so
+    the run ends with e.g. "rule ct82_fig4 (SLURM job 12) was killed for exceeding its memory
+    request, mem_mb=200 (...); rerun with more: --set-resources ct82_fig4:mem_mb=400".
+
+    Returns
+    -------
+    list of str
+        The lines written (none when no job was killed for memory, or the log cannot be read).
+    """
+    paths = [log_path] if isinstance(log_path, (str, os.PathLike)) else list(log_path or [])
+    text = ""
+    for path in paths:  # Snakemake 9 passes the list of its log files
+        try:
+            text += Path(path).read_text(errors="replace")
+        except (OSError, TypeError):
+            continue
+    lines = []
+    for kill in memory_kills(text):
+        rule, mem = kill["rule"], kill["mem_mb"]
+        job = f" (SLURM job {kill['external_jobid']})" if kill["external_jobid"] else ""
+        request = f"mem_mb={mem}" if mem is not None else "mem_mb"
+        more = f"{rule}:mem_mb={2 * mem}" if mem is not None else f"{rule}:mem_mb=<more>"
+        lines.append(f"reflectance: rule {rule}{job} was killed for exceeding its memory request, "
+                     f"{request} ({kill['evidence']}); rerun with more: --set-resources {more}")
+    for line in lines:
+        print(line, file=stream)
+    return lines

@@ -8,7 +8,25 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["script_log"]
+__all__ = ["script_log", "peak_memory"]
+
+
+def peak_memory():
+    """This process's peak resident memory, as ``'612 MB'`` (None where the system does not say).
+
+    The kernel's high-water mark (``VmHWM`` in /proc/self/status) counts this program only;
+    ``getrusage``'s ``ru_maxrss`` would also count the Snakemake process it was forked from.
+    The rules' ``resources: mem_mb`` are set from these lines of their logs (README, "Running on
+    a cluster"), which see short peaks that ``benchmark:``'s sampling may miss.
+    """
+    try:
+        status = Path("/proc/self/status").read_text()
+    except OSError:
+        return None
+    for line in status.splitlines():
+        if line.startswith("VmHWM:"):
+            return f"{int(line.split()[1]) / 1024:.0f} MB"  # the kernel gives kB
+    return None
 
 
 @contextlib.contextmanager
@@ -32,6 +50,9 @@ def script_log(snakemake):
         except BaseException:
             traceback.print_exc(file=stream)
             raise
+        else:
+            if (peak := peak_memory()) is not None:
+                logger.info("peak resident memory: %s", peak)
         finally:
             sys.stdout, sys.stderr = old_out, old_err
             logger.removeHandler(handler)

@@ -21,6 +21,12 @@ rule article_distributions:
         fig=ARTICLE["distributions"],
     log:
         "logs/article/distributions.log",
+    benchmark:
+        "benchmarks/article/distributions.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 141 MB
+        runtime=10,  # measured 44 s
     script:
         "../scripts/article_distributions.py"
 
@@ -37,5 +43,11 @@ rule article_phong_example:
         fig=ARTICLE["phong_example"],
     log:
         "logs/article/phong_example.log",
+    benchmark:
+        "benchmarks/article/phong_example.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 150 MB
+        runtime=10,  # measured 40 s
     script:
         "../scripts/article_phong_example.py"

@@ -41,6 +41,12 @@ rule audit_fresnel_atlas:
         colour=config["colour"],
     log:
         "logs/audits/fresnel_atlas.log",
+    benchmark:
+        "benchmarks/audits/fresnel_atlas.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 165 MB
+        runtime=10,  # measured 46 s
     script:
         "../scripts/audit_fresnel_atlas.py"
 
@@ -119,6 +125,12 @@ rule audit_spectral_sampling:
         colour=config["colour"],
     log:
         "logs/audits/spectral_sampling.log",
+    benchmark:
+        "benchmarks/audits/spectral_sampling.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 192 MB
+        runtime=10,  # measured 50 s
     script:
         "../scripts/audit_spectral_sampling.py"
 
@@ -140,6 +152,12 @@ rule audit_illuminant_observer:
         wavelengths=config["wavelengths"],
     log:
         "logs/audits/illuminant_observer.log",
+    benchmark:
+        "benchmarks/audits/illuminant_observer.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 220 MB
+        runtime=10,  # measured 130 s
     script:
         "../scripts/audit_illuminant_observer.py"
 
@@ -162,6 +180,12 @@ rule audit_spectral_recovery:
         colour=config["colour"],
     log:
         "logs/audits/spectral_recovery.log",
+    benchmark:
+        "benchmarks/audits/spectral_recovery.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 192 MB
+        runtime=10,  # measured 147 s
     script:
         "../scripts/audit_spectral_recovery.py"
 
@@ -179,5 +203,11 @@ rule audit_white_furnace:
         audit=AUDITS["white_furnace"],
     log:
         "logs/audits/white_furnace.log",
+    benchmark:
+        "benchmarks/audits/white_furnace.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 144 MB
+        runtime=10,  # measured 58 s
     script:
         "../scripts/audit_white_furnace.py"

@@ -25,6 +25,12 @@ rule blinn77_fig1:
         fig=B77_ANALYTIC["fig1_4"],
     log:
         "logs/blinn_1977/fig1.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig1.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 130 MB
+        runtime=10,  # measured 41 s
     script:
         "../scripts/blinn_1977_fig1.py"
 
@@ -41,6 +47,12 @@ rule blinn77_fig2_4:
         fig=B77_ANALYTIC["fig1_4"],
     log:
         "logs/blinn_1977/fig2_4.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig2_4.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 159 MB
+        runtime=10,  # measured 21 s
     script:
         "../scripts/blinn_1977_fig2_4.py"
 
@@ -62,6 +74,12 @@ rule blinn77_fig5_6:
         figure_number=lambda wildcards: wildcards.fig[3:],
     log:
         "logs/blinn_1977/{fig}.log",
+    benchmark:
+        "benchmarks/blinn_1977/{fig}.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 150 MB
+        runtime=10,  # measured 47 s
     script:
         "../scripts/blinn_1977_fig5_6.py"
 
@@ -80,5 +98,11 @@ rule blinn77_distributions:
         fig=B77_ANALYTIC["distributions"],
     log:
         "logs/blinn_1977/distributions.log",
+    benchmark:
+        "benchmarks/blinn_1977/distributions.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 164 MB
+        runtime=10,  # measured 51 s
     script:
         "../scripts/blinn_1977_distributions.py"

@@ -28,10 +28,12 @@ rule ct82_fig4:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig4.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig4.tsv",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 640 MB (the job's Snakemake ~450 MB + script)
-        runtime=10,
+        mem_mb=1000,  # script peak 190 MB
+        runtime=10,  # measured 117 s
     script:
         "../scripts/cook_torrance_1982_fig4.py"
 
@@ -49,6 +51,12 @@ rule ct82_fig5a:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig5a.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig5a.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 126 MB
+        runtime=10,  # measured 45 s
     script:
         "../scripts/cook_torrance_1982_fig5a.py"
 
@@ -73,6 +81,12 @@ rule ct82_fig5bc:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig5bc.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig5bc.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 196 MB
+        runtime=10,  # measured 136 s
     script:
         "../scripts/cook_torrance_1982_fig5bc.py"
 
@@ -111,6 +125,12 @@ rule ct82_fig1:
         fig=CT82["fig1"],
     log:
         "logs/cook_torrance_1982/fig1.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig1.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 163 MB
+        runtime=10,  # measured 23 s
     script:
         "../scripts/cook_torrance_1982_fig1.py"
 
@@ -124,6 +144,12 @@ rule ct82_fig2:
         fig=CT82["fig2"],
     log:
         "logs/cook_torrance_1982/fig2.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig2.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 200 MB
+        runtime=10,  # measured 41 s
     script:
         "../scripts/cook_torrance_1982_fig2.py"
 
@@ -137,6 +163,12 @@ rule ct82_fig3:
         fig=CT82["fig3"],
     log:
         "logs/cook_torrance_1982/fig3.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig3.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 581 MB
+        runtime=10,  # measured 84 s
     script:
         "../scripts/cook_torrance_1982_fig3.py"
 
@@ -157,6 +189,12 @@ rule ct82_table1:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/table1.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/table1.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 134 MB
+        runtime=10,  # measured 24 s
     script:
         "../scripts/cook_torrance_1982_table1.py"
 
@@ -174,5 +212,11 @@ rule errata:
         errata=CT82_ERRATA,
     log:
         "logs/errata/errata.log",
+    benchmark:
+        "benchmarks/errata/errata.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 223 MB
+        runtime=10,  # measured 115 s
     script:
         "../scripts/errata.py"

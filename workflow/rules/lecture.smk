@@ -25,6 +25,12 @@ rule lecture_distributions:
         fig=LECTURE["distributions"],
     log:
         "logs/lecture/distributions.log",
+    benchmark:
+        "benchmarks/lecture/distributions.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 171 MB
+        runtime=10,  # measured 36 s
     script:
         "../scripts/lecture_distributions.py"
 
@@ -39,6 +45,12 @@ rule lecture_brdf_lobes_2d:
         fig=LECTURE["brdf_lobes"],
     log:
         "logs/lecture/brdf_lobes_2d.log",
+    benchmark:
+        "benchmarks/lecture/brdf_lobes_2d.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 159 MB
+        runtime=10,  # measured 74 s
     script:
         "../scripts/lecture_brdf_lobes_2d.py"
 
@@ -51,6 +63,12 @@ rule lecture_brdf_lobes_3d:
         fig=LECTURE["brdf_lobes"],
     log:
         "logs/lecture/brdf_lobes_3d.log",
+    benchmark:
+        "benchmarks/lecture/brdf_lobes_3d.tsv",
+    threads: 1
+    resources:
+        mem_mb=1400,  # script peak 544 MB
+        runtime=10,  # measured 75 s
     script:
         "../scripts/lecture_brdf_lobes_3d.py"
 
@@ -69,6 +87,12 @@ rule lecture_fresnel:
         colour=config["colour"],
     log:
         "logs/lecture/fresnel.log",
+    benchmark:
+        "benchmarks/lecture/fresnel.tsv",
+    threads: 1
+    resources:
+        mem_mb=900,  # script peak 133 MB
+        runtime=10,  # measured 59 s
     script:
         "../scripts/lecture_fresnel.py"
 
@@ -87,5 +111,11 @@ rule lecture_shadowing_masking:
         fig=LECTURE["shadowing_masking"],
     log:
         "logs/lecture/shadowing_masking.log",
+    benchmark:
+        "benchmarks/lecture/shadowing_masking.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # script peak 160 MB
+        runtime=10,  # measured 52 s
     script:
         "../scripts/lecture_shadowing_masking.py"

@@ -42,6 +42,12 @@ rule ct82_fig6_published:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig6.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6.tsv",
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 891 MB
+        runtime=10,  # measured 99 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -70,6 +76,12 @@ rule ct82_fig6:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig6_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6_{reading}.tsv",
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 873 MB
+        runtime=10,  # measured 152 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -107,6 +119,12 @@ rule blinn77_fig7:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig7.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 634 MB
+        runtime=15,  # measured 242 s
     script:
         "../scripts/blinn_1977_fig7.py"
 
@@ -130,6 +148,12 @@ rule blinn77_fig7_sweep:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7_sweep.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig7_sweep.tsv",
+    threads: 1
+    resources:
+        mem_mb=1400,  # script peak 494 MB
+        runtime=10,  # measured 185 s
     script:
         "../scripts/blinn_1977_fig7_sweep.py"
 
@@ -183,6 +207,12 @@ rule ct82_fig7_published:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig7.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7.tsv",
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 183 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -210,6 +240,12 @@ rule ct82_fig7:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig7_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7_{reading}.tsv",
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 171 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -243,6 +279,12 @@ rule ct82_fig8:
         colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig8.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig8.tsv",
+    threads: 1
+    resources:
+        mem_mb=1700,  # script peak 743 MB
+        runtime=10,  # measured 139 s
     script:
         "../scripts/cook_torrance_1982_fig8.py"
 
@@ -272,6 +314,12 @@ rule blinn77_fig8:
         wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig8.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig8.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 590 MB
+        runtime=10,  # measured 88 s
     script:
         "../scripts/blinn_1977_fig8.py"
 
@@ -308,9 +356,11 @@ rule article_spheres:
         colour=config["colour"],
     log:
         "logs/article/spheres.log",
+    benchmark:
+        "benchmarks/article/spheres.tsv",
     threads: 1
     resources:
-        mem_mb=1500,  # peak 1090 MB (the job's Snakemake ~450 MB + render)
-        runtime=10,
+        mem_mb=2100,  # script peak 1079 MB
+        runtime=10,  # measured 83 s
     script:
         "../scripts/article_spheres.py"

@@ -15,7 +15,7 @@ rule export_spectrum:
         "logs/spectra/{material}.log",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 760 MB (the job's Snakemake ~450 MB + script)
+        mem_mb=1100,  # script peak 310 MB
         runtime=10,
     script:
         "../scripts/export_spectra.py"
@@ -32,7 +32,7 @@ rule derive_spectrum:
         "logs/spectra/{material}.log",
     threads: 1
     resources:
-        mem_mb=1000,  # peak 620 MB (the job's Snakemake ~450 MB + script)
+        mem_mb=1000,  # script peak 174 MB
         runtime=10,
     script:
         "../scripts/derive_spectrum.py"
@@ -49,6 +49,10 @@ rule import_spectrum:
         entry=lambda wildcards: config["materials"][wildcards.material],
     log:
         "logs/spectra/{material}.log",
+    threads: 1
+    resources:
+        mem_mb=1100,  # as export_spectrum (config.yaml has no file to measure it on)
+        runtime=10,
     script:
         "../scripts/import_spectrum.py"
 
@@ -62,5 +66,9 @@ rule sources_table:
         materials=config["materials"],
     log:
         "logs/spectra/sources.log",
+    threads: 1
+    resources:
+        mem_mb=1200,  # script peak 346 MB
+        runtime=10,
     script:
         "../scripts/sources_table.py"
