@@ -71,6 +71,12 @@ rule audit_rgb_rendering:
         colour=config["colour"],
     log:
         "logs/audits/rgb_rendering.log",
+    benchmark:
+        "benchmarks/audits/rgb_rendering.tsv",
+    threads: 1
+    resources:
+        mem_mb=2000,  # MEASURE
+        runtime=10,  # MEASURE
     script:
         "../scripts/audit_rgb_rendering.py"
 
@@ -104,6 +110,12 @@ rule audit_gamut_mapping:
         observer=config["colour"]["observer"],
     log:
         "logs/audits/gamut_mapping.log",
+    benchmark:
+        "benchmarks/audits/gamut_mapping.tsv",
+    threads: 1
+    resources:
+        mem_mb=1500,  # MEASURE
+        runtime=10,  # MEASURE
     script:
         "../scripts/audit_gamut_mapping.py"
 

@@ -23,5 +23,11 @@ rule readme_strip:
         strip=README_STRIP,
     log:
         "logs/readme/strip.log",
+    benchmark:
+        "benchmarks/readme/strip.tsv",
+    threads: 1
+    resources:
+        mem_mb=1000,  # MEASURE
+        runtime=10,  # MEASURE
     script:
         "../scripts/readme_strip.py"
