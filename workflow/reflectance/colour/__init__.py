@@ -43,6 +43,7 @@ _EXPORTS = {
     "gamut_clip": "display",
     "encode": "display",
     "XYZ_to_display": "display",
+    "display_tag": "display",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -43,6 +43,7 @@ _EXPORTS = {
     "shade_samples": "pipeline",
     "render": "pipeline",
     "display_image": "pipeline",
+    "display_linear_RGB": "pipeline",
     "software_versions": "pipeline",
     "write_render": "pipeline",
     "render_warnings": "pipeline",

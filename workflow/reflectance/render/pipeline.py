@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
+from reflectance.colour.display import expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.shading import shade
@@ -40,6 +40,7 @@ __all__ = [
     "shade_samples",
     "render",
     "display_image",
+    "display_linear_RGB",
     "software_versions",
     "write_render",
     "render_warnings",
@@ -76,11 +77,20 @@ class RenderResult:
     scene: object = field(repr=False)
 
 
-def trace(scene):
-    """(samples, shadowed, timings): camera visibility and each light's shadow mask."""
+def _silent(phase):
+    pass
+
+
+def trace(scene, progress=None):
+    """(samples, shadowed, timings): camera visibility and each light's shadow mask.
+
+    ``progress``, if given, is called with the name of each phase as it starts."""
+    progress = progress or _silent
     t0 = time.perf_counter()
+    progress("visibility")
     samples = visibility(scene.mesh, scene.camera)
     t1 = time.perf_counter()
+    progress("shadows")
     if scene.shadows and scene.lights:
         shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights])
     else:
@@ -120,7 +130,7 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False):
     return (XYZ, parts) if components else XYZ
 
 
-def render(scene, spectral=None, components=False):
+def render(scene, spectral=None, components=False, progress=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -130,13 +140,17 @@ def render(scene, spectral=None, components=False):
         Overrides ``scene.spectral`` (``"table"`` or ``"brute-force"``).
     components : bool
         Also return the ambient, diffuse, specular and emitted parts (table shading only).
+    progress : callable, optional
+        Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
+        starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
         raise ValueError("components are available with spectral='table' only")
     t0 = time.perf_counter()
-    samples, shadowed, timings = trace(scene)
+    samples, shadowed, timings = trace(scene, progress)
     t1 = time.perf_counter()
+    (progress or _silent)("shading")
     shaded = shade_samples(scene, samples, shadowed, spectral, components)
     XYZ, parts = shaded if components else (shaded, None)
     image = samples.to_pixels(XYZ)
@@ -183,20 +197,44 @@ def render_warnings(result):
     return warnings
 
 
-def display_image(result):
-    """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display."""
+def display_linear_RGB(result, exposure=None):
+    """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
+    exposed, highlights compressed, gamut clipped; the light the display emits, before the
+    transfer function.
+
+    ``exposure`` (a positive factor on XYZ) replaces the automatic exposure of the scene's
+    display settings (Cook & Torrance's, or the metered key); None keeps it.
+    """
+    from reflectance.colour.display import XYZ_to_linear_RGB, compress_highlights, gamut_clip
+
     scene, d = result.scene, result.scene.display
     kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
               "wavelengths": scene.wavelengths}
     XYZ, scale = result.XYZ, 1.0
-    if d.expose and d.key is not None:
+    if exposure is not None:
+        if isinstance(exposure, bool) or not np.isfinite(exposure) or exposure <= 0:
+            raise ValueError(f"exposure: must be a positive finite factor, got {exposure!r}")
+        XYZ, scale = XYZ * float(exposure), float(exposure)
+    elif d.expose and d.key is not None:
         XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
     elif d.expose:
         # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
         # at the maximum luminance of its chromaticity
         XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    return XYZ_to_display(XYZ, d.space, d.gamut_clip, expose=False,
-                          highlight_knee=d.highlight_knee, **kwargs), scale
+    RGB = XYZ_to_linear_RGB(XYZ, d.space, **kwargs)
+    if d.highlight_knee is not None:
+        RGB = compress_highlights(RGB, d.highlight_knee)
+    return gamut_clip(RGB, d.gamut_clip, d.space), scale
+
+
+def display_image(result, exposure=None):
+    """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display (as
+    :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
+    :func:`display_linear_RGB`)."""
+    from reflectance.colour.display import encode
+
+    RGB, scale = display_linear_RGB(result, exposure)
+    return encode(RGB, result.scene.display.space), scale
 
 
 def software_versions():
@@ -212,15 +250,27 @@ def software_versions():
     return out
 
 
-def write_render(result, exr_path, png_path=None):
-    """Write the linear XYZ image (EXR) and, if asked, the display PNG, atomically.
+def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposure=None):
+    """Write the linear XYZ image (EXR), the display PNG and the display-referred linear RGB EXR,
+    each if its path is given (at least one), atomically: all files or none.
 
-    The EXR header holds the validated scene (``scene``, JSON), its file (``scene_file``), the
+    The XYZ EXR header holds the validated scene (``scene``, JSON), its file (``scene_file``), the
     display exposure scale, the visibility statistics and the package versions (``software``).
-    Both images are computed before either file is written.
+    The PNG is tagged with its display space (:func:`reflectance.colour.display.display_tag`:
+    the sRGB chunk, or an ICC profile for SMPTE-C). The RGB EXR holds
+    :func:`display_linear_RGB` with channels R, G, B and the display's ``chromaticities`` (the
+    same header attributes). ``exposure`` overrides the automatic exposure (a factor on XYZ).
+    Every image is computed before any file is written.
     """
+    from reflectance.colour.display import display_tag, encode
+    from reflectance.io.images import write_exr_RGB
+
+    if exr_path is None and png_path is None and rgb_exr_path is None:
+        raise ValueError("write_render: give at least one of exr_path, png_path, rgb_exr_path")
     scene = result.scene
-    rgb, scale = display_image(result)
+    linear, scale = display_linear_RGB(result, exposure)
+    rgb = encode(linear, scene.display.space)
+    tag = display_tag(scene.display.space)
     attributes = {
         "scene": scene.to_json(),
         "scene_file": str(scene.source),
@@ -228,14 +278,18 @@ def write_render(result, exr_path, png_path=None):
         "visibility_stats": json.dumps(result.stats, sort_keys=True),
         "software": json.dumps(software_versions(), sort_keys=True),
     }
-    # both files are written to temporary files first and moved into place only when both
+    # every file is written to a temporary file first and moved into place only when all
     # succeeded: a failed PNG leaves no EXR (and no earlier file is replaced)
     with contextlib.ExitStack() as stack:
-        exr_tmp = stack.enter_context(atomic_write(exr_path))
-        png_tmp = None if png_path is None else stack.enter_context(atomic_write(png_path))
-        write_exr_XYZ(exr_tmp, result.XYZ, attributes)
-        if png_tmp is not None:
-            write_png(png_tmp, rgb, bit_depth=scene.display.png_bit_depth)
+        tmp = {key: stack.enter_context(atomic_write(path))
+               for key, path in (("exr", exr_path), ("png", png_path), ("rgb", rgb_exr_path))
+               if path is not None}
+        if "exr" in tmp:
+            write_exr_XYZ(tmp["exr"], result.XYZ, attributes)
+        if "rgb" in tmp:
+            write_exr_RGB(tmp["rgb"], linear, tag, attributes)
+        if "png" in tmp:
+            write_png(tmp["png"], rgb, bit_depth=scene.display.png_bit_depth, tag=tag)
 
 
 def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
@@ -261,8 +315,10 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     return float(dE[lit].mean()), float(dE[lit].max())
 
 
-def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):
-    """Write the scene file, render it and write its EXR (and PNG); return the result.
+def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
+                    rgb_exr_path=None):
+    """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
+    the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
     rendered again alone with ``reflectance render``.
@@ -271,5 +327,5 @@ def render_to_files(scene, scene_path, exr_path, png_path=None, components=False
 
     write_scene_file(scene, scene_path)
     result = render(scene, components=components)
-    write_render(result, exr_path, png_path)
+    write_render(result, exr_path, png_path, rgb_exr_path)
     return result
