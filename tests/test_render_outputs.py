@@ -151,3 +151,30 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
     assert capsys.readouterr().err == ""
     assert main(["bench", "--sizes", "8", "--scene", "x.yaml"]) == 0
     assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
+
+
+def test_linear_rgb_exr_from_a_rendered_xyz_exr_matches_the_direct_one(root, tmp_path):
+    """The workflow's rule (colour.linear_rgb_exr) converts a render's XYZ EXR with its scene
+    file; the result is the RGB EXR the render writes itself, to float32 rounding."""
+    import yaml
+
+    from reflectance.render.pipeline import write_linear_RGB_from_XYZ
+
+    doc = yaml.safe_load((root / "workflow" / "scenes" / "example_spheres.yaml").read_text())
+    doc["camera"].update(width=24, height=16)
+    doc["spectra_dir"] = str(root / "spectra")
+    scene = tmp_path / "s.scene.yaml"
+    scene.write_text(yaml.safe_dump(doc))
+    assert main(["render", str(scene), "-o", str(tmp_path / "s.exr"), "--rgb-exr",
+                 str(tmp_path / "direct.exr"), "--quiet"]) == 0
+    write_linear_RGB_from_XYZ(tmp_path / "s.exr", scene, tmp_path / "s.rgb.exr")
+    direct, _ = read_exr(tmp_path / "direct.exr", channels="RGB")
+    converted, header = read_exr(tmp_path / "s.rgb.exr", channels="RGB")
+    assert direct.max() > 0.1
+    np.testing.assert_allclose(converted, direct, rtol=1e-5, atol=1e-7)
+    with pytest.raises(ValueError, match="not an EXR written by a render"):
+        from reflectance.io.images import write_exr_XYZ
+
+        write_exr_XYZ(tmp_path / "plain.exr", np.ones((16, 24, 3)))
+        write_linear_RGB_from_XYZ(tmp_path / "plain.exr", scene, tmp_path / "bad.rgb.exr")
+    assert not (tmp_path / "bad.rgb.exr").exists()

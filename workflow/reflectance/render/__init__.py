@@ -44,6 +44,7 @@ _EXPORTS = {
     "render": "pipeline",
     "display_image": "pipeline",
     "display_linear_RGB": "pipeline",
+    "write_linear_RGB_from_XYZ": "pipeline",
     "software_versions": "pipeline",
     "write_render": "pipeline",
     "render_warnings": "pipeline",

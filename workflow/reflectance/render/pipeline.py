@@ -41,6 +41,7 @@ __all__ = [
     "render",
     "display_image",
     "display_linear_RGB",
+    "write_linear_RGB_from_XYZ",
     "software_versions",
     "write_render",
     "render_warnings",
@@ -290,6 +291,30 @@ def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposu
             write_exr_RGB(tmp["rgb"], linear, tag, attributes)
         if "png" in tmp:
             write_png(tmp["png"], rgb, bit_depth=scene.display.png_bit_depth, tag=tag)
+
+
+def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=None):
+    """Write the display-referred linear RGB EXR of a rendered XYZ EXR (:func:`write_render`'s)
+    and its scene file, exposed as the render was (the header's ``display_exposure_scale``).
+
+    The same as rendering with ``rgb_exr_path`` except that the XYZ come from the file (float32,
+    not the render's float64): the RGB agree to float32 rounding.
+    """
+    from reflectance.io.images import read_exr
+    from reflectance.render.scene import load_scene
+
+    XYZ, header = read_exr(exr_path)
+    for key in ("display_exposure_scale", "visibility_stats"):
+        if key not in header:
+            raise ValueError(f"{exr_path}: no {key!r} attribute: not an EXR written by a render")
+    scene = load_scene(scene_path, spectra_dir=spectra_dir)
+    if XYZ.shape[:2] != (scene.camera.height, scene.camera.width):
+        raise ValueError(f"{exr_path}: {XYZ.shape[1]} x {XYZ.shape[0]} pixels, but its scene "
+                         f"{scene_path} renders {scene.camera.width} x {scene.camera.height}")
+    result = RenderResult(XYZ.astype(np.float64), None, {}, json.loads(header["visibility_stats"]),
+                          scene)
+    write_render(result, rgb_exr_path=rgb_exr_path,
+                 exposure=float(header["display_exposure_scale"]))
 
 
 def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
