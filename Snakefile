@@ -45,6 +45,7 @@ include: "workflow/rules/lecture.smk"
 include: "workflow/rules/article.smk"
 include: "workflow/rules/renders.smk"
 include: "workflow/rules/audits.smk"
+include: "workflow/rules/provenance.smk"  # last: it hashes every other target
 
 
 rule all:

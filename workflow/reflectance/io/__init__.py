@@ -11,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("atomic", "figures", "images", "paths", "progress", "tables")
+_MODULES = ("atomic", "figures", "images", "paths", "progress", "provenance", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -31,6 +31,7 @@ _EXPORTS = {
     "icc_profile_v2": "images",
     "read_exr": "images",
     "Progress": "progress",
+    "write_provenance": "provenance",
     "project_file": "paths",
     "check_name": "paths",
 }
