@@ -57,7 +57,7 @@ def test_archive_of_a_fresh_clone_rebuilds_byte_identical(root, tmp_path):
     # both builds at once (one core each); with mtime triggers only, the committed spectra of
     # each copy are used as they are (tests/test_workflow.py checks that a fresh export equals
     # them) and only the figure is built
-    builds = [start(cwd, "--rerun-triggers", "mtime", *TARGETS) for cwd in (unpacked, clone)]
+    builds = [start(cwd, *TARGETS, "--rerun-triggers", "mtime") for cwd in (unpacked, clone)]
     for proc in builds:
         finish(proc)
     assert digests(unpacked) == digests(clone)
