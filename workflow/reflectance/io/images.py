@@ -8,6 +8,12 @@ interrupted run never leaves a partial image that Snakemake would take for a fin
 The PNG encoder is a few lines of numpy + zlib rather than Pillow: Pillow cannot write 16-bit RGB,
 and one code path for both depths keeps the output independent of Pillow's encoder defaults.
 
+A display PNG is tagged with its colour space (:class:`ColourTag`): sRGB by its own chunk, any other
+space (SMPTE-C) by an ICC profile written here (:func:`icc_profile_v2`, about a hundred bytes of
+header and seven tags). Pillow's ImageCms, the one littlecms binding at hand, builds only its fixed
+sRGB, Lab and XYZ profiles (``ImageCms.createProfile``), not one of given primaries; it does read
+this one, and the tests convert through it with littlecms against colour-science.
+
 References
 ----------
 -   Portable Network Graphics (PNG) Specification (Second Edition), W3C Recommendation 2003 /
