@@ -9,8 +9,8 @@ The PNG encoder is a few lines of numpy + zlib rather than Pillow: Pillow cannot
 and one code path for both depths keeps the output independent of Pillow's encoder defaults.
 
 A display PNG is tagged with its colour space (:class:`ColourTag`): sRGB by its own chunk, any other
-space (SMPTE-C) by an ICC profile written here (:func:`icc_profile_v2`, about a hundred bytes of
-header and seven tags). Pillow's ImageCms, the one littlecms binding at hand, builds only its fixed
+space (SMPTE-C) by an ICC profile written here (:func:`icc_profile_v2`: a 128-byte header and
+nine tags). Pillow's ImageCms, the one littlecms binding at hand, builds only its fixed
 sRGB, Lab and XYZ profiles (``ImageCms.createProfile``), not one of given primaries; it does read
 this one, and the tests convert through it with littlecms against colour-science.
 
