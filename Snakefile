@@ -49,6 +49,6 @@ include: "workflow/rules/provenance.smk"  # last: it hashes every other target
 
 
 rule all:
-    default_target: True
     input:
         TARGETS,
+    default_target: True

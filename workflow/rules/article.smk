@@ -6,53 +6,36 @@ ARTICLE_OUT = "results/article"
 
 TARGETS += [
     f"{ARTICLE_OUT}/{name}"
-    for name in (
-        "distributions.png",
-        "distributions.pdf",
-        "distributions.csv",
-        "phong_example.png",
-        "phong_example.pdf",
-        "phong_example.csv",
-    )
+    for name in ("distributions.png", "distributions.pdf", "distributions.csv",
+                 "phong_example.png", "phong_example.pdf", "phong_example.csv")
 ]
 
 
 rule article_distributions:
     output:
-        png=report(
-            f"{ARTICLE_OUT}/distributions.png",
-            caption="../report/article_distributions.rst",
-            category="Article",
-            subcategory="Models of specular highlight",
-        ),
+        png=report(f"{ARTICLE_OUT}/distributions.png", caption="../report/article_distributions.rst",
+                   category="Article", subcategory="Models of specular highlight"),
         pdf=f"{ARTICLE_OUT}/distributions.pdf",
         csv=f"{ARTICLE_OUT}/distributions.csv",
-    log:
-        "logs/article/distributions.log",
     params:
         fig=ARTICLE["distributions"],
+    log:
+        "logs/article/distributions.log",
     script:
         "../scripts/article_distributions.py"
 
 
 rule article_phong_example:
     output:
-        png=report(
-            f"{ARTICLE_OUT}/phong_example.png",
-            caption="../report/article_phong_example.rst",
-            category="Article",
-            subcategory="Phong example",
-        ),
+        png=report(f"{ARTICLE_OUT}/phong_example.png", caption="../report/article_phong_example.rst",
+                   category="Article", subcategory="Phong example"),
         pdf=f"{ARTICLE_OUT}/phong_example.pdf",
-        csv=report(
-            f"{ARTICLE_OUT}/phong_example.csv",
-            caption="../report/article_phong_example_table.rst",
-            category="Article",
-            subcategory="Phong example",
-        ),
-    log:
-        "logs/article/phong_example.log",
+        csv=report(f"{ARTICLE_OUT}/phong_example.csv",
+                   caption="../report/article_phong_example_table.rst",
+                   category="Article", subcategory="Phong example"),
     params:
         fig=ARTICLE["phong_example"],
+    log:
+        "logs/article/phong_example.log",
     script:
         "../scripts/article_phong_example.py"

