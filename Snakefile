@@ -46,6 +46,7 @@ include: "workflow/rules/article.smk"
 include: "workflow/rules/renders.smk"
 include: "workflow/rules/audits.smk"
 include: "workflow/rules/readme.smk"
+include: "workflow/rules/provenance.smk"  # last: it hashes every other target
 
 
 # A job a cluster killed for its memory: Snakemake's SLURM executor says only that it failed; name

@@ -86,7 +86,7 @@ def test_unknown_key_without_a_close_match_lists_the_known_keys(config):
     bad = copy.deepcopy(config)
     bad["colour"]["zzz"] = 1
     assert unknown_keys(bad) == ["unknown key 'colour.zzz' (known: illuminant, observer, space, "
-                                 "gamut_clip, png_bit_depth)"]
+                                 "gamut_clip, png_bit_depth, linear_rgb_exr)"]
 
 
 def test_a_material_whose_spectrum_is_not_made_yet_passes(config, root, tmp_path):

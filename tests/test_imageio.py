@@ -224,3 +224,143 @@ def test_read_exr_errors(tmp_path):
         exr.write(str(tmp_path / "rgb.exr"))
     with pytest.raises(ValueError, match="rgb.exr.*X, Y, Z"):
         read_exr(tmp_path / "rgb.exr")
+
+
+# --- colour tags: sRGB chunk, ICC profile ---------------------------------------------------
+
+
+def _colourspace(name):
+    import colour
+
+    return colour.RGB_COLOURSPACES[{"sRGB": "sRGB", "SMPTE-C": "SMPTE C"}[name]]
+
+
+def _icc_tags(profile):
+    """{signature: bytes} of an ICC profile, parsed with struct (ICC.1:2001-04 §6.1, §6.2)."""
+    (size,) = struct.unpack(">I", profile[:4])
+    assert size == len(profile) and profile[36:40] == b"acsp"
+    (count,) = struct.unpack(">I", profile[128:132])
+    tags = {}
+    for i in range(count):
+        signature, offset, length = struct.unpack(">4sII", profile[132 + 12 * i: 144 + 12 * i])
+        tags[signature.decode()] = profile[offset: offset + length]
+    return tags
+
+
+def _icc_XYZ(block):
+    assert block[:4] == b"XYZ "
+    return np.array(struct.unpack(">3i", block[8:20])) / 65536.0
+
+
+@pytest.mark.parametrize("bit_depth", [8, 16])
+def test_srgb_png_carries_srgb_gama_chrm_matching_colour_science(tmp_path, bit_depth):
+    from reflectance.colour.display import display_tag
+
+    write_png(tmp_path / "a.png", image((3, 4, 3), 9), bit_depth, tag=display_tag("sRGB"))
+    chunks = dict(read_png_chunks((tmp_path / "a.png").read_bytes()))
+    assert chunks[b"sRGB"] == bytes([1]) and b"iCCP" not in chunks  # never both (PNG §11.3.3)
+    assert struct.unpack(">I", chunks[b"gAMA"]) == (45455,)  # §11.3.3.5
+    chrm = np.array(struct.unpack(">8I", chunks[b"cHRM"])) / 100000
+    cs = _colourspace("sRGB")
+    np.testing.assert_allclose(chrm[:2], cs.whitepoint, atol=1e-5)
+    np.testing.assert_allclose(chrm[2:].reshape(3, 2), cs.primaries, atol=1e-5)
+    with Image.open(tmp_path / "a.png") as im:  # Pillow reads the same chunks
+        assert im.info["srgb"] == 1 and "icc_profile" not in im.info
+
+
+def test_smpte_c_png_carries_an_icc_profile_with_colour_science_primaries(tmp_path):
+    import colour
+
+    from reflectance.colour.display import display_tag
+
+    write_png(tmp_path / "a.png", image((3, 4, 3), 10), tag=display_tag("SMPTE-C"))
+    chunks = dict(read_png_chunks((tmp_path / "a.png").read_bytes()))
+    assert b"sRGB" not in chunks
+    assert struct.unpack(">I", chunks[b"gAMA"]) == (round(100000 / 2.4),)
+    name, rest = chunks[b"iCCP"].split(b"\0", 1)
+    assert name == b"SMPTE-C" and rest[0] == 0  # compression method 0 (zlib)
+    tags = _icc_tags(zlib.decompress(rest[1:]))
+    assert {"desc", "cprt", "wtpt", "rXYZ", "gXYZ", "bXYZ", "rTRC", "gTRC", "bTRC"} <= set(tags)
+    cs = _colourspace("SMPTE-C")
+    white = _icc_XYZ(tags["wtpt"])
+    np.testing.assert_allclose(colour.XYZ_to_xy(white), cs.whitepoint, atol=1e-4)
+    # colorants are D50-adapted (Bradford); undo it with colour-science and compare the xy
+    for signature, xy in zip(("rXYZ", "gXYZ", "bXYZ"), cs.primaries):
+        XYZ = colour.chromatic_adaptation(_icc_XYZ(tags[signature]), np.array([0.9642, 1, 0.8249]),
+                                          white, method="Von Kries", transform="Bradford")
+        np.testing.assert_allclose(colour.XYZ_to_xy(XYZ), xy, atol=1e-4)
+    # the tone curve: encoded^2.4 (the BT.1886 reference EOTF, L_B = 0)
+    curve = tags["rTRC"]
+    (n,) = struct.unpack(">I", curve[8:12])
+    table = np.frombuffer(curve[12:12 + 2 * n], ">u2") / 65535
+    np.testing.assert_allclose(table, np.linspace(0, 1, n) ** 2.4, atol=1e-5)
+
+
+def test_smpte_c_profile_converts_like_colour_science_through_littlecms(tmp_path):
+    """littlecms (Pillow's ImageCms) reads the profile and converts SMPTE-C codes to sRGB as
+    colour-science's RGB_to_RGB does."""
+    import io
+
+    import colour
+    from PIL import ImageCms
+
+    from reflectance.colour.display import display_tag
+
+    codes = np.array([[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.5, 0.5, 0.5],
+                       [0.8, 0.6, 0.3], [0.2, 0.7, 0.9]]])
+    write_png(tmp_path / "a.png", codes, tag=display_tag("SMPTE-C"))
+    with Image.open(tmp_path / "a.png") as im:
+        source = ImageCms.ImageCmsProfile(io.BytesIO(im.info["icc_profile"]))
+        converted = ImageCms.profileToProfile(
+            im, source, ImageCms.createProfile("sRGB"),
+            renderingIntent=ImageCms.Intent.RELATIVE_COLORIMETRIC, outputMode="RGB")
+    got = np.asarray(converted, dtype=np.float64) / 255
+    linear = colour.RGB_to_RGB((np.round(codes * 255) / 255) ** 2.4, _colourspace("SMPTE-C"),
+                               _colourspace("sRGB"))
+    expected = colour.cctf_encoding(np.clip(linear, 0, 1), function="sRGB")
+    np.testing.assert_allclose(got, expected, atol=2.5 / 255)
+
+
+def test_tagged_png_is_deterministic(tmp_path):
+    from reflectance.colour.display import display_tag
+
+    rgb = image((5, 6, 3), 11)
+    for name in ("a", "b"):
+        write_png(tmp_path / f"{name}.png", rgb, tag=display_tag("SMPTE-C"))
+    assert (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
+
+
+def test_bad_tag_raises_and_writes_nothing(tmp_path):
+    from reflectance.io.images import ColourTag
+
+    with pytest.raises(ValueError, match="tag"):
+        write_png(tmp_path / "a.png", image((2, 2, 3), 1), tag="sRGB")
+    with pytest.raises(ValueError, match="gamma"):
+        write_png(tmp_path / "a.png", image((2, 2, 3), 1),
+                  tag=ColourTag("x", ((0.6, 0.3), (0.3, 0.6), (0.15, 0.06)), (0.3, 0.3), -1.0))
+    assert list(tmp_path.iterdir()) == []
+
+
+# --- display-referred linear RGB EXR -----------------------------------------------------------
+
+
+@pytest.mark.parametrize("space", ["sRGB", "SMPTE-C"])
+def test_rgb_exr_round_trip_with_colour_science_chromaticities(tmp_path, space):
+    from reflectance.colour.display import display_tag
+    from reflectance.io.images import write_exr_RGB
+
+    RGB = np.random.default_rng(12).uniform(0, 1, (6, 5, 3)).astype(np.float32)
+    write_exr_RGB(tmp_path / "a.exr", RGB, display_tag(space), {"note": "x"})
+    with OpenEXR.File(str(tmp_path / "a.exr"), separate_channels=True) as exr:
+        header = dict(exr.header())
+        channels = exr.channels()
+        assert sorted(channels) == ["B", "G", "R"]
+        for i, name in enumerate("RGB"):
+            np.testing.assert_array_equal(channels[name].pixels, RGB[..., i])
+    cs = _colourspace(space)
+    chroma = np.array(header["chromaticities"])
+    np.testing.assert_allclose(chroma[:6].reshape(3, 2), cs.primaries, atol=1e-6)
+    np.testing.assert_allclose(chroma[6:], cs.whitepoint, atol=1e-6)
+    assert header["note"] == "x"
+    read, _ = read_exr(tmp_path / "a.exr", channels="RGB")
+    np.testing.assert_array_equal(read, RGB)

@@ -179,6 +179,18 @@ def test_every_output_is_readable(built):
             assert len(pd.read_csv(path).columns) >= 2, p
 
 
+def test_provenance_lists_every_output_with_its_sha256(built):
+    """results/provenance.yaml: each other file of results/ and spectra/ with its SHA-256, the
+    configuration's hash; a copy without .git has no commit."""
+    manifest = yaml.safe_load((built / "results/provenance.yaml").read_text())
+    outputs = [p for p in results(built) if p != "results/provenance.yaml"]
+    assert manifest["outputs"] == digests(built, outputs)
+    spectra = sorted(str(p.relative_to(built)) for p in (built / "spectra").glob("*.csv"))
+    assert manifest["spectra"] == digests(built, spectra)
+    assert manifest["config"]["file_sha256"] == digests(built, ["config.yaml"])["config.yaml"]
+    assert manifest["git"] == {"commit": None, "dirty": None}
+
+
 def test_nothing_left_to_do(built):
     proc = snakemake(built, "-n", "--cores", "2")
     assert "Nothing to be done" in proc.stdout + proc.stderr

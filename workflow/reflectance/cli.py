@@ -467,13 +467,22 @@ def _add_render(sub):
     p = sub.add_parser(
         "render", help=COMMAND_HELP["render"],
         description="Render SCENE (YAML, keys in workflow/schemas/scene.schema.yaml) spectrally "
-                    "into linear CIE XYZ (OpenEXR, scene and package versions in the header) "
-                    "and optionally a display PNG (Cook & Torrance exposure, gamut clipping). "
-                    "A bad scene is reported, by file and key, before anything is rendered or "
-                    "written.")
+                    "into linear CIE XYZ (OpenEXR, scene and package versions in the header), "
+                    "a display PNG (Cook & Torrance exposure, gamut clipping; tagged with its "
+                    "colour space) and a display-referred linear RGB OpenEXR, any of them (at "
+                    "least one). A bad scene is reported, by file and key, before anything is "
+                    "rendered or written. Progress goes to standard error (a bar on a terminal, "
+                    "one line per phase otherwise).")
     p.add_argument("scene", metavar="SCENE.yaml", help="scene file")
-    p.add_argument("-o", "--output", required=True, metavar="OUT.exr", help="linear XYZ image")
+    p.add_argument("-o", "--output", metavar="OUT.exr", help="linear XYZ image")
     p.add_argument("--png", metavar="OUT.png", help="display image")
+    p.add_argument("--rgb-exr", metavar="OUT.exr",
+                   help="display-referred linear RGB image (channels R, G, B; the display's "
+                        "chromaticities): exposed and gamut clipped as the PNG, no transfer")
+    p.add_argument("--exposure", type=_real(0.0, 1e30, lo_open=True), metavar="FACTOR",
+                   help="scale the XYZ by FACTOR for the PNG and the RGB EXR instead of the "
+                        "scene's automatic exposure (the XYZ EXR's display_exposure_scale "
+                        "records the one used)")
     p.add_argument("--width", type=PIXELS, help="override the camera's width (pixels, 1 to 16384)")
     p.add_argument("--height", type=PIXELS,
                    help="override the camera's height (pixels, 1 to 16384)")
@@ -484,7 +493,7 @@ def _add_render(sub):
                         "table)")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the scene's "
                                          "spectra_dir, else ./spectra)")
-    p.add_argument("--quiet", action="store_true", help="print nothing")
+    p.add_argument("--quiet", action="store_true", help="print nothing (no progress either)")
     p.set_defaults(run=_run_render)
 
 
@@ -504,36 +513,53 @@ def _writable(option, path):
 
 
 def _run_render(args):
+    from reflectance.io.progress import Progress
     from reflectance.render.pipeline import render, render_warnings, write_render
     from reflectance.render.scene import load_scene
 
-    if Path(args.output).suffix.lower() != ".exr":
-        raise SystemExit(f"reflectance: -o {args.output}: the output must end in .exr")
-    if args.png is not None and Path(args.png).suffix.lower() != ".png":
-        raise SystemExit(f"reflectance: --png {args.png}: must end in .png")
-    _writable("-o", args.output)
-    if args.png is not None:
-        _writable("--png", args.png)
+    outputs = [(option, path, suffix) for option, path, suffix in
+               (("-o", args.output, ".exr"), ("--png", args.png, ".png"),
+                ("--rgb-exr", args.rgb_exr, ".exr")) if path is not None]
+    if not outputs:
+        raise SystemExit("reflectance: render: give at least one output: -o OUT.exr, "
+                         "--png OUT.png or --rgb-exr OUT.exr")
+    for option, path, suffix in outputs:
+        if Path(path).suffix.lower() != suffix:
+            raise SystemExit(f"reflectance: {option} {path}: must end in {suffix}")
+    paths = [Path(path).resolve() for _, path, _ in outputs]
+    if len(set(paths)) < len(paths):
+        raise SystemExit("reflectance: render: the outputs must be different files")
+    for option, path, _ in outputs:
+        _writable(option, path)
+    progress = Progress(5, "reflectance render", enabled=not args.quiet)
+    phases = ["scene", "visibility", "shadows", "shading", "writing"]
+    step = lambda phase: progress.update(phases.index(phase), phase)  # noqa: E731
     try:
+        step("scene")
         scene = load_scene(args.scene, spectra_dir=args.spectra_dir, width=args.width,
                            height=args.height, supersample=args.supersample,
                            spectral=args.spectral)
-        result = render(scene)
+        result = render(scene, progress=step)
     except ValueError as err:
+        progress.close("failed", done=0)
         raise SystemExit(f"reflectance: {err}") from None
-    for warning in render_warnings(result):
-        print(f"reflectance: warning: {warning}", file=sys.stderr)
+    step("writing")
+    named = ", ".join(f"{option} {path}" for option, path, _ in outputs)
     try:
-        write_render(result, args.output, args.png)  # both files or neither
-    except (OSError, ValueError) as err:
+        write_render(result, args.output, args.png, args.rgb_exr, exposure=args.exposure)
+    except (OSError, ValueError) as err:  # all files or none
+        progress.close("failed", done=4)
         where = f" {err.filename}" if getattr(err, "filename", None) else ""
         reason = getattr(err, "strerror", None) or " ".join(str(err).split())
-        raise SystemExit(f"reflectance: cannot write{where} (-o {args.output}"
-                         f"{'' if args.png is None else f', --png {args.png}'}): {reason}; "
+        raise SystemExit(f"reflectance: cannot write{where} ({named}): {reason}; "
                          f"nothing written") from None
+    progress.close()
+    for warning in render_warnings(result):
+        print(f"reflectance: warning: {warning}", file=sys.stderr)
     if not args.quiet:
         t = result.timings
-        print(f"{args.output}: {scene.camera.width} x {scene.camera.height} pixels, "
+        print(f"{', '.join(path for _, path, _ in outputs)}: {scene.camera.width} x "
+              f"{scene.camera.height} pixels, "
               f"{scene.camera.supersample} x {scene.camera.supersample} samples each, "
               f"{scene.spectral if args.spectral is None else args.spectral} shading; "
               f"visibility {t['visibility']:.2f} s, shadows {t['shadows']:.2f} s, shading "
@@ -570,6 +596,9 @@ def _add_bench(sub):
                         "where it would exceed 2**24 samples)")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
+    p.add_argument("--quiet", action="store_true",
+                   help="no progress on standard error (by default: each size and phase, a bar "
+                        "on a terminal, one line each otherwise)")
     p.set_defaults(run=_run_bench)
 
 
@@ -585,15 +614,17 @@ def _default_bench_scene(spectra_dir):
 def _run_bench(args):
     import json
 
+    from reflectance.io.progress import Progress
     from reflectance.render.bench import format_report, run_bench
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")
     try:
         scene = args.scene or _default_bench_scene(args.spectra_dir)
+        progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
                             args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
-                            args.reference_supersample)
+                            args.reference_supersample, progress=progress)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))
@@ -727,7 +758,7 @@ COMMAND_HELP = {
     "colour": "colour of a smooth material vs incidence angle (CSV)",
     "spectra": "list the materials with their kind and source (CSV)",
     "brdf": "reflected distribution of a BRDF model in a plane (CSV)",
-    "render": "render a scene file to a linear XYZ EXR (and a display PNG)",
+    "render": "render a scene file to a linear XYZ EXR, a display PNG, a linear RGB EXR",
     "bench": "time and measure the memory of the renderer",
     "audit": "every Fresnel shortcut's colour error against exact, per angle (CSV)",
 }

@@ -364,3 +364,27 @@ rule article_spheres:
         runtime=10,  # measured 83 s
     script:
         "../scripts/article_spheres.py"
+
+
+# Display-referred linear RGB EXRs (colour.linear_rgb_exr): one beside every rendered XYZ EXR
+# that has its scene file, for viewers that show XYZ channels as nothing.
+if config["colour"].get("linear_rgb_exr", False):
+    TARGETS += [
+        f"{t[:-len('.exr')]}.rgb.exr"
+        for t in list(TARGETS)
+        if t.endswith(".exr") and f"{t[:-len('.exr')]}.scene.yaml" in TARGETS
+    ]
+
+
+rule linear_rgb_exr:
+    input:
+        exr="{stem}.exr",
+        scene="{stem}.scene.yaml",
+    output:
+        "{stem}.rgb.exr",
+    wildcard_constraints:
+        stem=r"results/[^.]+",
+    log:
+        "logs/linear_rgb_exr/{stem}.log",
+    script:
+        "../scripts/linear_rgb_exr.py"

@@ -47,6 +47,7 @@ _EXPORTS = {
     "encode": "display",
     "XYZ_to_display": "display",
     "fresnel_XYZ_rgb": "display",
+    "display_tag": "display",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

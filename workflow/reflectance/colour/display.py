@@ -64,6 +64,7 @@ __all__ = [
     "encode",
     "XYZ_to_display",
     "fresnel_XYZ_rgb",
+    "display_tag",
 ]
 
 CHROMATIC_ADAPTATION_TRANSFORM = "CAT02"
@@ -704,3 +705,29 @@ def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB"):
     F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)
     F = F0 + (1.0 - F0) * (1.0 - c) ** 5  # Schlick 1994, per display channel
     return linear_RGB_to_XYZ(F, space, illuminant=white)
+
+
+#: The transfer of :func:`encode` as a PNG tag says it: sRGB's own chunk, or the power of the
+#: ITU-R BT.1886 reference EOTF with L_B = 0 (an ICC profile with that curve).
+_TAG_TRANSFER = {"sRGB": "sRGB", "SMPTE-C": 2.4}
+
+
+def display_tag(space="sRGB"):
+    """The :class:`reflectance.io.images.ColourTag` of a display space, for
+    :func:`reflectance.io.images.write_png`: colour-science's primaries and whitepoint of the
+    space (the xy of the normalised primary matrix's columns and of its white) and the transfer of
+    :func:`encode`.
+
+    Examples
+    --------
+    >>> tag = display_tag("SMPTE-C")
+    >>> [round(v, 3) for v in tag.primaries[0]], tag.transfer
+    ([0.63, 0.34], 2.4)
+    """
+    from reflectance.io.images import ColourTag
+
+    ds = display_space(space)
+    columns = np.column_stack([ds.matrix_RGB_to_XYZ, ds.whitepoint_XYZ])
+    xy = (columns[:2] / columns.sum(axis=0)).T
+    return ColourTag(space, tuple(tuple(float(v) for v in p) for p in xy[:3]),
+                     tuple(float(v) for v in xy[3]), _TAG_TRANSFER[space])

@@ -1,6 +1,7 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), figures (the shared matplotlib
+Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), progress (of long work, on
+standard error), figures (the shared matplotlib
 style and saving), paths (paths from data: inside the project; names that are names).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
@@ -10,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("atomic", "figures", "images", "paths", "tables")
+_MODULES = ("atomic", "figures", "images", "paths", "progress", "provenance", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -25,7 +26,12 @@ _EXPORTS = {
     "write_png": "images",
     "XYZ_CHROMATICITIES": "images",
     "write_exr_XYZ": "images",
+    "write_exr_RGB": "images",
+    "ColourTag": "images",
+    "icc_profile_v2": "images",
     "read_exr": "images",
+    "Progress": "progress",
+    "write_provenance": "provenance",
     "project_file": "paths",
     "check_name": "paths",
 }

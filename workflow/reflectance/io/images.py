@@ -1,4 +1,5 @@
-"""Deterministic image writers: display PNG (8 or 16 bit) and linear CIE XYZ OpenEXR.
+"""Deterministic image writers: display PNG (8 or 16 bit, tagged with its colour space) and linear
+OpenEXR (CIE XYZ, or display-referred linear RGB).
 
 Both writers produce byte-identical files for identical input (no timestamps, no text chunks, fixed
 compression settings) and write atomically through :func:`reflectance.io.atomic.atomic_write`, so an
@@ -7,11 +8,26 @@ interrupted run never leaves a partial image that Snakemake would take for a fin
 The PNG encoder is a few lines of numpy + zlib rather than Pillow: Pillow cannot write 16-bit RGB,
 and one code path for both depths keeps the output independent of Pillow's encoder defaults.
 
+A display PNG is tagged with its colour space (:class:`ColourTag`): sRGB by its own chunk, any other
+space (SMPTE-C) by an ICC profile written here (:func:`icc_profile_v2`: a 128-byte header and
+nine tags). Pillow's ImageCms, the one littlecms binding at hand, builds only its fixed
+sRGB, Lab and XYZ profiles (``ImageCms.createProfile``), not one of given primaries; it does read
+this one, and the tests convert through it with littlecms against colour-science.
+
 References
 ----------
 -   Portable Network Graphics (PNG) Specification (Second Edition), W3C Recommendation 2003 /
     ISO/IEC 15948:2003: §5.2 signature, §5.3 chunk layout and CRC-32, §9.2 filter types (type 0,
     None), §10 zlib deflate compression, §11.2.2 IHDR.
+-   PNG specification §11.3.3: cHRM (chromaticities x 100000), gAMA (100000 / gamma), iCCP
+    (name, 0, zlib-compressed ICC profile), sRGB (rendering intent); §11.3.3.5: an sRGB image
+    should carry gAMA 45455 and cHRM with the sRGB values beside the sRGB chunk, for decoders
+    that do not know it; iCCP and sRGB are never both present.
+-   International Color Consortium, ICC.1:2001-04 (profile version 2.4): §6.1 header, §6.2 tag
+    table, §6.5 tags of a three-component matrix-based display profile (rXYZ, gXYZ, bXYZ, rTRC,
+    gTRC, bTRC, wtpt), §6.3.4.2 desc, cprt; colorants relative to the D50 PCS through a
+    chromatic adaptation (Bradford, Annex A of ICC.1:2010 recommends it), media white point the
+    display's own white.
 -   OpenEXR, "Standard Optional Attributes" (openexr.com): ``chromaticities`` gives the CIE (x, y)
     of the channel triples (1, 0, 0), (0, 1, 0), (0, 0, 1) and (1, 1, 1) (ImfChromaticities.h).
     For channels holding X, Y, Z those are (1, 0), (0, 1), (0, 0) and (1/3, 1/3). Channel names
@@ -21,6 +37,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import struct
 import zlib
@@ -32,7 +49,17 @@ import OpenEXR
 
 from reflectance.io.atomic import atomic_write
 
-__all__ = ["PNG_BIT_DEPTHS", "write_png", "XYZ_CHROMATICITIES", "write_exr_XYZ", "read_exr"]
+__all__ = [
+    "PNG_BIT_DEPTHS",
+    "ColourTag",
+    "icc_profile_v2",
+    "write_png",
+    "XYZ_CHROMATICITIES",
+    "write_exr_XYZ",
+    "write_exr_RGB",
+    "tag_chromaticities",
+    "read_exr",
+]
 
 PNG_BIT_DEPTHS = (8, 16)
 
@@ -69,13 +96,129 @@ def _png_chunk(kind, data):
     return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
 
-def write_png(path, rgb01, bit_depth=8):
+@dataclasses.dataclass(frozen=True)
+class ColourTag:
+    """The colour space a PNG declares: what a viewer needs to show the intended colours.
+
+    Attributes
+    ----------
+    name : str
+        Printable name (ASCII; the ICC profile's description and the iCCP chunk's name).
+    primaries : tuple
+        CIE 1931 ``((x_R, y_R), (x_G, y_G), (x_B, y_B))`` of the display primaries.
+    whitepoint : tuple
+        ``(x, y)`` of the display white (R = G = B = 1).
+    transfer : str or float
+        ``"sRGB"`` (IEC 61966-2-1: the PNG gets the sRGB chunk) or a pure power ``gamma``
+        (linear = encoded^gamma: the PNG gets an ICC profile whose curves are that power).
+    """
+
+    name: str
+    primaries: tuple
+    whitepoint: tuple
+    transfer: object
+
+
+# ICC.1:2001-04 §6.1: the PCS illuminant D50 as stored in every profile (s15Fixed16 of these).
+_ICC_D50 = (0.9642, 1.0, 0.8249)
+_ICC_DATE = (2000, 1, 1, 0, 0, 0)  # a fixed creation date: identical tags, identical bytes
+
+
+def _s15f16(values):
+    return b"".join(struct.pack(">i", int(round(v * 65536))) for v in values)
+
+
+def _icc_text_description(text):
+    # ICC.1:2001-04 §6.5.17 textDescriptionType: ASCII (with NUL), empty Unicode and ScriptCode
+    ascii_ = text.encode("ascii") + b"\0"
+    return (b"desc" + bytes(4) + struct.pack(">I", len(ascii_)) + ascii_
+            + struct.pack(">II", 0, 0) + struct.pack(">HB", 0, 0) + bytes(67))
+
+
+def icc_profile_v2(tag, copyright="No copyright, use freely"):
+    """An ICC version 2.4 RGB display profile (matrix/TRC) for a :class:`ColourTag` with a power
+    transfer, as bytes; identical input gives identical bytes.
+
+    The colorants (rXYZ, gXYZ, bXYZ) are the columns of the normalised primary matrix of the
+    tag's primaries and white (``colour.normalised_primary_matrix``) adapted to the D50 PCS with
+    the Bradford transform (``colour.adaptation.matrix_chromatic_adaptation_VonKries``); wtpt is
+    the display white (Y = 1); the three curves share one 1024-entry table of
+    ``encoded^gamma``.
+
+    Examples
+    --------
+    >>> tag = ColourTag("test", ((0.64, 0.33), (0.3, 0.6), (0.15, 0.06)), (0.3127, 0.329), 2.4)
+    >>> profile = icc_profile_v2(tag)
+    >>> profile[36:40], profile[12:20], len(profile) == int.from_bytes(profile[:4], "big")
+    (b'acsp', b'mntrRGB ', True)
+    """
+    import colour
+
+    gamma = tag.transfer
+    if isinstance(gamma, bool) or not isinstance(gamma, (int, float)) or not 0 < gamma < 10:
+        raise ValueError(f"tag.transfer: an ICC profile needs a power 0 < gamma < 10, got "
+                         f"{gamma!r}")
+    primaries = np.asarray(tag.primaries, dtype=np.float64).reshape(3, 2)
+    white_xy = np.asarray(tag.whitepoint, dtype=np.float64).reshape(2)
+    M = colour.normalised_primary_matrix(primaries, white_xy)
+    white = colour.xy_to_XYZ(white_xy)
+    adapt = colour.adaptation.matrix_chromatic_adaptation_VonKries(
+        white, np.array(_ICC_D50), transform="Bradford")
+    colorants = adapt @ M  # columns: the primaries in the D50 PCS
+    curve = np.rint(65535 * np.linspace(0.0, 1.0, 1024) ** float(gamma)).astype(">u2")
+    xyz = lambda v: b"XYZ " + bytes(4) + _s15f16(v)  # noqa: E731 - §6.5.26 XYZType
+    blocks = [  # (signatures sharing the data, data)
+        ((b"desc",), _icc_text_description(tag.name)),
+        ((b"cprt",), b"text" + bytes(4) + copyright.encode("ascii") + b"\0"),
+        ((b"wtpt",), xyz(white)),
+        ((b"rXYZ",), xyz(colorants[:, 0])),
+        ((b"gXYZ",), xyz(colorants[:, 1])),
+        ((b"bXYZ",), xyz(colorants[:, 2])),
+        ((b"rTRC", b"gTRC", b"bTRC"),  # §6.5.3 curveType
+         b"curv" + bytes(4) + struct.pack(">I", len(curve)) + curve.tobytes()),
+    ]
+    count = sum(len(signatures) for signatures, _ in blocks)
+    offset = 128 + 4 + 12 * count
+    table, data = [], b""
+    for signatures, block in blocks:
+        for signature in signatures:
+            table.append(struct.pack(">4sII", signature, offset + len(data), len(block)))
+        data += block + bytes(-len(block) % 4)  # each tag starts on a 4-byte boundary
+    body = struct.pack(">I", count) + b"".join(table) + data
+    size = 128 + len(body)
+    header = (struct.pack(">I", size) + bytes(4) + bytes([2, 0x40, 0, 0])  # version 2.4.0
+              + b"mntr" + b"RGB " + b"XYZ " + struct.pack(">6H", *_ICC_DATE) + b"acsp"
+              + bytes(4 + 4 + 4 + 4 + 8) + struct.pack(">I", 0)  # platform ... intent 0
+              + _s15f16(_ICC_D50) + bytes(4) + bytes(44))
+    assert len(header) == 128
+    return header + body
+
+
+def _png_colour_chunks(tag):
+    """cHRM, gAMA and sRGB or iCCP chunks declaring ``tag`` (PNG specification §11.3.3)."""
+    if not isinstance(tag, ColourTag):
+        raise ValueError(f"tag: expected a ColourTag or None, got {type(tag).__name__}")
+    points = [*np.asarray(tag.whitepoint, np.float64).reshape(2),
+              *np.asarray(tag.primaries, np.float64).reshape(6)]
+    chrm = _png_chunk(b"cHRM", struct.pack(">8I", *(int(round(v * 100000)) for v in points)))
+    if tag.transfer == "sRGB":
+        # §11.3.3.5: sRGB (rendering intent 1, relative colorimetric: the colours as computed),
+        # with gAMA and cHRM for decoders that do not read sRGB
+        return (chrm + _png_chunk(b"gAMA", struct.pack(">I", 45455))
+                + _png_chunk(b"sRGB", bytes([1])))
+    profile = icc_profile_v2(tag)
+    name = tag.name.encode("latin-1")[:79]
+    return (chrm + _png_chunk(b"gAMA", struct.pack(">I", int(round(100000 / tag.transfer))))
+            + _png_chunk(b"iCCP", name + b"\0\0" + zlib.compress(profile, 9)))
+
+
+def write_png(path, rgb01, bit_depth=8, tag=None):
     """Write display RGB in [0, 1] as a PNG, 8 or 16 bits per channel, deterministically.
 
     Values are quantised to the nearest code ``round(v * (2^b - 1))`` (ties to even). Rows use
     filter type 0 and the whole image is one zlib stream at level 9, in one IDAT chunk; the file
-    holds only IHDR, IDAT and IEND (no time or text chunks), so identical input gives identical
-    bytes.
+    holds only IHDR, the colour chunks of ``tag``, IDAT and IEND (no time or text chunks), so
+    identical input gives identical bytes.
 
     Parameters
     ----------
@@ -86,6 +229,10 @@ def write_png(path, rgb01, bit_depth=8):
         (encoded, i.e. after the transfer function: see :func:`reflectance.colour.display.XYZ_to_display`).
     bit_depth : int
         8 or 16.
+    tag : ColourTag, optional
+        The colour space of the encoded values: with ``transfer="sRGB"`` the file carries the
+        sRGB, gAMA and cHRM chunks; with a power transfer, cHRM, gAMA and an ICC profile (iCCP,
+        :func:`icc_profile_v2`). Without it the file is untagged (viewers assume sRGB).
 
     Raises
     ------
@@ -102,6 +249,7 @@ def write_png(path, rgb01, bit_depth=8):
     """
     if isinstance(bit_depth, bool) or bit_depth not in PNG_BIT_DEPTHS:
         raise ValueError(f"bit_depth: must be one of {PNG_BIT_DEPTHS}, got {bit_depth!r}")
+    colour_chunks = b"" if tag is None else _png_colour_chunks(tag)
     image = _finite_array(rgb01, "rgb01")
     if image.ndim == 2:
         image = image[..., None]
@@ -129,6 +277,7 @@ def write_png(path, rgb01, bit_depth=8):
     data = (
         _PNG_SIGNATURE
         + _png_chunk(b"IHDR", header)
+        + colour_chunks  # §5.6: before IDAT
         + _png_chunk(b"IDAT", zlib.compress(raw, 9))
         + _png_chunk(b"IEND", b"")
     )
@@ -184,34 +333,70 @@ def write_exr_XYZ(path, XYZ, attributes=None):
     >>> XYZ.shape, header["material"]
     ((2, 3, 3), 'copper')
     """
-    XYZ = _finite_array(XYZ, "XYZ")
-    if XYZ.ndim != 3 or XYZ.shape[-1] != 3 or 0 in XYZ.shape[:2]:
-        raise ValueError(f"XYZ: expected shape (H, W, 3) with H, W >= 1, got {XYZ.shape}")
-    if max(XYZ.max(), -XYZ.min()) > np.finfo(np.float32).max:  # (no temporary of |XYZ|)
-        raise ValueError("XYZ: values exceed the float32 range of the EXR file")
+    _write_exr(path, XYZ, "XYZ", XYZ_CHROMATICITIES, attributes)
+
+
+def _write_exr(path, image, names, chromaticities, attributes):
+    label = names
+    image = _finite_array(image, label)
+    if image.ndim != 3 or image.shape[-1] != 3 or 0 in image.shape[:2]:
+        raise ValueError(f"{label}: expected shape (H, W, 3) with H, W >= 1, got {image.shape}")
+    if max(image.max(), -image.min()) > np.finfo(np.float32).max:  # (no temporary of |image|)
+        raise ValueError(f"{label}: values exceed the float32 range of the EXR file")
     if attributes is not None and not isinstance(attributes, Mapping):
         raise ValueError(f"attributes: expected a mapping, got {type(attributes).__name__}")
     texts = {key: _attribute_text(key, value) for key, value in (attributes or {}).items()}
     header = {
         "compression": OpenEXR.ZIP_COMPRESSION,
         "type": OpenEXR.scanlineimage,
-        "chromaticities": XYZ_CHROMATICITIES,
+        "chromaticities": tuple(float(v) for v in chromaticities),
         **dict(sorted(texts.items())),
     }
     channels = {
-        name: np.ascontiguousarray(XYZ[..., i], dtype=np.float32) for i, name in enumerate("XYZ")
+        name: np.ascontiguousarray(image[..., i], dtype=np.float32) for i, name in enumerate(names)
     }
     with atomic_write(path) as tmp:
         with OpenEXR.File(header, channels) as exr:
             exr.write(str(tmp))
 
 
-def read_exr(path):
-    """Read an XYZ OpenEXR image written by :func:`write_exr_XYZ` (or any file with X, Y, Z).
+def tag_chromaticities(tag):
+    """OpenEXR ``chromaticities`` of a :class:`ColourTag`: red, green, blue and white (x, y)."""
+    return (*np.asarray(tag.primaries, np.float64).reshape(6).tolist(),
+            *np.asarray(tag.whitepoint, np.float64).reshape(2).tolist())
+
+
+def write_exr_RGB(path, RGB, tag, attributes=None):
+    """Write display-referred linear RGB as a float32 OpenEXR file, deterministically.
+
+    As :func:`write_exr_XYZ`, with channels ``R``, ``G``, ``B`` and ``chromaticities`` the
+    primaries and white of ``tag`` (a :class:`ColourTag`), the file most image viewers show as
+    intended: linear light of the display (no transfer function).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> target = pathlib.Path(tempfile.mkdtemp()) / "rgb.exr"
+    >>> tag = ColourTag("sRGB", ((0.64, 0.33), (0.3, 0.6), (0.15, 0.06)), (0.3127, 0.329), "sRGB")
+    >>> write_exr_RGB(target, np.ones((2, 3, 3)), tag)
+    >>> RGB, header = read_exr(target, channels="RGB")
+    >>> RGB.shape, [round(v, 4) for v in header["chromaticities"][:2]]
+    ((2, 3, 3), [0.64, 0.33])
+    """
+    if not isinstance(tag, ColourTag):
+        raise ValueError(f"tag: expected a ColourTag, got {type(tag).__name__}")
+    _write_exr(path, RGB, "RGB", tag_chromaticities(tag), attributes)
+
+
+def read_exr(path, channels="XYZ"):
+    """Read an XYZ OpenEXR image written by :func:`write_exr_XYZ` (or any file with X, Y, Z;
+    ``channels="RGB"``: R, G, B, as :func:`write_exr_RGB` writes them).
 
     Parameters
     ----------
     path : str or Path
+    channels : str
+        ``"XYZ"`` or ``"RGB"``: the three channels read, in that order.
 
     Returns
     -------
@@ -226,6 +411,8 @@ def read_exr(path):
     ValueError
         If the file is not OpenEXR or lacks an X, Y or Z channel (naming the file).
     """
+    if channels not in ("XYZ", "RGB"):
+        raise ValueError(f"channels: must be 'XYZ' or 'RGB', got {channels!r}")
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"path: no such file {path}")
@@ -234,11 +421,12 @@ def read_exr(path):
     with OpenEXR.File(str(path), separate_channels=True) as exr:
         header = dict(exr.header())
         found = exr.channels()
-        missing = [name for name in "XYZ" if name not in found]
+        missing = [name for name in channels if name not in found]
         if missing:
             raise ValueError(
                 f"path: {path} has no channel(s) {', '.join(missing)}; channels: "
                 f"{', '.join(found)}"
             )
-        XYZ = np.stack([np.asarray(found[name].pixels, dtype=np.float32) for name in "XYZ"], -1)
+        XYZ = np.stack([np.asarray(found[name].pixels, dtype=np.float32) for name in channels],
+                       -1)
     return XYZ, header

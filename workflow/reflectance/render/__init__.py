@@ -48,6 +48,8 @@ _EXPORTS = {
     "shade_samples": "pipeline",
     "render": "pipeline",
     "display_image": "pipeline",
+    "display_linear_RGB": "pipeline",
+    "write_linear_RGB_from_XYZ": "pipeline",
     "software_versions": "pipeline",
     "write_render": "pipeline",
     "render_warnings": "pipeline",

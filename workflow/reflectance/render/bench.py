@@ -35,6 +35,7 @@ import resource
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -76,8 +77,9 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
 
 def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
                spectra_dir=None, reference_supersample=REFERENCE_SUPERSAMPLE,
-               reference_max_samples=REFERENCE_MAX_SAMPLES):
-    """Measurements for one image size, in this process (see :func:`run_bench`)."""
+               reference_max_samples=REFERENCE_MAX_SAMPLES, progress=None):
+    """Measurements for one image size, in this process (see :func:`run_bench`); ``progress``, if
+    given, is called with the name of each phase as it starts."""
     import numpy as np
 
     from reflectance.colour.colorimetry import tristimulus_weights
@@ -86,14 +88,16 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
                                              tiles, trace)
     from reflectance.render.shading import fresnel_XYZ_table
 
-    document = scene
+    progress = progress or (lambda phase: None)
+    document = scene  # the file or document: the reference and the grids load it again
     t0 = time.perf_counter()
+    progress("scene")
     scene = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
                              supersample=supersample, spectral="table")
     load_s = time.perf_counter() - t0
     times = {"visibility": [], "shadows": [], "shading": []}
-    for _ in range(runs):
-        result = render(scene)
+    for run in range(runs):
+        result = render(scene, progress=lambda phase: progress(f"run {run + 1}/{runs}: {phase}"))
         for key, value in times.items():
             value.append(result.timings[key])
     peak = _peak_MiB()
@@ -113,6 +117,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     }
     if reference_supersample and n_samples / supersample**2 * reference_supersample**2 \
             <= reference_max_samples:
+        progress(f"reference at {reference_supersample} x {reference_supersample} samples")
         t1 = time.perf_counter()
         reference = render(load_bench_scene(document, spectra_dir=spectra_dir, width=size,
                                             height=size, supersample=reference_supersample,
@@ -131,6 +136,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         XYZ = shade_samples(scene, samples, shadowed, "table")
     if brute_force_runs:
         brute_times = []
+        progress("brute-force shading")
         for _ in range(brute_force_runs):
             t1 = time.perf_counter()
             brute = shade_samples(scene, samples, shadowed, "brute-force")
@@ -143,6 +149,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
                    dE2000_mean=dE_mean, dE2000_max=dE_max)
     grid_rows = []
     for step in grids_nm:
+        progress(f"{step:g} nm wavelength grid")
         w = scene.document["wavelengths"]
         other = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
                                  supersample=supersample,
@@ -176,25 +183,49 @@ def crosscheck_status():
             "cross-check skipped")
 
 
+_PROGRESS = "@progress "  # a worker's progress lines on its standard output start so
+
+
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
-              reference_supersample=REFERENCE_SUPERSAMPLE):
+              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
-    ``scene`` is a scene file's path or a scene document (dict)."""
+    ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
+    :class:`reflectance.io.progress.Progress` told each size and each phase of it."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
-    for size in sizes:
+    for i, size in enumerate(sizes):
+        where = f"size {size} ({i + 1}/{len(sizes)})"
+        if progress is not None:
+            progress.update(i, where)
         job = {"scene": scene if isinstance(scene, dict) else str(scene),
                "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
                "grids_nm": list(grids_nm) if size == grid_size else [],
                "spectra_dir": spectra_dir, "reference_supersample": reference_supersample}
-        proc = subprocess.run([sys.executable, "-m", "reflectance.render.bench", "--worker",
-                               json.dumps(job)], capture_output=True, text=True)
-        if proc.returncode != 0:
-            raise RuntimeError(f"benchmark of size {size} failed:\n{proc.stderr}")
-        results.append(json.loads(proc.stdout.strip().splitlines()[-1]))
+        with tempfile.TemporaryFile("w+") as errors:
+            # stdout is read line by line (progress, then the JSON result); stderr goes to a
+            # file, so that a chatty worker cannot block on a full pipe
+            proc = subprocess.Popen([sys.executable, "-m", "reflectance.render.bench",
+                                     "--worker", json.dumps(job)], stdout=subprocess.PIPE,
+                                    stderr=errors, text=True)
+            lines = []
+            for line in proc.stdout:
+                if line.startswith(_PROGRESS):
+                    if progress is not None:
+                        progress.update(i, f"{where}: {line[len(_PROGRESS):].strip()}")
+                else:
+                    lines.append(line)
+            proc.wait()
+            if proc.returncode != 0:
+                errors.seek(0)
+                if progress is not None:
+                    progress.close(f"size {size} failed", done=i)
+                raise RuntimeError(f"benchmark of size {size} failed:\n{errors.read()}")
+        results.append(json.loads("".join(lines).strip().splitlines()[-1]))
+    if progress is not None:
+        progress.close()
     return results
 
 
@@ -245,7 +276,8 @@ def _worker(argv):
     job = json.loads(argv[0])
     result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
                         job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
-                        job["reference_supersample"])
+                        job["reference_supersample"],
+                        progress=lambda phase: print(_PROGRESS + phase, flush=True))
     print(json.dumps(result))
 
 

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from reflectance.colour.display import XYZ_to_display, expose_CookTorrance1982, expose_key
+from reflectance.colour.display import expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.primitives import Primitives
@@ -50,6 +50,8 @@ __all__ = [
     "shade_samples",
     "render",
     "display_image",
+    "display_linear_RGB",
+    "write_linear_RGB_from_XYZ",
     "software_versions",
     "write_render",
     "render_warnings",
@@ -121,13 +123,22 @@ def _map_size(camera, rows=None):
     return int(np.clip(round(2.0 * whole * np.sqrt(share)), 256, whole))
 
 
-def trace(scene, rows=None, primitives=None):
+def _silent(phase):
+    pass
+
+
+def trace(scene, rows=None, primitives=None, progress=None):
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
-    (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given."""
+    (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
+
+    ``progress``, if given, is called with the name of each phase as it starts."""
+    progress = progress or _silent
     t0 = time.perf_counter()
+    progress("visibility")
     samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows)
     t1 = time.perf_counter()
+    progress("shadows")
     if scene.shadows and scene.lights:
         shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
                                 _map_size(scene.camera, rows))
@@ -169,7 +180,7 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False, fre
     return (XYZ, parts) if components else XYZ
 
 
-def render(scene, spectral=None, components=False, fresnel_table=None):
+def render(scene, spectral=None, components=False, fresnel_table=None, progress=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -182,6 +193,9 @@ def render(scene, spectral=None, components=False, fresnel_table=None):
     fresnel_table : callable, optional
         How the Fresnel table is made (:func:`reflectance.render.shading.shade`; e.g.
         :func:`reflectance.render.shading.fresnel_XYZ_table_rgb` for an RGB renderer's F).
+    progress : callable, optional
+        Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
+        starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
@@ -195,8 +209,11 @@ def render(scene, spectral=None, components=False, fresnel_table=None):
     timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
     count = _Counts(len(scene.lights), len(scene.objects))
     for start, stop in bands:
-        samples, shadowed, t = trace(scene, (start, stop), primitives)
+        where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
+        samples, shadowed, t = trace(scene, (start, stop), primitives,
+                                     progress and (lambda phase: progress(where + phase)))
         t1 = time.perf_counter()
+        (progress or _silent)(where + "shading")
         shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
         XYZ, got = shaded if components else (shaded, None)
         rows = slice(start // n_ss, stop // n_ss)
@@ -270,20 +287,40 @@ def render_warnings(result):
     return warnings
 
 
-def display_image(result):
-    """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display."""
+def display_linear_RGB(result, exposure=None, encoded=False):
+    """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
+    exposed, highlights compressed, gamut clipped; the light the display emits, before the
+    transfer function.
+
+    ``exposure`` (a positive factor on XYZ) replaces the automatic exposure of the scene's
+    display settings (Cook & Torrance's, the metered key or the white card); None keeps it.
+    ``encoded`` applies the display's transfer function too (:func:`display_image`). Pixel by
+    pixel it runs in bands of rows, so that the temporaries stay small at any image size.
+    """
+    from reflectance.colour.display import (XYZ_to_linear_RGB, compress_highlights, encode,
+                                            gamut_clip)
+
     scene, d = result.scene, result.scene.display
     kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
               "wavelengths": scene.wavelengths}
     XYZ, scale, factor = result.XYZ, 1.0, 1.0
     rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
-    if d.expose and d.white is not None:  # metered on a white card facing the lights
-        scale = d.white / white_card_luminance(scene.lights)
-        if XYZ.shape[0] > rows:
-            factor = scale  # applied band by band below
+    large = XYZ.shape[0] > rows  # scales applied band by band below
+    if exposure is not None:
+        if isinstance(exposure, bool) or not np.isfinite(exposure) or exposure <= 0:
+            raise ValueError(f"exposure: must be a positive finite factor, got {exposure!r}")
+        scale = float(exposure)
+        if large:
+            factor = scale
         else:
             XYZ = XYZ * scale
-    elif XYZ.shape[0] > rows:  # a large image: the scale from a few pixels, applied band by band
+    elif d.expose and d.white is not None:  # metered on a white card facing the lights
+        scale = d.white / white_card_luminance(scene.lights)
+        if large:
+            factor = scale
+        else:
+            XYZ = XYZ * scale
+    elif large:  # a large image: the scale from a few pixels
         scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
     elif d.expose and d.key is not None:
         XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
@@ -296,10 +333,19 @@ def display_image(result):
     out = np.empty(XYZ.shape)
     for start in range(0, XYZ.shape[0], rows):
         band = XYZ[start:start + rows]
-        out[start:start + rows] = XYZ_to_display(band * factor if factor != 1.0 else band,
-                                                 d.space, d.gamut_clip, expose=False,
-                                                 highlight_knee=d.highlight_knee, **kwargs)
+        RGB = XYZ_to_linear_RGB(band * factor if factor != 1.0 else band, d.space, **kwargs)
+        if d.highlight_knee is not None:
+            RGB = compress_highlights(RGB, d.highlight_knee)
+        RGB = gamut_clip(RGB, d.gamut_clip, d.space)
+        out[start:start + rows] = encode(RGB, d.space) if encoded else RGB
     return out, scale
+
+
+def display_image(result, exposure=None):
+    """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display (as
+    :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
+    :func:`display_linear_RGB`)."""
+    return display_linear_RGB(result, exposure, encoded=True)
 
 
 def _exposure_scale(XYZ, d, rows, kwargs):
@@ -347,15 +393,27 @@ def software_versions():
     return out
 
 
-def write_render(result, exr_path, png_path=None):
-    """Write the linear XYZ image (EXR) and, if asked, the display PNG, atomically.
+def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposure=None):
+    """Write the linear XYZ image (EXR), the display PNG and the display-referred linear RGB EXR,
+    each if its path is given (at least one), atomically: all files or none.
 
-    The EXR header holds the validated scene (``scene``, JSON), its file (``scene_file``), the
+    The XYZ EXR header holds the validated scene (``scene``, JSON), its file (``scene_file``), the
     display exposure scale, the visibility statistics and the package versions (``software``).
-    Both images are computed before either file is written.
+    The PNG is tagged with its display space (:func:`reflectance.colour.display.display_tag`:
+    the sRGB chunk, or an ICC profile for SMPTE-C). The RGB EXR holds
+    :func:`display_linear_RGB` with channels R, G, B and the display's ``chromaticities`` (the
+    same header attributes). ``exposure`` overrides the automatic exposure (a factor on XYZ).
+    Every image is computed before any file is written.
     """
+    from reflectance.colour.display import display_tag
+    from reflectance.io.images import write_exr_RGB
+
+    if exr_path is None and png_path is None and rgb_exr_path is None:
+        raise ValueError("write_render: give at least one of exr_path, png_path, rgb_exr_path")
     scene = result.scene
-    rgb, scale = display_image(result)
+    rgb, scale = display_image(result, exposure)  # (banded: small temporaries at any size)
+    linear = None if rgb_exr_path is None else display_linear_RGB(result, exposure)[0]
+    tag = display_tag(scene.display.space)
     attributes = {
         "scene": scene.to_json(),
         "scene_file": str(scene.source),
@@ -363,14 +421,42 @@ def write_render(result, exr_path, png_path=None):
         "visibility_stats": json.dumps(result.stats, sort_keys=True),
         "software": json.dumps(software_versions(), sort_keys=True),
     }
-    # both files are written to temporary files first and moved into place only when both
+    # every file is written to a temporary file first and moved into place only when all
     # succeeded: a failed PNG leaves no EXR (and no earlier file is replaced)
     with contextlib.ExitStack() as stack:
-        exr_tmp = stack.enter_context(atomic_write(exr_path))
-        png_tmp = None if png_path is None else stack.enter_context(atomic_write(png_path))
-        write_exr_XYZ(exr_tmp, result.XYZ, attributes)
-        if png_tmp is not None:
-            write_png(png_tmp, rgb, bit_depth=scene.display.png_bit_depth)
+        tmp = {key: stack.enter_context(atomic_write(path))
+               for key, path in (("exr", exr_path), ("png", png_path), ("rgb", rgb_exr_path))
+               if path is not None}
+        if "exr" in tmp:
+            write_exr_XYZ(tmp["exr"], result.XYZ, attributes)
+        if "rgb" in tmp:
+            write_exr_RGB(tmp["rgb"], linear, tag, attributes)
+        if "png" in tmp:
+            write_png(tmp["png"], rgb, bit_depth=scene.display.png_bit_depth, tag=tag)
+
+
+def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=None):
+    """Write the display-referred linear RGB EXR of a rendered XYZ EXR (:func:`write_render`'s)
+    and its scene file, exposed as the render was (the header's ``display_exposure_scale``).
+
+    The same as rendering with ``rgb_exr_path`` except that the XYZ come from the file (float32,
+    not the render's float64): the RGB agree to float32 rounding.
+    """
+    from reflectance.io.images import read_exr
+    from reflectance.render.scene import load_scene
+
+    XYZ, header = read_exr(exr_path)
+    for key in ("display_exposure_scale", "visibility_stats"):
+        if key not in header:
+            raise ValueError(f"{exr_path}: no {key!r} attribute: not an EXR written by a render")
+    scene = load_scene(scene_path, spectra_dir=spectra_dir)
+    if XYZ.shape[:2] != (scene.camera.height, scene.camera.width):
+        raise ValueError(f"{exr_path}: {XYZ.shape[1]} x {XYZ.shape[0]} pixels, but its scene "
+                         f"{scene_path} renders {scene.camera.width} x {scene.camera.height}")
+    result = RenderResult(XYZ.astype(np.float64), None, {}, json.loads(header["visibility_stats"]),
+                          scene)
+    write_render(result, rgb_exr_path=rgb_exr_path,
+                 exposure=float(header["display_exposure_scale"]))
 
 
 def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
@@ -404,8 +490,10 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     return float(dE.mean()), float(dE.max())
 
 
-def render_to_files(scene, scene_path, exr_path, png_path=None, components=False):
-    """Write the scene file, render it and write its EXR (and PNG); return the result.
+def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
+                    rgb_exr_path=None):
+    """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
+    the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
     rendered again alone with ``reflectance render``.
@@ -414,5 +502,5 @@ def render_to_files(scene, scene_path, exr_path, png_path=None, components=False
 
     write_scene_file(scene, scene_path)
     result = render(scene, components=components)
-    write_render(result, exr_path, png_path)
+    write_render(result, exr_path, png_path, rgb_exr_path)
     return result

@@ -1,0 +1,180 @@
+"""`reflectance render` and `bench` outputs: PNG alone, --exposure, the linear RGB EXR, tagged
+PNGs, and progress on standard error (plain lines when not a terminal, nothing with --quiet)."""
+
+import io
+import re
+import struct
+import zlib
+
+import numpy as np
+import pytest
+
+from reflectance.cli import main
+from reflectance.io.images import read_exr
+from reflectance.io.progress import Progress
+
+
+def chunks(path):
+    data, out, i = path.read_bytes(), {}, 8
+    while i < len(data):
+        (n,) = struct.unpack(">I", data[i:i + 4])
+        out[data[i + 4:i + 8]] = data[i + 8:i + 8 + n]
+        i += 12 + n
+    return out
+
+
+def png_codes(path):
+    from PIL import Image
+
+    with Image.open(path) as im:
+        return np.asarray(im, dtype=np.float64) / 255
+
+
+@pytest.fixture
+def render(root, tmp_path):
+    scene = root / "workflow" / "scenes" / "example_spheres.yaml"
+
+    def run(*options):
+        return main(["render", str(scene), "--width", "32", "--height", "20", "--spectra-dir",
+                     str(root / "spectra"), *[str(o) for o in options]])
+    return run
+
+
+def test_progress_plain_lines_terminal_bar_and_silence():
+    log = io.StringIO()
+    p = Progress(3, "job", stream=log, tty=False)
+    p.update(0, "a"), p.update(2, "b"), p.close()
+    assert log.getvalue().splitlines() == ["job: [0/3] a", "job: [2/3] b", "job: [3/3] done"]
+    term = io.StringIO()
+    p = Progress(4, "job", stream=term, tty=True)
+    p.update(1, "a long phase name"), p.update(2, "b"), p.close()
+    text = term.getvalue()
+    assert text.count("\r") == 3 and text.endswith("\n") and text.count("\n") == 1
+    assert "[" + "#" * 6 + "." * 18 + "] 1/4 a long phase name" in text
+    # a shorter line blanks what is left of the longer one before it
+    assert re.search(r"2/4 b {10,}\r", text)
+    quiet = io.StringIO()
+    p = Progress(2, "job", stream=quiet, enabled=False)
+    p.update(1, "x"), p.close()
+    assert quiet.getvalue() == ""
+
+
+def test_render_png_alone_reports_each_phase_on_stderr(render, tmp_path, capsys):
+    assert render("--png", tmp_path / "a.png") == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png"]
+    out, err = capsys.readouterr()
+    assert out == ""
+    lines = err.splitlines()
+    for k, phase in enumerate(["scene", "visibility", "shadows", "shading", "writing"]):
+        assert f"reflectance render: [{k}/5] {phase}" in lines
+    assert "reflectance render: [5/5] done" in lines and "\r" not in err
+    assert b"sRGB" in chunks(tmp_path / "a.png")  # the scene's display space is sRGB
+
+
+def test_render_quiet_prints_nothing(render, tmp_path, capsys):
+    assert render("--png", tmp_path / "a.png", "--quiet") == 0
+    assert capsys.readouterr() == ("", "")
+
+
+def test_render_needs_an_output(render, tmp_path):
+    with pytest.raises(SystemExit, match="at least one output"):
+        render()
+    with pytest.raises(SystemExit, match="different files"):
+        render("-o", tmp_path / "a.exr", "--rgb-exr", tmp_path / "a.exr")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_exposure_override_and_the_linear_rgb_exr(render, tmp_path):
+    import colour
+
+    from reflectance.colour.display import encode
+
+    assert render("-o", tmp_path / "auto.exr", "--png", tmp_path / "auto.png", "--rgb-exr",
+                  tmp_path / "auto_rgb.exr", "--quiet") == 0
+    XYZ, header = read_exr(tmp_path / "auto.exr")
+    scale = float(header["display_exposure_scale"])
+    # the automatic scale given explicitly reproduces the automatic PNG, byte for byte
+    assert render("--png", tmp_path / "same.png", "--exposure", repr(scale), "--quiet") == 0
+    assert (tmp_path / "same.png").read_bytes() == (tmp_path / "auto.png").read_bytes()
+    # a quarter of it: a darker picture, and the header records the factor used
+    assert render("-o", tmp_path / "dark.exr", "--png", tmp_path / "dark.png", "--exposure",
+                  repr(scale / 4), "--quiet") == 0
+    assert float(read_exr(tmp_path / "dark.exr")[1]["display_exposure_scale"]) == scale / 4
+    assert png_codes(tmp_path / "dark.png").mean() < png_codes(tmp_path / "auto.png").mean()
+    # the RGB EXR: linear display light; encoded it is the PNG (to 8-bit quantisation)
+    RGB, rgb_header = read_exr(tmp_path / "auto_rgb.exr", channels="RGB")
+    assert RGB.min() >= 0 and RGB.max() <= 1
+    np.testing.assert_allclose(encode(RGB.astype(np.float64), "sRGB"),
+                               png_codes(tmp_path / "auto.png"), atol=0.5 / 255 + 1e-6)
+    cs = colour.RGB_COLOURSPACES["sRGB"]
+    chroma = np.array(rgb_header["chromaticities"])
+    np.testing.assert_allclose(chroma, [*cs.primaries.ravel(), *cs.whitepoint], atol=1e-6)
+    # and in the display's primaries, it is the XYZ image converted (where nothing was clipped)
+    lit = (RGB.max(axis=-1) < 0.99) & (RGB.min(axis=-1) > 1e-3)
+    assert lit.sum() > 20
+    XYZ_from_RGB = colour.RGB_to_XYZ(RGB[lit].astype(np.float64), cs, cs.whitepoint,
+                                     chromatic_adaptation_transform=None) / scale
+    np.testing.assert_allclose(XYZ_from_RGB, XYZ[lit], rtol=1e-3, atol=1e-6)
+
+
+@pytest.mark.parametrize("exposure", ["0", "-1", "nan"])
+def test_bad_exposure_is_refused(render, tmp_path, exposure):
+    with pytest.raises(SystemExit, match="--exposure"):
+        render("--png", tmp_path / "a.png", "--exposure", exposure)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_bench_reports_each_size_and_phase(root, capsys):
+    # one size (each runs in its own process, ~15 s); the sizes' count is the bar's total
+    assert main(["bench", "--sizes", "8", "--runs", "2", "--brute-force-runs", "0",
+                 "--grids", "--spectra-dir", str(root / "spectra")]) == 0
+    out, err = capsys.readouterr()
+    assert "size" in out.splitlines()[1]  # the report itself, on stdout
+    lines = err.splitlines()
+    where = "reflectance bench: [0/1] size 8 (1/1)"
+    assert lines[0] == where
+    for phase in ("scene", "run 1/2: visibility", "run 1/2: shadows", "run 1/2: shading",
+                  "run 2/2: shading"):
+        assert f"{where}: {phase}" in lines
+    assert lines[-1] == "reflectance bench: [1/1] done"
+
+
+def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
+    import reflectance.render.bench as bench
+
+    def fake_run_bench(*args, progress=None, **kwargs):
+        progress.update(0, "size 8 (1/1)")
+        progress.close()
+        return []
+    monkeypatch.setattr(bench, "run_bench", fake_run_bench)
+    assert main(["bench", "--sizes", "8", "--scene", "x.yaml", "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
+    assert main(["bench", "--sizes", "8", "--scene", "x.yaml"]) == 0
+    assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
+
+
+def test_linear_rgb_exr_from_a_rendered_xyz_exr_matches_the_direct_one(root, tmp_path):
+    """The workflow's rule (colour.linear_rgb_exr) converts a render's XYZ EXR with its scene
+    file; the result is the RGB EXR the render writes itself, to float32 rounding."""
+    import yaml
+
+    from reflectance.render.pipeline import write_linear_RGB_from_XYZ
+
+    doc = yaml.safe_load((root / "workflow" / "scenes" / "example_spheres.yaml").read_text())
+    doc["camera"].update(width=24, height=16)
+    doc["spectra_dir"] = str(root / "spectra")
+    scene = tmp_path / "s.scene.yaml"
+    scene.write_text(yaml.safe_dump(doc))
+    assert main(["render", str(scene), "-o", str(tmp_path / "s.exr"), "--rgb-exr",
+                 str(tmp_path / "direct.exr"), "--quiet"]) == 0
+    write_linear_RGB_from_XYZ(tmp_path / "s.exr", scene, tmp_path / "s.rgb.exr")
+    direct, _ = read_exr(tmp_path / "direct.exr", channels="RGB")
+    converted, header = read_exr(tmp_path / "s.rgb.exr", channels="RGB")
+    assert direct.max() > 0.1
+    np.testing.assert_allclose(converted, direct, rtol=1e-5, atol=1e-7)
+    with pytest.raises(ValueError, match="not an EXR written by a render"):
+        from reflectance.io.images import write_exr_XYZ
+
+        write_exr_XYZ(tmp_path / "plain.exr", np.ones((16, 24, 3)))
+        write_linear_RGB_from_XYZ(tmp_path / "plain.exr", scene, tmp_path / "bad.rgb.exr")
+    assert not (tmp_path / "bad.rgb.exr").exists()

@@ -1,0 +1,28 @@
+# The provenance manifest (reflectance.io.provenance): results/provenance.yaml holds the git commit,
+# the configuration's and every spectrum's SHA-256, the package versions and the SHA-256 of every
+# other output. Included last: its inputs are all the targets the other rules files listed, and
+# nothing takes it as input. The commit is a parameter, so a new commit rewrites the manifest.
+
+from reflectance.io.provenance import git_state
+
+PROVENANCE = "results/provenance.yaml"
+PROVENANCE_GIT = git_state(workflow.basedir)
+PROVENANCE_INPUTS = [t for t in TARGETS if t != PROVENANCE]
+
+TARGETS += [PROVENANCE]
+
+
+rule provenance:
+    input:
+        outputs=[t for t in PROVENANCE_INPUTS if not t.startswith("spectra/")],
+        spectra=[t for t in PROVENANCE_INPUTS if t.startswith("spectra/")],
+        config_file="config.yaml",
+    output:
+        PROVENANCE,
+    params:
+        git=PROVENANCE_GIT,
+        config=config,
+    log:
+        "logs/provenance.log",
+    script:
+        "../scripts/provenance.py"
