@@ -56,6 +56,6 @@ onerror:
 
 
 rule all:
+    default_target: True
     input:
         TARGETS,
-    default_target: True

@@ -196,16 +196,15 @@ def test_nothing_left_to_do(built):
     assert "Nothing to be done" in proc.stdout + proc.stderr
 
 
-def test_fresh_spectra_export_is_identical(root, tmp_path):
-    """The committed spectra equal a fresh export by the workflow's own rules."""
-    cwd = copy_project(root, tmp_path)
+def test_fresh_spectra_export_is_identical(root, built):
+    """The committed spectra equal a fresh export by the workflow's own rules: in a fresh copy
+    Snakemake has no record of them, so the session's whole build exported (or derived) every
+    one again (its log says so) before any figure."""
     config = yaml.safe_load((root / "config.yaml").read_text())
-    committed = digests(root, [f"spectra/{m}.csv" for m in config["materials"]]
-                        + ["spectra/sources.csv"])
-    for p in committed:
-        (cwd / p).unlink()
-    snakemake(cwd, "--cores", "2", *committed)
-    assert digests(cwd, list(committed)) == committed
+    for material in config["materials"]:
+        assert (built / "logs" / "spectra" / f"{material}.log").is_file(), material
+    committed = [f"spectra/{m}.csv" for m in config["materials"]] + ["spectra/sources.csv"]
+    assert digests(built, committed) == digests(root, committed)
 
 
 @pytest.mark.parametrize("key, value, expected", [

@@ -5,13 +5,13 @@ import re
 
 from reflectance.config import ConfigError, check_config, validate_schema
 
-
 # The costly checks (each dataset's range, every figure's scene, memory) run once, in the main
 # process: a job that Snakemake re-parses the workflow for (cluster, subprocess) skips them.
 try:
     validate_schema(config)
-    check_config(config, check_spectra=workflow.is_main_process,
-                 check_scenes=workflow.is_main_process)
+    check_config(
+        config, check_spectra=workflow.is_main_process, check_scenes=workflow.is_main_process
+    )
 except ConfigError as err:
     raise WorkflowError(str(err)) from None
 

@@ -7,9 +7,19 @@ CT82_OUT = "results/cook_torrance_1982"
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
-    for name in ("fig4.png", "fig4.pdf", "fig4.csv", "fig5a.png", "fig5a.csv",
-                 "fig5bc.png", "fig5bc.pdf", "fig5bc.csv", "fig5bc.exr", "fig5bc_strip.csv",
-                 "fig5bc_approximation.csv")
+    for name in (
+        "fig4.png",
+        "fig4.pdf",
+        "fig4.csv",
+        "fig5a.png",
+        "fig5a.csv",
+        "fig5bc.png",
+        "fig5bc.pdf",
+        "fig5bc.csv",
+        "fig5bc.exr",
+        "fig5bc_strip.csv",
+        "fig5bc_approximation.csv",
+    )
 ]
 
 
@@ -17,23 +27,31 @@ rule ct82_fig4:
     input:
         spectrum=spectrum_csv(CT82["fig4"]["material"]),
     output:
-        png=report(f"{CT82_OUT}/fig4.png", caption="../report/ct82_fig4.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 4"),
+        png=report(
+            f"{CT82_OUT}/fig4.png",
+            caption="../report/ct82_fig4.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 4",
+        ),
         pdf=f"{CT82_OUT}/fig4.pdf",
-        csv=report(f"{CT82_OUT}/fig4.csv", caption="../report/ct82_fig4_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 4"),
-    params:
-        fig=CT82["fig4"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        csv=report(
+            f"{CT82_OUT}/fig4.csv",
+            caption="../report/ct82_fig4_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 4",
+        ),
     log:
         "logs/cook_torrance_1982/fig4.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig4.tsv",
+        "benchmarks/cook_torrance_1982/fig4.tsv"
     threads: 1
     resources:
         mem_mb=1000,  # script peak 190 MB
         runtime=10,  # measured 117 s
+    params:
+        fig=CT82["fig4"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
     script:
         "../scripts/cook_torrance_1982_fig4.py"
 
@@ -42,21 +60,25 @@ rule ct82_fig5a:
     input:
         spectrum=spectrum_csv(CT82["fig5"]["material"]),
     output:
-        png=report(f"{CT82_OUT}/fig5a.png", caption="../report/ct82_fig5a.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 5"),
+        png=report(
+            f"{CT82_OUT}/fig5a.png",
+            caption="../report/ct82_fig5a.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 5",
+        ),
         csv=f"{CT82_OUT}/fig5a.csv",
-    params:
-        fig=CT82["fig5"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
     log:
         "logs/cook_torrance_1982/fig5a.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig5a.tsv",
+        "benchmarks/cook_torrance_1982/fig5a.tsv"
     threads: 1
     resources:
         mem_mb=900,  # script peak 126 MB
         runtime=10,  # measured 45 s
+    params:
+        fig=CT82["fig5"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
     script:
         "../scripts/cook_torrance_1982_fig5a.py"
 
@@ -65,28 +87,39 @@ rule ct82_fig5bc:
     input:
         spectrum=spectrum_csv(CT82["fig5"]["material"]),
     output:
-        png=report(f"{CT82_OUT}/fig5bc.png", caption="../report/ct82_fig5bc.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 5"),
+        png=report(
+            f"{CT82_OUT}/fig5bc.png",
+            caption="../report/ct82_fig5bc.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 5",
+        ),
         pdf=f"{CT82_OUT}/fig5bc.pdf",
-        csv=report(f"{CT82_OUT}/fig5bc.csv", caption="../report/ct82_fig5bc_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 5"),
+        csv=report(
+            f"{CT82_OUT}/fig5bc.csv",
+            caption="../report/ct82_fig5bc_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 5",
+        ),
         exr=f"{CT82_OUT}/fig5bc.exr",
         strip=f"{CT82_OUT}/fig5bc_strip.csv",
-        approximation=report(f"{CT82_OUT}/fig5bc_approximation.csv",
-                             caption="../report/ct82_fig5bc_approximation.rst",
-                             category="Cook & Torrance 1982", subcategory="Fig. 5"),
-    params:
-        fig=CT82["fig5"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        approximation=report(
+            f"{CT82_OUT}/fig5bc_approximation.csv",
+            caption="../report/ct82_fig5bc_approximation.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 5",
+        ),
     log:
         "logs/cook_torrance_1982/fig5bc.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig5bc.tsv",
+        "benchmarks/cook_torrance_1982/fig5bc.tsv"
     threads: 1
     resources:
         mem_mb=1000,  # script peak 196 MB
         runtime=10,  # measured 136 s
+    params:
+        fig=CT82["fig5"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
     script:
         "../scripts/cook_torrance_1982_fig5bc.py"
 
@@ -99,8 +132,9 @@ CT82_ERRATA = config["figures"]["errata"]
 # is refused, naming its key); the errata rows are text, checked here (file and row named) before
 # any job: an unknown id or a key other than the text ones stops the run.
 try:
-    CT82_SYMBOLS = project_file(CT82["fig1"]["symbols"], "figures.cook_torrance_1982.fig1.symbols",
-                                workflow.basedir)
+    CT82_SYMBOLS = project_file(
+        CT82["fig1"]["symbols"], "figures.cook_torrance_1982.fig1.symbols", workflow.basedir
+    )
     CT82_ERRATA_ROWS = project_file(CT82_ERRATA["rows"], "figures.errata.rows", workflow.basedir)
     errata_rows(CT82_ERRATA_ROWS)
 except ValueError as err:
@@ -108,8 +142,18 @@ except ValueError as err:
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
-    for name in ("fig1.png", "fig1.pdf", "fig1.csv", "fig2.png", "fig2.csv", "fig3.png",
-                 "fig3.csv", "table1.png", "table1.pdf", "table1.csv")
+    for name in (
+        "fig1.png",
+        "fig1.pdf",
+        "fig1.csv",
+        "fig2.png",
+        "fig2.csv",
+        "fig3.png",
+        "fig3.csv",
+        "table1.png",
+        "table1.pdf",
+        "table1.csv",
+    )
 ] + ["results/errata/errata.csv", "results/errata/errata.png", "results/errata/errata.pdf"]
 
 
@@ -117,58 +161,70 @@ rule ct82_fig1:
     input:
         symbols=CT82_SYMBOLS,
     output:
-        png=report(f"{CT82_OUT}/fig1.png", caption="../report/ct82_fig1.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 1"),
+        png=report(
+            f"{CT82_OUT}/fig1.png",
+            caption="../report/ct82_fig1.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 1",
+        ),
         pdf=f"{CT82_OUT}/fig1.pdf",
         csv=f"{CT82_OUT}/fig1.csv",
-    params:
-        fig=CT82["fig1"],
     log:
         "logs/cook_torrance_1982/fig1.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig1.tsv",
+        "benchmarks/cook_torrance_1982/fig1.tsv"
     threads: 1
     resources:
         mem_mb=1000,  # script peak 163 MB
         runtime=10,  # measured 23 s
+    params:
+        fig=CT82["fig1"],
     script:
         "../scripts/cook_torrance_1982_fig1.py"
 
 
 rule ct82_fig2:
     output:
-        png=report(f"{CT82_OUT}/fig2.png", caption="../report/ct82_fig2.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 2"),
+        png=report(
+            f"{CT82_OUT}/fig2.png",
+            caption="../report/ct82_fig2.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 2",
+        ),
         csv=f"{CT82_OUT}/fig2.csv",
-    params:
-        fig=CT82["fig2"],
     log:
         "logs/cook_torrance_1982/fig2.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig2.tsv",
+        "benchmarks/cook_torrance_1982/fig2.tsv"
     threads: 1
     resources:
         mem_mb=1000,  # script peak 200 MB
         runtime=10,  # measured 41 s
+    params:
+        fig=CT82["fig2"],
     script:
         "../scripts/cook_torrance_1982_fig2.py"
 
 
 rule ct82_fig3:
     output:
-        png=report(f"{CT82_OUT}/fig3.png", caption="../report/ct82_fig3.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 3"),
+        png=report(
+            f"{CT82_OUT}/fig3.png",
+            caption="../report/ct82_fig3.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 3",
+        ),
         csv=f"{CT82_OUT}/fig3.csv",
-    params:
-        fig=CT82["fig3"],
     log:
         "logs/cook_torrance_1982/fig3.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig3.tsv",
+        "benchmarks/cook_torrance_1982/fig3.tsv"
     threads: 1
     resources:
         mem_mb=1500,  # script peak 581 MB
         runtime=10,  # measured 84 s
+    params:
+        fig=CT82["fig3"],
     script:
         "../scripts/cook_torrance_1982_fig3.py"
 
@@ -178,23 +234,31 @@ rule ct82_table1:
         spectra=[spectrum_csv(row["material"]) for row in CT82["table1"]["rows"]],
         sources="spectra/sources.csv",
     output:
-        png=report(f"{CT82_OUT}/table1.png", caption="../report/ct82_table1.rst",
-                   category="Cook & Torrance 1982", subcategory="Table I"),
+        png=report(
+            f"{CT82_OUT}/table1.png",
+            caption="../report/ct82_table1.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Table I",
+        ),
         pdf=f"{CT82_OUT}/table1.pdf",
-        csv=report(f"{CT82_OUT}/table1.csv", caption="../report/ct82_table1.rst",
-                   category="Cook & Torrance 1982", subcategory="Table I"),
-    params:
-        fig=CT82["table1"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        csv=report(
+            f"{CT82_OUT}/table1.csv",
+            caption="../report/ct82_table1.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Table I",
+        ),
     log:
         "logs/cook_torrance_1982/table1.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/table1.tsv",
+        "benchmarks/cook_torrance_1982/table1.tsv"
     threads: 1
     resources:
         mem_mb=900,  # script peak 134 MB
         runtime=10,  # measured 24 s
+    params:
+        fig=CT82["table1"],
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
     script:
         "../scripts/cook_torrance_1982_table1.py"
 
@@ -203,20 +267,28 @@ rule errata:
     input:
         rows=CT82_ERRATA_ROWS,
     output:
-        csv=report("results/errata/errata.csv", caption="../report/errata.rst",
-                   category="Errata", subcategory="All texts"),
-        png=report("results/errata/errata.png", caption="../report/errata.rst",
-                   category="Errata", subcategory="All texts"),
+        csv=report(
+            "results/errata/errata.csv",
+            caption="../report/errata.rst",
+            category="Errata",
+            subcategory="All texts",
+        ),
+        png=report(
+            "results/errata/errata.png",
+            caption="../report/errata.rst",
+            category="Errata",
+            subcategory="All texts",
+        ),
         pdf="results/errata/errata.pdf",
-    params:
-        errata=CT82_ERRATA,
     log:
         "logs/errata/errata.log",
     benchmark:
-        "benchmarks/errata/errata.tsv",
+        "benchmarks/errata/errata.tsv"
     threads: 1
     resources:
         mem_mb=1000,  # script peak 223 MB
         runtime=10,  # measured 115 s
+    params:
+        errata=CT82_ERRATA,
     script:
         "../scripts/errata.py"

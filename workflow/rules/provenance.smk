@@ -19,10 +19,16 @@ rule provenance:
         config_file="config.yaml",
     output:
         PROVENANCE,
+    log:
+        "logs/provenance.log",
+    benchmark:
+        "benchmarks/provenance.tsv"
+    threads: 1
+    resources:
+        mem_mb=800,  # script peak 30 MB
+        runtime=10,  # measured under 1 s
     params:
         git=PROVENANCE_GIT,
         config=config,
-    log:
-        "logs/provenance.log",
     script:
         "../scripts/provenance.py"

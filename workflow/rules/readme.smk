@@ -5,8 +5,10 @@ README_STRIP = config.get("readme", {}).get("strip", {"fig7_vases": []})
 README_OUT = "results/readme"
 _unknown = [v for v in README_STRIP["fig7_vases"] if v not in CT82_FIG7_VASES]
 if _unknown:
-    raise WorkflowError(f"config.yaml: readme.strip.fig7_vases: {', '.join(_unknown)} is not a vase "
-                        f"of Fig. 7; known: {', '.join(CT82_FIG7_VASES)}")
+    raise WorkflowError(
+        f"config.yaml: readme.strip.fig7_vases: {', '.join(_unknown)} is not a vase "
+        f"of Fig. 7; known: {', '.join(CT82_FIG7_VASES)}"
+    )
 
 if "readme" in config:  # (a config without the section builds no strip)
     TARGETS += [f"{README_OUT}/strip.png"]
@@ -19,15 +21,15 @@ rule readme_strip:
         colours=f"{CT82_OUT}/fig5bc_strip.csv",
     output:
         png=f"{README_OUT}/strip.png",
-    params:
-        strip=README_STRIP,
     log:
         "logs/readme/strip.log",
     benchmark:
-        "benchmarks/readme/strip.tsv",
+        "benchmarks/readme/strip.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # MEASURE
-        runtime=10,  # MEASURE
+        mem_mb=900,  # script peak 111 MB
+        runtime=10,  # measured 1 s
+    params:
+        strip=README_STRIP,
     script:
         "../scripts/readme_strip.py"

@@ -4,50 +4,65 @@
 CT82_FIG6 = CT82["fig6"]
 CT82_FIG6_READINGS = list(CT82_FIG6["ambient_readings"])
 CT82_PUBLISHED = CT82_FIG6["published"]  # the default figures (unsuffixed names)
-CT82_FIG6_SPECTRA = sorted({spectrum_csv(panel[key]) for panel in CT82_FIG6["panels"].values()
-                            for key in ("material", "diffuse_material")})
+CT82_FIG6_SPECTRA = sorted(
+    {
+        spectrum_csv(panel[key])
+        for panel in CT82_FIG6["panels"].values()
+        for key in ("material", "diffuse_material")
+    }
+)
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
     for reading in CT82_FIG6_READINGS
-    for name in [f"fig6_{reading}.png", f"fig6_{reading}.csv"] + [
-        f"fig6{panel}_{reading}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")
-    ]
+    for name in [f"fig6_{reading}.png", f"fig6_{reading}.csv"]
+    + [f"fig6{panel}_{reading}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")]
 ]
 
 
-TARGETS += [f"{CT82_OUT}/{name}" for name in ["fig6.png", "fig6.csv"] + [
-    f"fig6{panel}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")]]
+TARGETS += [
+    f"{CT82_OUT}/{name}"
+    for name in ["fig6.png", "fig6.csv"]
+    + [f"fig6{panel}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")]
+]
 
 
 rule ct82_fig6_published:
     input:
         spectra=CT82_FIG6_SPECTRA,
     output:
-        png=report(f"{CT82_OUT}/fig6.png", caption="../report/ct82_fig6_published.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
-        csv=report(f"{CT82_OUT}/fig6.csv", caption="../report/ct82_fig6_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
+        png=report(
+            f"{CT82_OUT}/fig6.png",
+            caption="../report/ct82_fig6_published.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 6",
+        ),
+        csv=report(
+            f"{CT82_OUT}/fig6.csv",
+            caption="../report/ct82_fig6_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 6",
+        ),
         a_exr=f"{CT82_OUT}/fig6a.exr",
         a_png=f"{CT82_OUT}/fig6a.png",
         a_scene=f"{CT82_OUT}/fig6a.scene.yaml",
         b_exr=f"{CT82_OUT}/fig6b.exr",
         b_png=f"{CT82_OUT}/fig6b.png",
         b_scene=f"{CT82_OUT}/fig6b.scene.yaml",
+    log:
+        "logs/cook_torrance_1982/fig6.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6.tsv"
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 891 MB
+        runtime=10,  # measured 99 s
     params:
         fig=CT82_FIG6,
         reference=CT82_PUBLISHED["ambient_reference"],
         published=CT82_PUBLISHED,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
-    log:
-        "logs/cook_torrance_1982/fig6.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig6.tsv",
-    threads: 1
-    resources:
-        mem_mb=1800,  # script peak 891 MB
-        runtime=10,  # measured 99 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -56,32 +71,40 @@ rule ct82_fig6:
     input:
         spectra=CT82_FIG6_SPECTRA,
     output:
-        png=report(f"{CT82_OUT}/fig6_{{reading}}.png", caption="../report/ct82_fig6.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
-        csv=report(f"{CT82_OUT}/fig6_{{reading}}.csv", caption="../report/ct82_fig6_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 6"),
+        png=report(
+            f"{CT82_OUT}/fig6_{{reading}}.png",
+            caption="../report/ct82_fig6.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 6",
+        ),
+        csv=report(
+            f"{CT82_OUT}/fig6_{{reading}}.csv",
+            caption="../report/ct82_fig6_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 6",
+        ),
         a_exr=f"{CT82_OUT}/fig6a_{{reading}}.exr",
         a_png=f"{CT82_OUT}/fig6a_{{reading}}.png",
         a_scene=f"{CT82_OUT}/fig6a_{{reading}}.scene.yaml",
         b_exr=f"{CT82_OUT}/fig6b_{{reading}}.exr",
         b_png=f"{CT82_OUT}/fig6b_{{reading}}.png",
         b_scene=f"{CT82_OUT}/fig6b_{{reading}}.scene.yaml",
+    log:
+        "logs/cook_torrance_1982/fig6_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig6_{reading}.tsv"
     wildcard_constraints:
         reading=_one_of(CT82_FIG6_READINGS),
+    threads: 1
+    resources:
+        mem_mb=1800,  # script peak 873 MB
+        runtime=10,  # measured 152 s
     params:
         fig=CT82_FIG6,
         reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
         published=None,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
-    log:
-        "logs/cook_torrance_1982/fig6_{reading}.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig6_{reading}.tsv",
-    threads: 1
-    resources:
-        mem_mb=1800,  # script peak 873 MB
-        runtime=10,  # measured 152 s
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -96,35 +119,53 @@ B77_FIG7 = B77_RENDER["fig7"]
 B77_FIG7_READINGS = list(B77_FIG7["phong_specular_readings"])
 B77_FIG7_STEMS = {
     key: f"{B77_RENDER_OUT}/fig7{key[0]}{key[1:]}"
-    for p in "ab" for light in ("edge", "front")
-    for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in B77_FIG7_READINGS]
+    for p in "ab"
+    for light in ("edge", "front")
+    for key in [f"{p}_torrance_sparrow_{light}"]
+    + [f"{p}_phong_{light}_{r}" for r in B77_FIG7_READINGS]
 }
 
-TARGETS += [f"{B77_RENDER_OUT}/fig7_{r}.png" for r in B77_FIG7_READINGS] + [
-    f"{B77_RENDER_OUT}/fig7.csv"] + [
-    f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values() for ext in ("exr", "png", "scene.yaml")]
+TARGETS += (
+    [f"{B77_RENDER_OUT}/fig7_{r}.png" for r in B77_FIG7_READINGS]
+    + [f"{B77_RENDER_OUT}/fig7.csv"]
+    + [f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values() for ext in ("exr", "png", "scene.yaml")]
+)
 
 
 rule blinn77_fig7:
     output:
-        figures=[report(f"{B77_RENDER_OUT}/fig7_{r}.png", caption="../report/blinn77_fig7.rst",
-                        category="Blinn 1977", subcategory="Fig. 7") for r in B77_FIG7_READINGS],
-        csv=report(f"{B77_RENDER_OUT}/fig7.csv", caption="../report/blinn77_fig7_table.rst",
-                   category="Blinn 1977", subcategory="Fig. 7"),
-        renders=[f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values()
-                 for ext in ("exr", "png", "scene.yaml")],
-    params:
-        fig=B77_FIG7,
-        stems=B77_FIG7_STEMS,
-        wavelengths=config["wavelengths"],
+        figures=[
+            report(
+                f"{B77_RENDER_OUT}/fig7_{r}.png",
+                caption="../report/blinn77_fig7.rst",
+                category="Blinn 1977",
+                subcategory="Fig. 7",
+            )
+            for r in B77_FIG7_READINGS
+        ],
+        csv=report(
+            f"{B77_RENDER_OUT}/fig7.csv",
+            caption="../report/blinn77_fig7_table.rst",
+            category="Blinn 1977",
+            subcategory="Fig. 7",
+        ),
+        renders=[
+            f"{stem}.{ext}"
+            for stem in B77_FIG7_STEMS.values()
+            for ext in ("exr", "png", "scene.yaml")
+        ],
     log:
         "logs/blinn_1977/fig7.log",
     benchmark:
-        "benchmarks/blinn_1977/fig7.tsv",
+        "benchmarks/blinn_1977/fig7.tsv"
     threads: 1
     resources:
         mem_mb=1500,  # script peak 634 MB
         runtime=15,  # measured 242 s
+    params:
+        fig=B77_FIG7,
+        stems=B77_FIG7_STEMS,
+        wavelengths=config["wavelengths"],
     script:
         "../scripts/blinn_1977_fig7.py"
 
@@ -136,24 +177,31 @@ TARGETS += [f"{B77_RENDER_OUT}/fig7_sweep.{ext}" for ext in ("gif", "png", "csv"
 
 rule blinn77_fig7_sweep:
     output:
-        gif=report(f"{B77_RENDER_OUT}/fig7_sweep.gif", caption="../report/blinn77_fig7_sweep.rst",
-                   category="Blinn 1977", subcategory="Fig. 7"),
-        contact=report(f"{B77_RENDER_OUT}/fig7_sweep.png",
-                       caption="../report/blinn77_fig7_sweep_contact.rst",
-                       category="Blinn 1977", subcategory="Fig. 7"),
+        gif=report(
+            f"{B77_RENDER_OUT}/fig7_sweep.gif",
+            caption="../report/blinn77_fig7_sweep.rst",
+            category="Blinn 1977",
+            subcategory="Fig. 7",
+        ),
+        contact=report(
+            f"{B77_RENDER_OUT}/fig7_sweep.png",
+            caption="../report/blinn77_fig7_sweep_contact.rst",
+            category="Blinn 1977",
+            subcategory="Fig. 7",
+        ),
         csv=f"{B77_RENDER_OUT}/fig7_sweep.csv",
-    params:
-        sweep=B77_SWEEP,
-        fig7=B77_FIG7,
-        wavelengths=config["wavelengths"],
     log:
         "logs/blinn_1977/fig7_sweep.log",
     benchmark:
-        "benchmarks/blinn_1977/fig7_sweep.tsv",
+        "benchmarks/blinn_1977/fig7_sweep.tsv"
     threads: 1
     resources:
         mem_mb=1400,  # script peak 494 MB
         runtime=10,  # measured 185 s
+    params:
+        sweep=B77_SWEEP,
+        fig7=B77_FIG7,
+        wavelengths=config["wavelengths"],
     script:
         "../scripts/blinn_1977_fig7_sweep.py"
 
@@ -164,10 +212,13 @@ rule blinn77_fig7_sweep:
 # for the grid; Fig. 8 (the watch).
 
 CT82_FIG7 = CT82["fig7"]
-CT82_FIG7_ROWS = [CT82_FIG7["table1_spectra"].get(row["material"], row["material"])
-                  for row in CT82["table1"]["rows"]]
+CT82_FIG7_ROWS = [
+    CT82_FIG7["table1_spectra"].get(row["material"], row["material"])
+    for row in CT82["table1"]["rows"]
+]
 CT82_FIG7_VASES = (
-    [metal["material"] for metal in CT82_FIG7["metals"]] + CT82_FIG7_ROWS
+    [metal["material"] for metal in CT82_FIG7["metals"]]
+    + CT82_FIG7_ROWS
     + [f"{extra['table1']}_{extra['material']}" for extra in CT82_FIG7["extras"]]
 )
 CT82_FIG7_SPECTRA = sorted(
@@ -180,8 +231,8 @@ CT82_FIG7_STEMS = ["fig7"] + [f"fig7_{r}" for r in CT82_FIG6_READINGS]
 TARGETS += [
     f"{CT82_OUT}/{name}"
     for stem in CT82_FIG7_STEMS
-    for name in [f"{stem}.png", f"{stem}.csv"] + [
-        f"{stem}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")]
+    for name in [f"{stem}.png", f"{stem}.csv"]
+    + [f"{stem}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")]
 ] + [f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES]
 
 
@@ -190,13 +241,29 @@ rule ct82_fig7_published:
         spectra=CT82_FIG7_SPECTRA,
         sources="spectra/sources.csv",
     output:
-        png=report(f"{CT82_OUT}/fig7.png", caption="../report/ct82_fig7_published.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
-        csv=report(f"{CT82_OUT}/fig7.csv", caption="../report/ct82_fig7_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        png=report(
+            f"{CT82_OUT}/fig7.png",
+            caption="../report/ct82_fig7_published.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 7",
+        ),
+        csv=report(
+            f"{CT82_OUT}/fig7.csv",
+            caption="../report/ct82_fig7_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 7",
+        ),
         exrs=[f"{CT82_OUT}/fig7/{vase}.exr" for vase in CT82_FIG7_VASES],
         scenes=[f"{CT82_OUT}/fig7/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
         pngs=[f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES],
+    log:
+        "logs/cook_torrance_1982/fig7.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7.tsv"
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 183 s
     params:
         fig=CT82_FIG7,
         fig6=CT82_FIG6,
@@ -205,14 +272,6 @@ rule ct82_fig7_published:
         published=CT82_PUBLISHED,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
-    log:
-        "logs/cook_torrance_1982/fig7.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig7.tsv",
-    threads: 1
-    resources:
-        mem_mb=1600,  # script peak 692 MB
-        runtime=10,  # measured 183 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -222,14 +281,30 @@ rule ct82_fig7:
         spectra=CT82_FIG7_SPECTRA,
         sources="spectra/sources.csv",
     output:
-        png=report(f"{CT82_OUT}/fig7_{{reading}}.png", caption="../report/ct82_fig7.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
-        csv=report(f"{CT82_OUT}/fig7_{{reading}}.csv", caption="../report/ct82_fig7_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 7"),
+        png=report(
+            f"{CT82_OUT}/fig7_{{reading}}.png",
+            caption="../report/ct82_fig7.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 7",
+        ),
+        csv=report(
+            f"{CT82_OUT}/fig7_{{reading}}.csv",
+            caption="../report/ct82_fig7_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 7",
+        ),
         exrs=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.exr" for vase in CT82_FIG7_VASES],
         scenes=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
+    log:
+        "logs/cook_torrance_1982/fig7_{reading}.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig7_{reading}.tsv"
     wildcard_constraints:
         reading=_one_of(CT82_FIG6_READINGS),
+    threads: 1
+    resources:
+        mem_mb=1600,  # script peak 692 MB
+        runtime=10,  # measured 171 s
     params:
         fig=CT82_FIG7,
         fig6=CT82_FIG6,
@@ -238,14 +313,6 @@ rule ct82_fig7:
         published=None,
         wavelengths=config["wavelengths"],
         colour=config["colour"],
-    log:
-        "logs/cook_torrance_1982/fig7_{reading}.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig7_{reading}.tsv",
-    threads: 1
-    resources:
-        mem_mb=1600,  # script peak 692 MB
-        runtime=10,  # measured 171 s
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -253,38 +320,49 @@ rule ct82_fig7:
 CT82_FIG8 = CT82["fig8"]
 
 
-CT82_FIG8_MATERIALS = {spec.get("material", spec.get("table1"))  # a Table I row names its material
-                       for spec in CT82_FIG8["parts"].values()}
+CT82_FIG8_MATERIALS = {
+    spec.get("material", spec.get("table1"))  # a Table I row names its material
+    for spec in CT82_FIG8["parts"].values()
+}
 
-TARGETS += [f"{CT82_OUT}/fig8{suffix}" for suffix in
-            (".png", ".csv", ".exr", "_render.png", ".scene.yaml")]
+TARGETS += [
+    f"{CT82_OUT}/fig8{suffix}" for suffix in (".png", ".csv", ".exr", "_render.png", ".scene.yaml")
+]
 
 
 rule ct82_fig8:
     input:
         spectra=sorted(spectrum_csv(name) for name in CT82_FIG8_MATERIALS),
     output:
-        png=report(f"{CT82_OUT}/fig8.png", caption="../report/ct82_fig8.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 8"),
-        csv=report(f"{CT82_OUT}/fig8.csv", caption="../report/ct82_fig8_table.rst",
-                   category="Cook & Torrance 1982", subcategory="Fig. 8"),
+        png=report(
+            f"{CT82_OUT}/fig8.png",
+            caption="../report/ct82_fig8.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 8",
+        ),
+        csv=report(
+            f"{CT82_OUT}/fig8.csv",
+            caption="../report/ct82_fig8_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 8",
+        ),
         exr=f"{CT82_OUT}/fig8.exr",
         render_png=f"{CT82_OUT}/fig8_render.png",
         scene=f"{CT82_OUT}/fig8.scene.yaml",
+    log:
+        "logs/cook_torrance_1982/fig8.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig8.tsv"
+    threads: 1
+    resources:
+        mem_mb=1700,  # script peak 743 MB
+        runtime=10,  # measured 139 s
     params:
         fig=CT82_FIG8,
         fig6=CT82_FIG6,
         table1=CT82["table1"]["rows"],
         wavelengths=config["wavelengths"],
         colour=config["colour"],
-    log:
-        "logs/cook_torrance_1982/fig8.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig8.tsv",
-    threads: 1
-    resources:
-        mem_mb=1700,  # script peak 743 MB
-        runtime=10,  # measured 139 s
     script:
         "../scripts/cook_torrance_1982_fig8.py"
 
@@ -292,34 +370,43 @@ rule ct82_fig8:
 B77_FIG8 = B77_RENDER["fig8"]
 
 TARGETS += [f"{B77_RENDER_OUT}/fig8.{ext}" for ext in ("png", "csv")] + [
-    f"{B77_RENDER_OUT}/fig8{part}.{ext}" for part in "ab" for ext in ("exr", "png", "scene.yaml")]
+    f"{B77_RENDER_OUT}/fig8{part}.{ext}" for part in "ab" for ext in ("exr", "png", "scene.yaml")
+]
 
 
 rule blinn77_fig8:
     output:
-        png=report(f"{B77_RENDER_OUT}/fig8.png", caption="../report/blinn77_fig8.rst",
-                   category="Blinn 1977", subcategory="Fig. 8"),
-        csv=report(f"{B77_RENDER_OUT}/fig8.csv", caption="../report/blinn77_fig8_table.rst",
-                   category="Blinn 1977", subcategory="Fig. 8"),
+        png=report(
+            f"{B77_RENDER_OUT}/fig8.png",
+            caption="../report/blinn77_fig8.rst",
+            category="Blinn 1977",
+            subcategory="Fig. 8",
+        ),
+        csv=report(
+            f"{B77_RENDER_OUT}/fig8.csv",
+            caption="../report/blinn77_fig8_table.rst",
+            category="Blinn 1977",
+            subcategory="Fig. 8",
+        ),
         a_exr=f"{B77_RENDER_OUT}/fig8a.exr",
         a_png=f"{B77_RENDER_OUT}/fig8a.png",
         a_scene=f"{B77_RENDER_OUT}/fig8a.scene.yaml",
         b_exr=f"{B77_RENDER_OUT}/fig8b.exr",
         b_png=f"{B77_RENDER_OUT}/fig8b.png",
         b_scene=f"{B77_RENDER_OUT}/fig8b.scene.yaml",
+    log:
+        "logs/blinn_1977/fig8.log",
+    benchmark:
+        "benchmarks/blinn_1977/fig8.tsv"
+    threads: 1
+    resources:
+        mem_mb=1500,  # script peak 590 MB
+        runtime=10,  # measured 88 s
     params:
         fig=B77_FIG8,
         fig7=B77_FIG7,
         n=B77_FIG7["panels"][B77_FIG8["panel"]]["n"],
         wavelengths=config["wavelengths"],
-    log:
-        "logs/blinn_1977/fig8.log",
-    benchmark:
-        "benchmarks/blinn_1977/fig8.tsv",
-    threads: 1
-    resources:
-        mem_mb=1500,  # script peak 590 MB
-        runtime=10,  # measured 88 s
     script:
         "../scripts/blinn_1977_fig8.py"
 
@@ -329,39 +416,50 @@ rule blinn77_fig8:
 ARTICLE_SPHERES = config["figures"]["article"]["spheres"]
 ARTICLE_SPHERES_OUT = "results/article"
 
-TARGETS += [f"{ARTICLE_SPHERES_OUT}/spheres.{ext}"
-            for ext in ("png", "csv", "exr", "scene.yaml")] + [
-    f"{ARTICLE_SPHERES_OUT}/spheres_render.png"]
+TARGETS += [
+    f"{ARTICLE_SPHERES_OUT}/spheres.{ext}" for ext in ("png", "csv", "exr", "scene.yaml")
+] + [f"{ARTICLE_SPHERES_OUT}/spheres_render.png"]
 
 
 rule article_spheres:
     input:
-        spectra=[spectrum_csv(ARTICLE_SPHERES["material"]),
-                 spectrum_csv(ARTICLE_SPHERES["metal_sphere"]["material"])]
+        spectra=[
+            spectrum_csv(ARTICLE_SPHERES["material"]),
+            spectrum_csv(ARTICLE_SPHERES["metal_sphere"]["material"]),
+        ]
         + [spectrum_csv(s["diffuse_material"]) for s in ARTICLE_SPHERES["spheres"]],
     output:
-        png=report(f"{ARTICLE_SPHERES_OUT}/spheres.png", caption="../report/article_spheres.rst",
-                   category="Article", subcategory="Pair of spheres"),
-        csv=report(f"{ARTICLE_SPHERES_OUT}/spheres.csv",
-                   caption="../report/article_spheres_table.rst",
-                   category="Article", subcategory="Pair of spheres"),
+        png=report(
+            f"{ARTICLE_SPHERES_OUT}/spheres.png",
+            caption="../report/article_spheres.rst",
+            category="Article",
+            subcategory="Pair of spheres",
+        ),
+        csv=report(
+            f"{ARTICLE_SPHERES_OUT}/spheres.csv",
+            caption="../report/article_spheres_table.rst",
+            category="Article",
+            subcategory="Pair of spheres",
+        ),
         exr=f"{ARTICLE_SPHERES_OUT}/spheres.exr",
         render=f"{ARTICLE_SPHERES_OUT}/spheres_render.png",
         scene=f"{ARTICLE_SPHERES_OUT}/spheres.scene.yaml",
-    params:
-        fig=ARTICLE_SPHERES,
-        pigments={s["diffuse_material"]: config["materials"][s["diffuse_material"]]
-                  for s in ARTICLE_SPHERES["spheres"]},
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
     log:
         "logs/article/spheres.log",
     benchmark:
-        "benchmarks/article/spheres.tsv",
+        "benchmarks/article/spheres.tsv"
     threads: 1
     resources:
         mem_mb=2100,  # script peak 1079 MB
         runtime=10,  # measured 83 s
+    params:
+        fig=ARTICLE_SPHERES,
+        pigments={
+            s["diffuse_material"]: config["materials"][s["diffuse_material"]]
+            for s in ARTICLE_SPHERES["spheres"]
+        },
+        wavelengths=config["wavelengths"],
+        colour=config["colour"],
     script:
         "../scripts/article_spheres.py"
 
@@ -382,9 +480,15 @@ rule linear_rgb_exr:
         scene="{stem}.scene.yaml",
     output:
         "{stem}.rgb.exr",
-    wildcard_constraints:
-        stem=r"results/[^.]+",
     log:
         "logs/linear_rgb_exr/{stem}.log",
+    benchmark:
+        "benchmarks/linear_rgb_exr/{stem}.tsv"
+    wildcard_constraints:
+        stem=r"results/[^.]+",
+    threads: 1
+    resources:
+        mem_mb=1500,  # not measured (off by default): as a render of its size
+        runtime=10,  # not measured
     script:
         "../scripts/linear_rgb_exr.py"
