@@ -367,7 +367,7 @@ def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
 
 def rim_camera_Blinn1977(fig7, light):
     """A close-up of Blinn 1977 Fig. 7's edge-lit highlight: fig7's camera position, aimed at the
-    point of the torus whose normal is H = (L + E) / |L + E| (where Blinn's D3 peaks), with
+    point of the torus whose normal is ``H = (L + E) / |L + E|`` (where Blinn's D3 peaks), with
     ``fig7.rim_closeup``'s field of view and size.
 
     For a light at angle a from the eye the lit and visible normals lie within 180 - a degrees of
