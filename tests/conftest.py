@@ -24,10 +24,15 @@ def root():
 @pytest.fixture(scope="session")
 def built(root, tmp_path_factory):
     """The whole workflow, `snakemake --cores 2`, run once per test session in a temporary copy
-    of the project; shared by every end-to-end test that reads (never changes) its results."""
+    of the project; shared by every end-to-end test that reads (never changes) its results.
+
+    The copy starts without the committed spectra, so the build exports and derives every one
+    again (whether Snakemake would rerun them beside a checkout depends on the files' times)."""
     from test_workflow import copy_project, snakemake
 
     cwd = copy_project(root, tmp_path_factory.mktemp("workflow"))
+    for spectrum in (cwd / "spectra").glob("*.csv"):
+        spectrum.unlink()
     snakemake(cwd, "--cores", "2")
     return cwd
 

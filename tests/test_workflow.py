@@ -197,9 +197,9 @@ def test_nothing_left_to_do(built):
 
 
 def test_fresh_spectra_export_is_identical(root, built):
-    """The committed spectra equal a fresh export by the workflow's own rules: in a fresh copy
-    Snakemake has no record of them, so the session's whole build exported (or derived) every
-    one again (its log says so) before any figure."""
+    """The committed spectra equal a fresh export by the workflow's own rules: the session's
+    whole build starts without them (tests/conftest.py), so it exported or derived every one
+    (its log says so) before any figure."""
     config = yaml.safe_load((root / "config.yaml").read_text())
     for material in config["materials"]:
         assert (built / "logs" / "spectra" / f"{material}.log").is_file(), material
@@ -254,11 +254,15 @@ def _planned_jobs(text):
 
 
 @pytest.mark.parametrize("key, value, dependents", [
-    # a key of one figure: only that figure's job
-    (("figures", "cook_torrance_1982", "fig4", "wavelength_unit"), "nm", {"ct82_fig4"}),
-    # Blinn's Fig. 7 scene is shared by the light sweep and Fig. 8, which take its settings
+    # a key of one figure: only that figure's job (and the provenance manifest, which hashes
+    # every output)
+    (("figures", "cook_torrance_1982", "fig4", "wavelength_unit"), "nm",
+     {"ct82_fig4", "provenance"}),
+    # Blinn's Fig. 7 scene is shared by the light sweep and Fig. 8, which take its settings; the
+    # gamut-mapping audit reads the rendered EXRs
     (("figures", "blinn_1977", "fig7", "camera", "fov_deg"), 9,
-     {"blinn77_fig7", "blinn77_fig7_sweep", "blinn77_fig8"}),
+     {"blinn77_fig7", "blinn77_fig7_sweep", "blinn77_fig8", "audit_gamut_mapping",
+      "provenance"}),
 ])
 def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(built, tmp_path, key, value,
                                                                   dependents):

@@ -128,8 +128,8 @@ with script_log(snakemake) as log:
     parts = []
     for method in methods:
         dE, dh = (np.concatenate(pooled[method][k]) for k in ("dE", "dh"))
-        parts.append(f"{method} {dE.mean():.2f} (max {dE.max():.1f}; mean |CAM16 hue shift| "
-                     f"{np.nanmean(dh):.1f} degrees)")
+        parts.append(f"{method} {dE.mean():.2f} (max {dE.max():.1f}; mean absolute CAM16 hue "
+                     f"shift {np.nanmean(dh):.1f} degrees)")
     # where the methods disagree (elsewhere every method gives the same colour: too-bright greys)
     spread = table.groupby("figure").dE2000_mean.agg(lambda a: a.max() - a.min())
     differ = [f for f in names if spread.get(f, 0) > 0.01]
@@ -141,7 +141,7 @@ with script_log(snakemake) as log:
               f"outside {space} (most: {worst}, {100 * fraction[worst]:.1f} %); against the "
               f"unclipped colour, the mean CIEDE2000 of those pixels is " + "; ".join(parts)
               + ". The methods differ only in " + (detail or "no figure")
-              + " (mean CIEDE2000, mean |CAM16 hue shift|); elsewhere every method maps the "
+              + " (mean CIEDE2000, mean absolute CAM16 hue shift); elsewhere every method maps the "
               "out-of-gamut pixels to the same colour.\n")
     with atomic_write(snakemake.output.answer) as tmp:
         Path(tmp).write_text(answer)
