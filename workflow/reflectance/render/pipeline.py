@@ -305,22 +305,14 @@ def display_linear_RGB(result, exposure=None, encoded=False):
               "wavelengths": scene.wavelengths}
     XYZ, scale, factor = result.XYZ, 1.0, 1.0
     rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
-    large = XYZ.shape[0] > rows  # scales applied band by band below
+    # a fixed factor (given, or from the white card) is applied band by band below
     if exposure is not None:
         if isinstance(exposure, bool) or not np.isfinite(exposure) or exposure <= 0:
             raise ValueError(f"exposure: must be a positive finite factor, got {exposure!r}")
-        scale = float(exposure)
-        if large:
-            factor = scale
-        else:
-            XYZ = XYZ * scale
+        scale = factor = float(exposure)
     elif d.expose and d.white is not None:  # metered on a white card facing the lights
-        scale = d.white / white_card_luminance(scene.lights)
-        if large:
-            factor = scale
-        else:
-            XYZ = XYZ * scale
-    elif large:  # a large image: the scale from a few pixels
+        scale = factor = d.white / white_card_luminance(scene.lights)
+    elif XYZ.shape[0] > rows:  # a large image: the scale from a few pixels
         scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
     elif d.expose and d.key is not None:
         XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
