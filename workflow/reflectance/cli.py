@@ -578,7 +578,8 @@ def _add_bench(sub):
                     "the per-angle table (speed ratio, CIEDE2000), the error against a "
                     "converged reference (the same render at --reference-supersample, "
                     "CIEDE2000 mean and 95th percentile), and the shading time on 5 nm "
-                    "and 1 nm wavelength grids.")
+                    "and 1 nm wavelength grids; with Mitsuba 3 installed, at --crosscheck-size "
+                    "a path tracer's times and errors against its own converged render.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels, 1 to 16384 (default 256 512 1024)")
@@ -594,6 +595,11 @@ def _add_bench(sub):
     p.add_argument("--reference-supersample", type=_whole(0, 64), default=8,
                    help="n x n samples per pixel of the converged reference (0: skip; skipped "
                         "where it would exceed 2**24 samples)")
+    p.add_argument("--crosscheck-size", type=_whole(0, 16384), default=512, metavar="N",
+                   help="with Mitsuba 3 installed (pip install .[crosscheck]), the size of the "
+                        "path-tracer cross-check, if among --sizes (0: skip; default 512)")
+    p.add_argument("--crosscheck-spp", type=_whole(1, 65536), default=1024, metavar="N",
+                   help="samples per pixel of Mitsuba's converged reference (default 1024)")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",
@@ -624,7 +630,9 @@ def _run_bench(args):
         progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
                             args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
-                            args.reference_supersample, progress=progress)
+                            args.reference_supersample, progress=progress,
+                            crosscheck_size=args.crosscheck_size,
+                            crosscheck_spp=args.crosscheck_spp)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))

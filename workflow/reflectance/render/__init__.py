@@ -4,7 +4,8 @@ Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
 (spectral, per-angle Fresnel table); rgb (a scene also rendered as a three-channel RGB renderer
 would); scene (scene files); pipeline (trace, shade, write);
-composite (grids with one exposure); bench (speed and memory).
+composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
+exported to the path tracer Mitsuba 3, an optional extra).
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
 the package stays cheap.
@@ -13,7 +14,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("bench", "camera", "composite", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -26,6 +27,10 @@ _EXPORTS = {
     "run_bench": "bench",
     "format_report": "bench",
     "Camera": "camera",
+    "mitsuba_available": "crosscheck",
+    "crosscheck_scene": "crosscheck",
+    "scene_to_mitsuba": "crosscheck",
+    "render_mitsuba": "crosscheck",
     "common_exposure": "composite",
     "covered_rows": "composite",
     "image_grid": "composite",

@@ -21,8 +21,11 @@ includes VTK's, belongs to that size alone) and reports:
 - at one size, the table and brute-force shading times on wavelength grids of different steps
   (5 nm and 1 nm by default): the table's time does not grow with the number of wavelengths.
 
-A path tracer as a second reference (Mitsuba 3) is not wired in: the report says whether it
-is installed and that the comparison is skipped.
+With Mitsuba 3 installed (``pip install .[crosscheck]``), at one size (``crosscheck_size``, if
+benchmarked) a path tracer is a second, independent reference
+(:mod:`reflectance.render.crosscheck`): our render and Mitsuba's at a ladder of sample counts,
+their seconds and their CIEDE2000 against the same converged Mitsuba render. Without it the
+report says in one line that the cross-check is skipped.
 
 Speed targets are measured here, never asserted in tests.
 """
@@ -45,6 +48,8 @@ __all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "cros
 REFERENCE_SUPERSAMPLE = 8
 #: the reference is skipped at sizes where it would exceed this many samples
 REFERENCE_MAX_SAMPLES = 1 << 24
+#: the size of the path-tracer cross-check (the issue's 512-px vase)
+CROSSCHECK_SIZE = 512
 
 
 def _peak_MiB():
@@ -173,14 +178,20 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     return out
 
 
-def crosscheck_status():
-    """One line on the path-tracer cross-check (Mitsuba 3): not run, and why."""
-    from importlib.util import find_spec
+def crosscheck_status(results=(), crosscheck_size=None):
+    """The report's lines on the path-tracer cross-check (Mitsuba 3): its table
+    (:func:`reflectance.render.crosscheck.format_crosscheck`) where it ran, else one line saying
+    why it was skipped."""
+    from reflectance.render.crosscheck import format_crosscheck, mitsuba_available
 
-    if find_spec("mitsuba") is None:
-        return "path tracer (Mitsuba 3): not installed; cross-check skipped"
-    return ("path tracer (Mitsuba 3): installed, but no scene export to it is implemented; "
-            "cross-check skipped")
+    done = [r["crosscheck"] for r in results if "crosscheck" in r]
+    if done:
+        return "\n".join(line for r in done for line in format_crosscheck(r))
+    if not mitsuba_available():
+        return ("path tracer (Mitsuba 3): not installed (pip install .[crosscheck]); "
+                "cross-check skipped")
+    return (f"path tracer (Mitsuba 3): installed; cross-check skipped (it runs at size "
+            f"{crosscheck_size or CROSSCHECK_SIZE} when that size is benchmarked)")
 
 
 _PROGRESS = "@progress "  # a worker's progress lines on its standard output start so
@@ -188,11 +199,15 @@ _PROGRESS = "@progress "  # a worker's progress lines on its standard output sta
 
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
-              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None):
+              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None,
+              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=None):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
-    :class:`reflectance.io.progress.Progress` told each size and each phase of it."""
+    :class:`reflectance.io.progress.Progress` told each size and each phase of it. With Mitsuba
+    installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
+    cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
+    pixel; default :data:`reflectance.render.crosscheck.REFERENCE_SPP`)."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
     for i, size in enumerate(sizes):
@@ -224,6 +239,16 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                     progress.close(f"size {size} failed", done=i)
                 raise RuntimeError(f"benchmark of size {size} failed:\n{errors.read()}")
         results.append(json.loads("".join(lines).strip().splitlines()[-1]))
+        if size == crosscheck_size:  # the path-tracer cross-check (reflectance.render.crosscheck)
+            from reflectance.render.crosscheck import (REFERENCE_SPP, mitsuba_available,
+                                                       run_crosscheck)
+
+            if mitsuba_available():
+                results[-1]["crosscheck"] = run_crosscheck(
+                    scene, size, supersample, max(1, min(runs, 3)), reference_supersample or 8,
+                    crosscheck_spp or REFERENCE_SPP, spectra_dir=spectra_dir,
+                    progress=None if progress is None
+                    else (lambda phase: progress.update(i, f"{where}: {phase}")))
     if progress is not None:
         progress.close()
     return results
@@ -262,7 +287,7 @@ def format_report(results):
                  "dE ref: CIEDE2000 of the image against the same render at 'ref spp' samples "
                  "per pixel, over the lit pixels; brute: per-wavelength shading of the same "
                  "samples against the table, images of one band only)")
-    lines.append(crosscheck_status())
+    lines.append(crosscheck_status(results))
     for r in results:
         for g in r.get("grids", []):
             lines.append(f"size {r['size']}, {g['step_nm']:g} nm grid ({g['wavelengths']} "

@@ -1,0 +1,477 @@
+"""A path tracer as an independent reference: a scene exported to Mitsuba 3 and rendered there.
+
+Mitsuba 3 (Jakob et al. 2022) is an optional extra (``pip install .[crosscheck]``); it is imported
+inside the functions that need it, and :func:`mitsuba_available` says whether it is installed.
+
+:func:`scene_to_mitsuba` translates a loaded :class:`reflectance.render.scene.Scene` into the
+dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it into CIE XYZ:
+
+- geometry: the composed triangles with the same vertex normals (a binary PLY in a temporary
+  folder, Mitsuba interpolates them as we do), and analytic spheres as Mitsuba ``sphere`` shapes;
+  every material is wrapped in ``twosided`` (our surfaces are two-sided);
+- camera: the same position, look-at point, up vector, vertical field of view and resolution;
+  Mitsuba's ``box`` reconstruction filter (radius half a pixel), so that a pixel is the plain
+  mean of its samples, the box-filtered pixel integral our supersampling estimates (Mitsuba's
+  default filter is a Gaussian);
+- lights: a ``directional`` emitter per directional light, a ``point`` emitter per point light
+  (given by its solid angle at unit distance or its area); its spectrum is the light's illuminant
+  on our wavelength grid scaled so that its luminance is 1 (our
+  :func:`reflectance.colour.colorimetry.tristimulus_weights`), times ``I d omega``: a white
+  Lambertian card facing a directional light then has ``Y = I d omega / pi`` in both renderers;
+- materials, only where Mitsuba implements our BRDF exactly: ``Lambert`` (and Cook & Torrance
+  with s = 0) as ``diffuse`` with our albedo spectrum; Cook & Torrance 1982 in the ``physical``
+  convention with one Beckmann distribution, Smith shadowing and the exact conductor Fresnel
+  as ``roughconductor`` (``distribution: beckmann``, ``alpha = m``, our measured n, k spectra),
+  blended with the diffuse part by ``blendbsdf`` with weight d when d > 0 (``R = s R_s + d R_d``
+  with s + d = 1). Mitsuba's D is Beckmann's with 1/pi (our ``physical`` D, Walter et al. 2007
+  eq. 25), its BRDF ``F D G / (4 (N.L)(N.V))``, F the unpolarised exact conductor Fresnel at
+  V.H. One difference remains: Mitsuba's Smith G1 of a Beckmann surface is Walter et al.'s
+  rational approximation, ours the exact erf form (they differ by less than 0.35 %, Walter et
+  al. 2007, near grazing only);
+- film: ``hdrfilm`` with ``pixel_format: xyz`` in a ``*_spectral`` variant: Mitsuba integrates
+  the spectrum against its CIE 1931 2-degree colour matching functions (360-830 nm) normalised
+  so that a constant spectrum of 1 has Y = 1, as ours;
+- integrator: ``direct`` with one emitter sample and no BSDF sample: our renderer computes direct
+  light with hard shadows and no interreflection; with point and directional lights the direct
+  integrator is the exact path tracer of that light transport (``path`` with ``max_depth: 2``
+  gives the same image, more slowly); the ``stratified`` sampler.
+
+Anything else (the ``paper`` convention, V-cavity shadowing, several lobes, other D, a
+roughness texture, Fresnel approximations, ambient light, emission, part materials, lights of
+other spectra) is refused with a one-line :class:`ValueError` naming it.
+
+References
+----------
+- Jakob, W., Speierer, S., Roussel, N., Nimier-David, M., Vicini, D., Zeltner, T., Nicolet, B.,
+  Crespo, M., Leroy, V., & Zhang, Z. (2022). Mitsuba 3 renderer. https://mitsuba-renderer.org
+- Walter, B., Marschner, S. R., Li, H., & Torrance, K. E. (2007). Microfacet models for
+  refraction through rough surfaces. EGSR 2007.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from importlib.util import find_spec
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
+           "render_mitsuba", "equal_error_seconds", "bench_crosscheck", "run_crosscheck",
+           "format_crosscheck"]
+
+#: Mitsuba variants tried in order: the LLVM one is much faster, the scalar one needs no LLVM
+VARIANTS = ("llvm_ad_spectral", "scalar_spectral")
+
+
+def mitsuba_available():
+    """Whether Mitsuba 3 is installed (without importing it)."""
+    return find_spec("mitsuba") is not None
+
+
+def mitsuba_variant(prefer=VARIANTS):
+    """The first variant of ``prefer`` that works here (an LLVM variant needs the LLVM library,
+    found by Dr.Jit or named by ``DRJIT_LIBLLVM_PATH``), set as Mitsuba's variant."""
+    import mitsuba as mi
+
+    for variant in prefer:
+        if variant not in mi.variants():
+            continue
+        if variant.startswith("llvm"):
+            import drjit as dr
+
+            try:
+                if not dr.has_backend(dr.JitBackend.LLVM):
+                    continue
+            except Exception:  # noqa: BLE001 - a missing libLLVM shows in several ways
+                continue
+        mi.set_variant(variant)
+        return variant
+    raise ValueError(f"none of the Mitsuba variants {', '.join(prefer)} works here")
+
+
+def crosscheck_scene(document):
+    """A scene document made exportable: the same geometry, camera and lights, with each
+    Cook & Torrance material read in the ``physical`` convention with Smith shadowing, one
+    Beckmann lobe (the narrowest of its lobes), the exact Fresnel, and no ambient light."""
+    import copy
+
+    doc = copy.deepcopy(document)
+    for obj in doc.get("objects", []):
+        m = obj.get("material", {})
+        if m.get("model", "CookTorrance1982") != "CookTorrance1982":
+            continue
+        m.update(convention="physical", shadowing="smith", distribution="Beckmann1963",
+                 fresnel="exact")
+        lobes = m.pop("lobes", None)
+        if lobes:
+            m["m"] = min(lobe["m"] for lobe in lobes)
+    doc.pop("ambient", None)
+    return doc
+
+
+def _spectrum(values, wavelengths):
+    """A Mitsuba ``regular`` spectrum of values on our uniform grid."""
+    values = np.broadcast_to(np.asarray(values, np.float64), np.shape(wavelengths))
+    return {"type": "regular", "wavelength_min": float(wavelengths[0]),
+            "wavelength_max": float(wavelengths[-1]),
+            "values": ", ".join(f"{v:.9g}" for v in values)}
+
+
+def _light_spectrum(scene, name):
+    """The illuminant ``name`` on the scene's grid with luminance 1 (tristimulus_weights')."""
+    from reflectance.colour.colorimetry import cmfs, illuminant_sd
+
+    S = np.asarray(illuminant_sd(name, scene.wavelengths), np.float64)
+    y_bar = np.asarray(cmfs(scene.observer, scene.wavelengths), np.float64)[:, 1]
+    return S * y_bar.sum() / np.sum(S * y_bar)
+
+
+def _refuse(where, what):
+    raise ValueError(f"cross-check export: {where}: {what} has no exact Mitsuba counterpart")
+
+
+def _bsdf(material, wavelengths, where):
+    from reflectance.render.shading import SHADING_MODELS
+
+    m = material
+    if m.emission is not None:
+        _refuse(where, "emission")
+    if m.texture is not None:
+        _refuse(where, "a roughness texture")
+    diffuse = {"type": "diffuse", "reflectance": _spectrum(m.albedo, wavelengths)}
+    if m.model == "Lambert" or (m.model == "CookTorrance1982" and m.roughness is None
+                                and m.lobes is None):
+        if m.model == "Lambert" and m.convention != "physical":
+            _refuse(where, f"Lambert in the {m.convention!r} convention")
+        # rho_d = d x albedo, f = rho_d / pi (brdf_Lambert, physical)
+        scaled = np.asarray(m.albedo, np.float64) * float(m.d)
+        return {"type": "twosided",
+                "bsdf": {"type": "diffuse", "reflectance": _spectrum(scaled, wavelengths)}}
+    if m.model != "CookTorrance1982":
+        _refuse(where, f"shading model {m.model!r}")
+    for name, value, wanted in (("convention", m.convention, "physical"),
+                                ("shadowing", m.shadowing, "smith"),
+                                ("distribution", m.distribution, "Beckmann1963"),
+                                ("fresnel", m.fresnel, "exact")):
+        if value != wanted:
+            _refuse(where, f"{name} {value!r}")
+    if m.lobes is not None:
+        _refuse(where, "several lobes")
+    assert SHADING_MODELS[m.model]["fresnel"]
+    conductor = {"type": "roughconductor", "distribution": "beckmann",
+                 "alpha": float(m.roughness), "eta": _spectrum(m.n, wavelengths),
+                 "k": _spectrum(m.k, wavelengths)}
+    if m.d > 0:  # Cook & Torrance 1982: R = s R_s + d R_d, s + d = 1
+        conductor = {"type": "blendbsdf", "weight": float(m.d), "bsdf_0": conductor,
+                     "bsdf_1": diffuse}
+    return {"type": "twosided", "bsdf": conductor}
+
+
+def _write_ply(path, points, normals, triangles):
+    """A binary little-endian PLY of float32 positions and normals and int32 triangles."""
+    vertex = np.empty(len(points), dtype=[(c, "<f4") for c in ("x", "y", "z", "nx", "ny", "nz")])
+    for j, c in enumerate("xyz"):
+        vertex[c] = points[:, j]
+        vertex["n" + c] = normals[:, j]
+    face = np.empty(len(triangles), dtype=[("n", "u1"), ("i", "<i4", (3,))])
+    face["n"] = 3
+    face["i"] = triangles
+    header = ("ply\nformat binary_little_endian 1.0\n"
+              f"element vertex {len(points)}\n"
+              + "".join(f"property float {c}\n" for c in ("x", "y", "z", "nx", "ny", "nz"))
+              + f"element face {len(triangles)}\nproperty list uchar int vertex_indices\n"
+              "end_header\n")
+    with open(path, "wb") as f:
+        f.write(header.encode("ascii"))
+        f.write(vertex.tobytes())
+        f.write(face.tobytes())
+
+
+def scene_to_mitsuba(scene, folder, spp=64, seed=0):
+    """The ``mitsuba.load_dict`` dictionary of a loaded scene (see the module docstring).
+
+    ``folder`` receives the meshes (PLY files) the dictionary names. Raises ValueError, one
+    line naming the feature, for what has no exact Mitsuba counterpart.
+    """
+    from reflectance.geometry.shapes import analytic_spheres
+    from reflectance.render.lights import DirectionalLight
+
+    if scene.ambient is not None and scene.ambient.fraction > 0:
+        _refuse("ambient", "ambient light (Cook & Torrance's I_ia R_a)")
+    if not scene.shadows:
+        _refuse("shadows", "lights without cast shadows")
+    wl = scene.wavelengths
+    if not np.allclose(np.diff(wl), wl[1] - wl[0]):
+        _refuse("wavelengths", "a non-uniform wavelength grid")
+    doc = {"type": "scene",
+           "integrator": {"type": "direct", "emitter_samples": 1, "bsdf_samples": 0}}
+    mesh = scene.mesh
+    tris = np.asarray(mesh.faces, np.int64).reshape(-1, 4)[:, 1:]
+    object_id = np.asarray(mesh.cell_data["object_id"], np.int64)
+    sphere_index = np.asarray(mesh.cell_data["sphere_index"], np.int64)
+    points = np.asarray(mesh.points, np.float64)
+    normals = np.asarray(mesh.point_data["Normals"], np.float64)
+    centers, radii = analytic_spheres(mesh)
+    for i, obj in enumerate(scene.objects):
+        where = f"objects[{i}] ({obj.name})"
+        if getattr(obj, "part_materials", None):
+            _refuse(where, "materials of parts")
+        bsdf = _bsdf(obj.material, wl, where + ".material")
+        own = (object_id == i) & (sphere_index < 0)
+        if own.any():
+            used, inverse = np.unique(tris[own], return_inverse=True)
+            path = Path(folder) / f"object{i}.ply"
+            _write_ply(path, points[used], normals[used], inverse.reshape(-1, 3))
+            doc[f"object{i}"] = {"type": "ply", "filename": str(path), "bsdf": bsdf}
+        for j in np.unique(sphere_index[(object_id == i) & (sphere_index >= 0)]):
+            doc[f"object{i}_sphere{j}"] = {"type": "sphere", "center": list(map(float, centers[j])),
+                                           "radius": float(radii[j]), "bsdf": bsdf}
+    for i, light in enumerate(scene.lights):
+        where = f"lights[{i}]"
+        if not isinstance(light.spectrum, str):
+            _refuse(where, "a light spectrum that is not a named illuminant")
+        S = _light_spectrum(scene, light.spectrum)
+        if isinstance(light.source, DirectionalLight):
+            # a directional emitter's irradiance: I d omega (Cook & Torrance's I_il d omega_il)
+            doc[f"light{i}"] = {"type": "directional",
+                                "direction": [-float(x) for x in light.source.direction],
+                                "irradiance": _spectrum(S * light.intensity * light.solid_angle,
+                                                        wl)}
+        else:
+            # radiant intensity at distance r gives I d omega = I_p / r^2: with d omega = area
+            # / r^2, I_p = I area; with a constant solid angle a point light cannot match
+            if light.area is None:
+                _refuse(where, "a point light with a constant solid angle")
+            doc[f"light{i}"] = {"type": "point", "position": list(map(float, light.source.position)),
+                                "intensity": _spectrum(S * light.intensity * light.area, wl)}
+    import mitsuba as mi  # only now: what cannot be translated is refused without Mitsuba
+
+    cam = scene.camera
+    doc["sensor"] = {
+        "type": "perspective", "fov_axis": "y", "fov": float(cam.fov_deg),
+        "to_world": mi.ScalarTransform4f().look_at(origin=list(map(float, cam.position)),
+                                                   target=list(map(float, cam.look_at)),
+                                                   up=list(map(float, cam.up))),
+        "sampler": {"type": "stratified", "sample_count": int(spp), "seed": int(seed)},
+        "film": {"type": "hdrfilm", "width": int(cam.width), "height": int(cam.height),
+                 "pixel_format": "xyz", "rfilter": {"type": "box"}},
+    }
+    return doc
+
+
+def render_mitsuba(scene, spp, seed=0, variant=None):
+    """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
+
+    Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
+    wall seconds of ``mitsuba.render`` alone (the scene's loading and the LLVM compilation of
+    the first render of a scene are not counted; see :func:`mitsuba_variant`).
+    """
+    import mitsuba as mi
+
+    if variant is not None:
+        mi.set_variant(variant)
+    elif not mi.variant() or not mi.variant().endswith("spectral"):
+        mitsuba_variant()
+    with tempfile.TemporaryDirectory(prefix="reflectance-mitsuba-") as folder:
+        doc = scene_to_mitsuba(scene, folder, spp=spp, seed=seed)
+        loaded = mi.load_dict(doc)
+    t0 = time.perf_counter()
+    image = mi.render(loaded, spp=int(spp), seed=int(seed))
+    XYZ = np.array(image, dtype=np.float64)
+    seconds = time.perf_counter() - t0
+    return XYZ[..., :3], seconds
+
+
+# --------------------------------------------------------------------------------------------
+# The cross-check of ``reflectance bench``
+# --------------------------------------------------------------------------------------------
+
+#: samples per pixel of Mitsuba's converged reference in the bench (stratified)
+REFERENCE_SPP = 1024
+#: Mitsuba's sample counts whose time and error the bench measures
+LADDER_SPP = (4, 16, 64, 256)
+#: a rung faster than this (seconds) is timed again, once its LLVM kernel is compiled and cached
+RETIME_S = 5.0
+
+
+def _errors(XYZ, reference, scene):
+    """CIEDE2000 mean and 95th percentile over the lit pixels, on the reference's exposure
+    (:func:`reflectance.render.pipeline.pixel_difference_CIEDE2000`: both images scaled alike,
+    CIELAB relative to the display illuminant's white)."""
+    from reflectance.render.pipeline import pixel_difference_CIEDE2000
+
+    dE = pixel_difference_CIEDE2000(XYZ, reference, scene.display.illuminant, scene.observer,
+                                    scene.wavelengths)
+    if not len(dE):
+        return 0.0, 0.0
+    return float(dE.mean()), float(np.percentile(dE, 95))
+
+
+def equal_error_seconds(error, ladder):
+    """Mitsuba's seconds at ``error``, interpolated linearly in log(error), log(seconds) between
+    the ladder's rungs ``[(spp, seconds, error), ...]``; None outside the ladder's errors."""
+    pts = sorted((e, s) for _, s, e in ladder if e > 0 and s > 0)
+    for (e0, s0), (e1, s1) in zip(pts, pts[1:]):
+        if e0 <= error <= e1:
+            f = 0.0 if e1 == e0 else np.log(error / e0) / np.log(e1 / e0)
+            return float(np.exp(np.log(s0) + f * np.log(s1 / s0)))
+    return None
+
+
+def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
+                     reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                     progress=None):
+    """The bench's cross-check at one square size: our renderer and Mitsuba against the same
+    converged references.
+
+    ``document`` (a scene file or document, as :func:`reflectance.render.bench.load_bench_scene`
+    takes it) is read through :func:`crosscheck_scene`. Returns a dict: Mitsuba's variant; our
+    render (``supersample`` x ``supersample``, median seconds of ``runs`` loads and renders) with
+    its CIEDE2000 (mean, p95) against Mitsuba at ``reference_spp`` and against ours at
+    ``reference_supersample`` squared; the two references against each other; per rung of
+    ``ladder_spp``, Mitsuba's seconds (``mitsuba.render`` alone) and error against the same
+    Mitsuba reference; and Mitsuba's interpolated seconds at our error over ours.
+    """
+    import statistics
+
+    from reflectance.render.bench import load_bench_scene
+    from reflectance.render.pipeline import render
+
+    progress = progress or (lambda phase: None)
+    if not isinstance(document, dict):  # a scene file: its validated document
+        document = load_bench_scene(document, spectra_dir=spectra_dir).document
+    doc = crosscheck_scene(document)
+
+    def load(n):
+        return load_bench_scene(doc, spectra_dir=spectra_dir, width=size, height=size,
+                                supersample=n, spectral="table")
+
+    times = []
+    for run in range(runs):
+        progress(f"cross-check: our render {run + 1}/{runs}")
+        t0 = time.perf_counter()
+        scene = load(supersample)
+        ours = render(scene).XYZ
+        times.append(time.perf_counter() - t0)
+    progress(f"cross-check: our reference at {reference_supersample} x {reference_supersample}")
+    our_reference = render(load(reference_supersample)).XYZ
+    variant = mitsuba_variant()
+    progress(f"cross-check: Mitsuba {variant} reference at {reference_spp} spp")
+    render_mitsuba(scene, 1, seed=0)  # compiles the kernels (LLVM) once, not timed
+    mitsuba_reference, reference_s = render_mitsuba(scene, reference_spp, seed=1)
+    rungs = []
+    for spp in ladder_spp:
+        progress(f"cross-check: Mitsuba at {spp} spp")
+        XYZ, seconds = render_mitsuba(scene, spp, seed=2)
+        if seconds < RETIME_S:  # again with the kernel compiled: the faster of the two
+            seconds = min(seconds, render_mitsuba(scene, spp, seed=2)[1])
+        rungs.append((int(spp), seconds, *_errors(XYZ, mitsuba_reference, scene)))
+    ours_s = statistics.median(times)
+    mean, p95 = _errors(ours, mitsuba_reference, scene)
+    equal = equal_error_seconds(mean, [(spp, s, e) for spp, s, e, _ in rungs])
+    best = min(rungs, key=lambda rung: rung[2])
+    # below every rung's error: Mitsuba needs more than its best rung's time for our error
+    lower = best[1] / ours_s if equal is None and mean < best[2] else None
+    return {
+        "size": size, "variant": variant, "supersample": supersample,
+        "material": scene.document["objects"][0]["material"],
+        "reference_spp": reference_spp, "reference_supersample": reference_supersample,
+        "mitsuba_reference_s": reference_s, "ours_s": ours_s,
+        "ours_vs_mitsuba": [mean, p95],
+        "ours_vs_ours": list(_errors(ours, our_reference, scene)),
+        "our_reference_vs_mitsuba": list(_errors(our_reference, mitsuba_reference, scene)),
+        "ladder": [{"spp": spp, "seconds": s, "mean": e, "p95": p} for spp, s, e, p in rungs],
+        "mitsuba_equal_error_s": equal,
+        "speed_ratio": None if equal is None else equal / ours_s,
+        "speed_ratio_above": lower,
+    }
+
+
+def format_crosscheck(result):
+    """Lines of the bench's report for :func:`bench_crosscheck`'s result."""
+    r = result
+    e = r["ours_vs_mitsuba"]
+    lines = [
+        f"path tracer (Mitsuba 3 {r['variant']}), size {r['size']}, one Beckmann lobe m = "
+        f"{r['material'].get('m')}, Smith G, physical, no ambient; CIEDE2000 mean / p95 over "
+        "the lit pixels on the reference's exposure:",
+        f"  Mitsuba reference: {r['reference_spp']} spp stratified, box filter, "
+        f"{r['mitsuba_reference_s']:.1f} s; our reference ({r['reference_supersample']}^2 spp) "
+        f"against it: {r['our_reference_vs_mitsuba'][0]:.3f} / "
+        f"{r['our_reference_vs_mitsuba'][1]:.3f}",
+        f"  ours ({r['supersample']}^2 spp): {r['ours_s']:.2f} s (load + render), against "
+        f"Mitsuba's reference {e[0]:.3f} / {e[1]:.3f}, against ours {r['ours_vs_ours'][0]:.3f} "
+        f"/ {r['ours_vs_ours'][1]:.3f}",
+        f"  {'Mitsuba spp':>12} {'seconds':>8} {'dE mean':>8} {'dE p95':>8}",
+    ]
+    for rung in r["ladder"]:
+        lines.append(f"  {rung['spp']:>12} {rung['seconds']:8.2f} {rung['mean']:8.3f} "
+                     f"{rung['p95']:8.3f}")
+    if r["speed_ratio_above"] is not None:
+        best = min(r["ladder"], key=lambda rung: rung["mean"])
+        lines.append(f"  Mitsuba's time at our mean error: more than its {best['spp']} spp time "
+                     f"(our error is below all its rungs): more than "
+                     f"{r['speed_ratio_above']:.1f} x ours")
+    elif r["speed_ratio"] is None:
+        lines.append("  Mitsuba's time at our error: outside its ladder (no ratio)")
+    else:
+        lines.append(f"  Mitsuba's time at our mean error (interpolated): "
+                     f"{r['mitsuba_equal_error_s']:.2f} s = {r['speed_ratio']:.1f} x ours")
+    return lines
+
+
+_PROGRESS = "@progress "  # the worker's progress lines on its standard output start so
+
+
+def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
+                   reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                   progress=None):
+    """:func:`bench_crosscheck` in a fresh Python process (Mitsuba's threads and memory stay
+    there); ``progress``, if given, is called with each phase. Raises RuntimeError with the
+    worker's standard error if it fails."""
+    import json
+    import subprocess
+    import sys
+
+    job = {"document": scene if isinstance(scene, dict) else str(scene), "size": int(size),
+           "supersample": supersample, "runs": runs,
+           "reference_supersample": reference_supersample, "reference_spp": int(reference_spp),
+           "ladder_spp": [int(n) for n in ladder_spp],
+           "spectra_dir": None if spectra_dir is None else str(spectra_dir),
+           "progress_prefix": _PROGRESS}
+    with tempfile.TemporaryFile("w+") as errors:
+        proc = subprocess.Popen([sys.executable, "-m", "reflectance.render.crosscheck",
+                                 "--worker", json.dumps(job)], stdout=subprocess.PIPE,
+                                stderr=errors, text=True)
+        lines = []
+        for line in proc.stdout:
+            if line.startswith(_PROGRESS):
+                if progress is not None:
+                    progress(line[len(_PROGRESS):].strip())
+            else:
+                lines.append(line)
+        proc.wait()
+        if proc.returncode != 0:
+            errors.seek(0)
+            raise RuntimeError(f"cross-check at size {size} failed:\n{errors.read()}")
+    return json.loads("".join(lines).strip().splitlines()[-1])
+
+
+def _worker(argv):  # pragma: no cover - run by reflectance.render.bench in a subprocess
+    import json
+
+    job = json.loads(argv[0])
+    progress = job.pop("progress_prefix")
+    result = bench_crosscheck(**job, progress=lambda phase: print(progress + phase, flush=True))
+    print(json.dumps(result))
+
+
+if __name__ == "__main__":  # pragma: no cover
+    import argparse
+
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--worker", nargs=1, required=True)
+    _worker(parser.parse_args().worker)
