@@ -134,8 +134,6 @@ def _refuse(where, what):
 
 
 def _bsdf(material, wavelengths, where):
-    from reflectance.render.shading import SHADING_MODELS
-
     m = material
     if m.emission is not None:
         _refuse(where, "emission")
@@ -160,7 +158,6 @@ def _bsdf(material, wavelengths, where):
             _refuse(where, f"{name} {value!r}")
     if m.lobes is not None:
         _refuse(where, "several lobes")
-    assert SHADING_MODELS[m.model]["fresnel"]
     conductor = {"type": "roughconductor", "distribution": "beckmann",
                  "alpha": float(m.roughness), "eta": _spectrum(m.n, wavelengths),
                  "k": _spectrum(m.k, wavelengths)}
@@ -203,6 +200,9 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
         _refuse("ambient", "ambient light (Cook & Torrance's I_ia R_a)")
     if not scene.shadows:
         _refuse("shadows", "lights without cast shadows")
+    if scene.observer != "CIE 1931 2 Degree Standard Observer":
+        _refuse("observer", f"the observer {scene.observer!r} (Mitsuba's film: CIE 1931 "
+                            "2-degree)")
     wl = scene.wavelengths
     if not np.allclose(np.diff(wl), wl[1] - wl[0]):
         _refuse("wavelengths", "a non-uniform wavelength grid")
@@ -227,7 +227,8 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
             _write_ply(path, points[used], normals[used], inverse.reshape(-1, 3))
             doc[f"object{i}"] = {"type": "ply", "filename": str(path), "bsdf": bsdf}
         for j in np.unique(sphere_index[(object_id == i) & (sphere_index >= 0)]):
-            doc[f"object{i}_sphere{j}"] = {"type": "sphere", "center": list(map(float, centers[j])),
+            doc[f"object{i}_sphere{j}"] = {"type": "sphere",
+                                           "center": list(map(float, centers[j])),
                                            "radius": float(radii[j]), "bsdf": bsdf}
     for i, light in enumerate(scene.lights):
         where = f"lights[{i}]"
@@ -245,7 +246,8 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
             # / r^2, I_p = I area; with a constant solid angle a point light cannot match
             if light.area is None:
                 _refuse(where, "a point light with a constant solid angle")
-            doc[f"light{i}"] = {"type": "point", "position": list(map(float, light.source.position)),
+            doc[f"light{i}"] = {"type": "point",
+                                "position": list(map(float, light.source.position)),
                                 "intensity": _spectrum(S * light.intensity * light.area, wl)}
     import mitsuba as mi  # only now: what cannot be translated is refused without Mitsuba
 
