@@ -178,7 +178,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     return out
 
 
-def crosscheck_status(results=(), crosscheck_size=None):
+def crosscheck_status(results=()):
     """The report's lines on the path-tracer cross-check (Mitsuba 3): its table
     (:func:`reflectance.render.crosscheck.format_crosscheck`) where it ran, else one line saying
     why it was skipped."""
@@ -190,8 +190,8 @@ def crosscheck_status(results=(), crosscheck_size=None):
     if not mitsuba_available():
         return ("path tracer (Mitsuba 3): not installed (pip install .[crosscheck]); "
                 "cross-check skipped")
-    return (f"path tracer (Mitsuba 3): installed; cross-check skipped (it runs at size "
-            f"{crosscheck_size or CROSSCHECK_SIZE} when that size is benchmarked)")
+    return (f"path tracer (Mitsuba 3): installed; cross-check skipped (it runs at "
+            f"--crosscheck-size, default {CROSSCHECK_SIZE}, when that size is benchmarked)")
 
 
 _PROGRESS = "@progress "  # a worker's progress lines on its standard output start so
