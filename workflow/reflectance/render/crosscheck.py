@@ -341,7 +341,7 @@ def equal_error_seconds(error, ladder, extrapolate=False):
 
 def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
                      reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
-                     progress=None):
+                     progress=None, variants=VARIANTS):
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
 
@@ -351,7 +351,8 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     its CIEDE2000 (mean, p95) against Mitsuba at ``reference_spp`` and against ours at
     ``reference_supersample`` squared; the two references against each other; per rung of
     ``ladder_spp``, Mitsuba's seconds (``mitsuba.render`` alone) and error against the same
-    Mitsuba reference; and Mitsuba's interpolated seconds at our error over ours.
+    Mitsuba reference; and Mitsuba's interpolated seconds at our error over ours. ``variants``:
+    Mitsuba's variants to try, in order (:func:`mitsuba_variant`).
     """
     import statistics
 
@@ -376,7 +377,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
         times.append(time.perf_counter() - t0)
     progress(f"cross-check: our reference at {reference_supersample} x {reference_supersample}")
     our_reference = render(load(reference_supersample)).XYZ
-    variant = mitsuba_variant()
+    variant = mitsuba_variant(variants)
     progress(f"cross-check: Mitsuba {variant} reference at {reference_spp} spp")
     render_mitsuba(scene, 1, seed=0)  # compiles the kernels (LLVM) once, not timed
     mitsuba_reference, reference_s = render_mitsuba(scene, reference_spp, seed=1)
