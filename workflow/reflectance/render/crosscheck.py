@@ -295,6 +295,8 @@ def render_mitsuba(scene, spp, seed=0, variant=None):
 REFERENCE_SPP = 1024
 #: Mitsuba's sample counts whose time and error the bench measures
 LADDER_SPP = (4, 16, 64, 256)
+#: issue 9's accuracy goal: CIEDE2000 mean and 95th percentile against a converged reference
+GOAL_DE = (0.3, 1.0)
 #: a rung faster than this (seconds) is timed again, once its LLVM kernel is compiled and cached
 RETIME_S = 5.0
 
@@ -451,6 +453,16 @@ def format_crosscheck(result):
                                 f"all its rungs) = more than {q['ratio_above']:.3g} x ours")
         else:
             lines.append(head + "outside its ladder (no ratio)")
+    # issue 9's accuracy goal: CIEDE2000 0.3 mean and 1.0 p95 against a converged reference
+    need = [equal_error_seconds(goal, [(g["spp"], g["seconds"], g["vs_ours"][j])
+                                       for g in r["ladder"]], extrapolate=True)
+            for j, goal in enumerate(GOAL_DE)]
+    ours_ok = all(e <= goal for e, goal in zip(r["ours_vs_ours"], GOAL_DE))
+    if None not in need:
+        lines.append(f"  at the goal CIEDE2000 {GOAL_DE[0]:g} mean / {GOAL_DE[1]:g} p95 against O: "
+                     f"Mitsuba {max(need):.3g} s ({need[0]:.3g} s for the mean, {need[1]:.3g} s "
+                     f"for the p95, log-log between rungs) = {max(need) / r['ours_s']:.3g} x "
+                     f"ours; ours {'meets' if ours_ok else 'misses'} it")
     return lines
 
 
