@@ -99,7 +99,8 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
                         lw=0.9, zorder=1)
     if vectors:
         M = (A + B) / 2
-        draw_arrow(ax, M, 0.55 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
+        # N shorter than H, L', E': its label stays clear of theirs when E' or L' lies near N
+        draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
         draw_arrow(ax, M, 0.55 * h * sim.H2, "H", "k")
         draw_arrow(ax, M, 0.8 * h * sim.L2, "L'", COLOURS["light"])
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])
