@@ -135,7 +135,7 @@ def draw_top_view(ax, sim, L, E, H):
     for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
         ax.axvline(u, color="k", lw=1, ls=ls)
     ax.axhline(0, color="0.4", lw=0.8, ls="-.")
-    ax.text(0.94, -1.02, "dash-dot:\nplane of N, H\n(edge-on)", ha="right", va="bottom",
+    ax.text(0.94, -1.02, "dash-dot:\nN-H plane\n(edge-on)", ha="right", va="bottom",
             fontsize=TEXT_SIZE["annotation"], color="0.3")
     O = np.array([-0.5, 0.0])
     for vec, label, c in ((L, "L", COLOURS["light"]), (E, "E", COLOURS["eye"]), (H, "H", "k")):
