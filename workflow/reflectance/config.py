@@ -407,6 +407,12 @@ def _table1_references(config):
     problems += [f"figures.cook_torrance_1982.fig7.table1_spectra.{row}: unknown material "
                  f"{name!r}; known: {', '.join(sorted(materials))}"
                  for row, name in spectra.items() if name not in materials]
+    vases = ([m["material"] for m in ct["fig7"].get("metals", [])]
+             + [spectra.get(row, row) for row in rows]
+             + [f"{e['table1']}_{e['material']}" for e in ct["fig7"].get("extras", [])])
+    problems += [f"figures.cook_torrance_1982.fig7.vase_exposure: {vase!r} is not a vase of "
+                 f"fig7; known: {', '.join(vases)}"
+                 for vase in ct["fig7"].get("vase_exposure", {}) if vase not in vases]
     readings = list(ct["fig6"]["ambient_readings"]) + ["published"]
     if ct["fig8"]["ambient_reading"] not in readings:
         problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "

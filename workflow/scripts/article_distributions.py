@@ -53,6 +53,10 @@ TITLES = {"phong": "Phong (R\u00b7V)$^n$", "blinn_phong": "Blinn-Phong (N\u00b7H
           "gaussian": "Gaussian", "beckmann": "Beckmann", "heidrich_seidel": "Heidrich-Seidel",
           "ward": "Ward", "cook_torrance": "Cook-Torrance", "mixture": "two Beckmann lobes"}
 
+# solid and dashed in turn; the eighth (the dark yellow) dash-dotted: under deuteranopia it is
+# near the dashed vermilion in lightness
+LINESTYLES = ("-", "--", "-", "--", "-", "--", "-", "-.")
+
 SYMBOLS = {"rho_s": "$\\rho_s$", "alpha_x": "$\\alpha_x$", "alpha_y": "$\\alpha_y$", "thread_direction": "fibre D",
            "tangent_x": "x axis", "lobes": "(w, m)"}
 
@@ -106,7 +110,7 @@ with script_log(snakemake) as log:
         ax.set_yticks([])
         curves[key] = k_spec(key, q, L_dir, V_dir, N)
         line_ax.plot(np.degrees(theta_o), curves[key] / curves[key].max(), label=TITLES[key],
-                     ls="-" if i % 2 == 0 else "--")
+                     ls=LINESTYLES[i % len(LINESTYLES)])
         log.info("%s: image max %.6g, plane-of-incidence max %.6g at %.2f deg", key, image.max(),
                  curves[key].max(), np.degrees(theta_o[np.argmax(curves[key])]))
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")

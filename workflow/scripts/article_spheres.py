@@ -8,7 +8,7 @@ from pathlib import Path
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.io.figures import STYLE, new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import spheres_scene_article
@@ -48,16 +48,22 @@ with script_log(snakemake) as log:
                  "m": metal["m"], "s": 1.0, "d": 0.0, "exposure_scale": scale})
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
-    h, wd = (n / 100 for n in image.shape[:2])
-    fig = new_figure(wd + 0.2, h + 0.95)
-    ax = fig.add_axes((0.1 / (wd + 0.2), 0.1 / (h + 0.95), wd / (wd + 0.2), h / (h + 0.95)))
+    # drawn at the printed width, the render pixel for pixel (dpi = pixels per printed inch)
+    h_px, w_px = image.shape[:2]
+    title_in, margin_in = 0.62, 0.04
+    width_in = PRINT_WIDTH_IN
+    image_h_in = width_in * h_px / w_px
+    fig = new_figure(width_in, image_h_in + title_in + margin_in)
+    height_in = image_h_in + title_in + margin_in
+    ax = fig.add_axes((0.0, margin_in / height_in, 1.0, image_h_in / height_in))
     ax.imshow(image, interpolation="nearest")
     ax.set_axis_off()
     names = ", ".join(pigments[s["diffuse_material"]]["notation"] for s in cfg["spheres"])
-    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: the article's pair of plastic spheres, with a "
-                 f"{metal['name']} sphere between them\n"
-                 f"the article's Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}\n"
-                 f"clear coat F of {cfg['material']} over pigments Munsell {names}; middle: "
-                 f"{metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0)",
-                 size=STYLE["axes.titlesize"], y=1 - 0.05 / (h + 0.95), va="top")
-    savefig(fig, out.png, dpi=100, tight=False)
+    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: the article's pair of plastic spheres, "
+                 f"a {metal['name']} one between them\n"
+                 f"Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}; "
+                 f"clear coat F of {cfg['material']}\n"
+                 f"pigments Munsell {names}; middle: {metal['material']}, exact F, "
+                 f"m = {metal['m']:g} (s = 1, d = 0)",
+                 size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top", linespacing=1.3)
+    savefig(fig, out.png, dpi=w_px / width_in, tight=False)

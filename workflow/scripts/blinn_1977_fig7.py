@@ -91,7 +91,7 @@ with script_log(snakemake) as log:
                         rh, rw = rims[key].shape
                         iw = 0.9  # the close-up across 90 % of the image, its aspect kept
                         inset = ax.inset_axes((0.05, 0.04, iw, iw * rh / rw * wd / h))
-                        inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="nearest")
+                        inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
                         inset.set_xticks([]), inset.set_yticks([])
                         for side in inset.spines.values():
                             side.set(color="#e69f00", lw=0.8, visible=True)

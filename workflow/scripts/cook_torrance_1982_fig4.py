@@ -50,7 +50,7 @@ with script_log(snakemake) as log:
     ax_b.set(xlabel=f"wavelength ({unit})", ylabel="relative spectral energy",
              ylim=(0, 1.45 * light.max()),
              title="(b) spectral energy distributions")
-    ax_b.legend(loc="upper right")  # above the curves
+    ax_b.legend(loc="upper left", bbox_to_anchor=(0.02, 1.0))  # above the curves, clear of the band
     for ax in (ax_a, ax_b):
         ax.set_xticks(np.round(np.arange(0.4, grid[-1] * scale + 1e-9, 0.1), 1) if unit != "nm"
                       else np.arange(400, grid[-1] + 1e-9, 100))

@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 from reflectance.optics.fresnel import fresnel_conductor
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, new_figure, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.io.tables import write_csv
@@ -32,8 +32,9 @@ with script_log(snakemake) as log:
 
     lam_um = grid / 1000.0
     X, Y = np.meshgrid(lam_um, angles)
-    fig = new_figure(6.4, 5.0)
-    ax = fig.add_subplot(projection="3d", computed_zorder=False)
+    fig = new_figure(PRINT_WIDTH_IN, 0.7 * PRINT_WIDTH_IN)
+    # the 3-D box over the whole figure, zoomed (matplotlib's default leaves a wide empty margin)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 0.95), projection="3d", computed_zorder=False)
     shade = cm.copper(colors.Normalize(0.3, 1.0)(F))
     ax.plot_surface(X, Y, F, facecolors=shade, rstride=2, cstride=2, linewidth=0.15,
                     edgecolor=(0, 0, 0, 0.15), antialiased=True, shade=False)
@@ -43,13 +44,13 @@ with script_log(snakemake) as log:
     ax.set_ylabel("incidence angle \u03b8 (\u00b0)", labelpad=6)
     ax.set_zlabel("reflectance F", labelpad=4)
     ax.view_init(elev=24, azim=-58)
-    ax.set_box_aspect((1.25, 1.0, 0.75), zoom=0.92)
+    ax.set_box_aspect((1.25, 1.0, 0.75), zoom=1.12)
     for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
         axis.pane.set_facecolor((1, 1, 1, 0))
         axis.pane.set_edgecolor("0.7")
         axis._axinfo["grid"].update(color="0.88", linewidth=0.6)
-    ax.set_title(f"Cook & Torrance 1982, Fig. 5a \u2014 reflectance of a {material.name} mirror "
-                 f"(exact Fresnel, measured n, k)", pad=0)
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 5a \u2014 reflectance of a {material.name} mirror "
+                 f"(exact Fresnel, measured n, k)", y=0.985)
     savefig(fig, snakemake.output.png)
     log.info("F range %.4f .. %.4f over %d angles x %d wavelengths",
              F.min(), F.max(), angles.size, grid.size)

@@ -2,7 +2,8 @@
 "R_d = F0/pi", rendered one vase at a time (reflectance.render.pipeline) under Fig. 6's lighting and
 composed into one grid. The default figure (``params.published``) exposes each row (metals,
 nonmetals) once, metered on a white card facing the lights (config ``fig7.exposure``; the label gives
-each vase's exposure relative to the first vase), so dark materials stay dark; the readings of
+each vase's exposure relative to the first vase), so dark materials stay dark, with the labelled
+per-vase factors of ``fig7.vase_exposure``; the readings of
 the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
 (not in the paper) and a table of each vase's parameters, colour and how it reads."""
 
@@ -16,7 +17,8 @@ from reflectance.colour.display import XYZ_to_display
 from reflectance.io.figures import savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
-from reflectance.papers.scenes import fig7_vases_CookTorrance1982, vase_scene_CookTorrance1982
+from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982, fig7_vases_CookTorrance1982,
+                                       vase_scene_CookTorrance1982)
 from reflectance.render.composite import appearance, common_exposure, covered_rows, image_grid
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -46,8 +48,8 @@ with script_log(snakemake) as log:
     for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
         document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
                                                colour_cfg, spectra_dir, p.fig["vase_image"],
-                                               exposure=p.fig["exposure"][group] if published
-                                               else None)
+                                               exposure=fig7_exposure_CookTorrance1982(
+                                                   p.fig, vase, group) if published else None)
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
         result = render_to_files(scene, out.scenes[k], out.exrs[k],
@@ -79,12 +81,17 @@ with script_log(snakemake) as log:
                    wavelengths=scene.wavelengths)
     if published:  # one exposure per row, metered on a white card; the label: relative to metals
         scales = [row["vase_exposure_scale"] for row in rows]
-        labels = [f"{text}\nexposure x{s / scales[0]:.3g}" for text, s in zip(labels, scales)]
+        factors = [p.fig.get("vase_exposure", {}).get(row["vase"], 1.0) for row in rows]
+        labels = [f"{text}\nexposure x{s / scales[0]:.3g}" + (f" ({f:g}x its row)" if f != 1 else "")
+                  for text, s, f in zip(labels, scales, factors)]
         metered = {g: (f"white card at {e['white']['luminance']:g}" if "white" in e
                        else f"median at {e['key']['luminance']:g}")
                    for g, e in p.fig["exposure"].items()}
+        departures = ", ".join(f"{p.fig['labels'].get(r['material'], r['material']).lower()} {f:g}x"
+                               for r, f in zip(rows, factors) if f != 1)
         title = ("Cook & Torrance 1982, Fig. 7 \u2014 one exposure per row: metals "
-                 f"{metered['metal']}, nonmetals {metered['nonmetal']}")
+                 f"{metered['metal']}, nonmetals {metered['nonmetal']}"
+                 + (f"; per vase: {departures}" if departures else ""))
     else:  # the grid is one scene: "all XYZ values in the scene are scaled equally"
         scale = common_exposure(images, colour_cfg["space"], **display)
         scales = [scale] * len(images)

@@ -49,8 +49,8 @@ with script_log(snakemake) as log:
     ax = fig.add_subplot(grid[:, 0])
     draw_brdf_angles(ax, g["light"]["theta_deg"], g["light"]["phi_deg"], g["view"]["theta_deg"],
                      g["view"]["phi_deg"])
-    ax.text(0.5, 0.1, "BRDF = f(\u03bb, \u03c6\u1d62, \u03b8\u1d62, \u03c6\u1d65, \u03b8\u1d65) = f(\u03bb, L, V)",
-            fontsize=10, transform=ax.transAxes, ha="center")
+    ax.text(0.5, -0.01, "BRDF = f(\u03bb, \u03c6\u1d62, \u03b8\u1d62, \u03c6\u1d65, \u03b8\u1d65) = f(\u03bb, L, V)",
+            fontsize=10, transform=ax.transAxes, ha="center", va="top")  # under the disc, not on it
     for i, (key, (method, title)) in enumerate(MODELS.items()):
         ax = fig.add_subplot(grid[i // 3, 1 + i % 3], projection="polar")
         ax.set_theta_zero_location("N")

@@ -31,7 +31,7 @@ with script_log(snakemake) as log:
                              indexing="ij")
     V = direction_from_angles(theta, phi)
 
-    pl = off_screen_plotter(1800, 560, shape=(1, len(MODELS)))
+    pl = off_screen_plotter(1800, 400, shape=(1, len(MODELS)))  # the lobes and their titles, little empty canvas
     pl.set_background("white")
     for i, (key, (method, title)) in enumerate(MODELS.items()):
         f = brdf(L, V, N, method, **cfg["models"][key])

@@ -37,6 +37,7 @@ References
 
 from __future__ import annotations
 
+import copy
 from pathlib import Path
 
 import numpy as np
@@ -62,6 +63,7 @@ __all__ = [
     "rim_camera_Blinn1977",
     "table1_material",
     "fig7_vases_CookTorrance1982",
+    "fig7_exposure_CookTorrance1982",
     "watch_part_material",
     "watch_scene_CookTorrance1982",
     "texture_material_Blinn1977",
@@ -426,6 +428,18 @@ def fig7_vases_CookTorrance1982(fig7, fig6, table1):
     return out
 
 
+def fig7_exposure_CookTorrance1982(fig7, vase, group):
+    """The default Fig. 7's scene display keys of one vase: its row's exposure (config
+    ``fig7.exposure[group]``) with the metered luminance (white card or key) times the vase's
+    ``fig7.vase_exposure`` factor (default 1), a labelled departure from one exposure per row."""
+    exposure = copy.deepcopy(fig7["exposure"][group])
+    factor = fig7.get("vase_exposure", {}).get(vase, 1.0)
+    for key in ("white", "key"):
+        if key in exposure:
+            exposure[key]["luminance"] *= factor
+    return exposure
+
+
 def watch_part_material(name, spec, fig6, table1):
     """A part of config ``fig8.parts`` as a scene material; ``table1: X`` takes Table I's row X."""
     if "table1" in spec:
@@ -555,7 +569,8 @@ def figure_scenes(config, spectra_dir="spectra"):
             yield ("figures.cook_torrance_1982.fig7", f"fig7/{vase}",
                    vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
                                                ct["fig7"]["vase_image"],
-                                               exposure=ct["fig7"]["exposure"][group]))
+                                               exposure=fig7_exposure_CookTorrance1982(
+                                                   ct["fig7"], vase, group)))
     yield ("figures.cook_torrance_1982.fig8", "fig8",
            watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
 

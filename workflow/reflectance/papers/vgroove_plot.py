@@ -99,7 +99,8 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
                         lw=0.9, zorder=1)
     if vectors:
         M = (A + B) / 2
-        draw_arrow(ax, M, 0.55 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
+        # N shorter than H, L', E': its label stays clear of theirs when E' or L' lies near N
+        draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
         draw_arrow(ax, M, 0.55 * h * sim.H2, "H", "k")
         draw_arrow(ax, M, 0.8 * h * sim.L2, "L'", COLOURS["light"])
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])
@@ -134,7 +135,7 @@ def draw_top_view(ax, sim, L, E, H):
     for u, ls in ((-1, "-"), (0, "--"), (1, "-")):
         ax.axvline(u, color="k", lw=1, ls=ls)
     ax.axhline(0, color="0.4", lw=0.8, ls="-.")
-    ax.text(0.94, -1.02, "dash-dot:\nplane of N, H\n(edge-on)", ha="right", va="bottom",
+    ax.text(0.94, -1.02, "dash-dot:\nN-H plane\n(edge-on)", ha="right", va="bottom",
             fontsize=TEXT_SIZE["annotation"], color="0.3")
     O = np.array([-0.5, 0.0])
     for vec, label, c in ((L, "L", COLOURS["light"]), (E, "E", COLOURS["eye"]), (H, "H", "k")):
