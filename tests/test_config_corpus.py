@@ -178,6 +178,9 @@ CORPUS = [
     ("unknown-material", set_(f"{CT}.fig4.material", "Copper"), r"figures\.cook_torrance_1982\.fig4\.material: unknown material 'Copper'"),
     ("unknown-table1-row", set_(f"{CT}.fig8.parts.face.table1", "Cheese"), r"fig8\.parts\.face\.table1: 'Cheese' is not a row"),
     ("unknown-reading", set_(f"{CT}.fig8.ambient_reading", "nope"), r"fig8\.ambient_reading: 'nope'"),
+    ("readme-vase", set_("readme.strip.fig7_vases[1]", "Bronze"),
+     r"^config\.yaml: readme\.strip\.fig7_vases\[1\]: 'Bronze' is not a vase of Cook & Torrance "
+     r"1982 Fig\. 7; known: Cu, .*, Rubber, "),
     # what only building the scene finds (without rendering)
     ("watch-value", set_(f"{CT}.fig8.watch", {"links_per_side": 0}),
      r"figures\.cook_torrance_1982\.fig8\.watch \(scene fig8\): watch: links_per_side must be"),
