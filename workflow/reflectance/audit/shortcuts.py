@@ -39,6 +39,7 @@ from reflectance.audit.colour_shift import (
 )
 from reflectance.optics.fresnel import (
     fresnel_conductor,
+    fresnel_Schlick1994,
     nk_from_reflectivity_Gulbrandsen2014,
     reflectivity_from_nk_Gulbrandsen2014,
 )
@@ -230,7 +231,8 @@ def _XYZ_rgb(material, cos_theta, W, space):
 
     # the RGB renderer's F0 per display channel and Schlick 1994 per channel (one definition,
     # shared with the RGB render of audit 2)
-    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space)
+    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space,
+                           fresnel=fresnel_Schlick1994)
 
 
 def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):
