@@ -25,5 +25,6 @@ rule readme_strip:
         runtime=10,  # measured 1 s
     params:
         strip=README_STRIP,
+        space=config["colour"]["space"],
     script:
         "../scripts/readme_strip.py"

@@ -8,6 +8,7 @@ from pathlib import Path
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import display_tag
 from reflectance.io.figures import STYLE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -60,4 +61,4 @@ with script_log(snakemake) as log:
                  f"clear coat F of {cfg['material']} over pigments Munsell {names}; middle: "
                  f"{metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0)",
                  size=STYLE["axes.titlesize"], y=1 - 0.05 / (h + 0.95), va="top")
-    savefig(fig, out.png, dpi=100, tight=False)
+    savefig(fig, out.png, dpi=100, tight=False, tag=display_tag(scene.display.space))

@@ -445,6 +445,7 @@ def write_audit(table, out_dir, white, space="sRGB", title=""):
 
     The figure is drawn before anything is written, so a failure leaves no file.
     """
+    from reflectance.colour.display import display_tag
     from reflectance.io.atomic import atomic_write
     from reflectance.io.figures import savefig
 
@@ -453,7 +454,7 @@ def write_audit(table, out_dir, white, space="sRGB", title=""):
         raise ValueError(f"-o {out}: exists and is not a folder")
     fig = _figure(dict(table, _white=np.asarray(white)), space, title)
     text = format_audit_csv(table)
-    savefig(fig, out / "audit.png", out / "audit.pdf")
+    savefig(fig, out / "audit.png", out / "audit.pdf", tag=display_tag(space))  # its swatches
     with atomic_write(out / "audit.csv") as tmp:
         Path(tmp).write_bytes(text.encode("utf-8"))
     return [out / "audit.csv", out / "audit.png", out / "audit.pdf"]
