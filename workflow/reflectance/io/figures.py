@@ -1,7 +1,8 @@
 """Deterministic figure output for matplotlib (2-D plots) and pyvista (3-D scenes).
 
 Same inputs give byte-identical PNG and PDF files: no creation dates, no software versions in
-the metadata, fixed DPI, and the file is written atomically.
+the metadata, fixed DPI, and the file is written atomically. Every PNG declares its colour space
+(sRGB unless the figure shows pixels encoded for another display: :func:`savefig`'s ``tag``).
 
 Every figure of the project shares one style, :data:`STYLE` (applied by :func:`new_figure`): text
 sized for a figure printed about 7 inches wide (the figures are drawn at that size, so 9-10 pt
