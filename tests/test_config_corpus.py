@@ -181,6 +181,9 @@ CORPUS = [
     ("unknown-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidean", 2.0),
      r"fig7\.vase_exposure: 'Obsidean' is not a vase of fig7; known: Cu, .*Obsidian"),
     ("zero-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidian", 0), r"fig7\.vase_exposure\.Obsidian: 0 is less than or equal"),
+    ("readme-vase", set_("readme.strip.fig7_vases[1]", "Bronze"),
+     r"^config\.yaml: readme\.strip\.fig7_vases\[1\]: 'Bronze' is not a vase of Cook & Torrance "
+     r"1982 Fig\. 7; known: Cu, .*, Rubber, "),
     # what only building the scene finds (without rendering)
     ("watch-value", set_(f"{CT}.fig8.watch", {"links_per_side": 0}),
      r"figures\.cook_torrance_1982\.fig8\.watch \(scene fig8\): watch: links_per_side must be"),

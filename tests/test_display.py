@@ -405,3 +405,21 @@ def test_XYZ_to_display_of_the_white_is_display_white():
 def test_bad_input_raises_value_error_naming_it(call, message):
     with pytest.raises(ValueError, match=message):
         call()
+
+
+def test_rgb_renderer_fresnel_applies_the_function_it_is_given_per_channel():
+    """fresnel_XYZ_rgb: a spectrally flat F0 (grey, inside the gamut) gives Schlick's F times the
+    light's white at every angle (Schlick is linear in F0); a constant function gives back F0's
+    own colour; the Fresnel function is the caller's (colour may not import optics)."""
+    from reflectance.colour.colorimetry import white_XYZ
+    from reflectance.colour.display import fresnel_XYZ_rgb
+    from reflectance.optics.fresnel import fresnel_Schlick1994
+
+    white, c = white_XYZ("D65"), np.linspace(0.0, 1.0, 11)
+    for space in ("sRGB", "SMPTE-C"):
+        got = fresnel_XYZ_rgb(0.3 * white, c, white, space, fresnel=fresnel_Schlick1994)
+        expected = (0.3 + 0.7 * (1.0 - c) ** 5)[:, None] * white  # Schlick 1994 by hand
+        np.testing.assert_allclose(got, expected, rtol=1e-12, atol=1e-12)
+        F0 = np.array([0.5, 0.4, 0.2]) * white
+        same = fresnel_XYZ_rgb(F0, c, white, space, fresnel=lambda cos, F0: F0 + 0 * cos)
+        np.testing.assert_allclose(same, np.broadcast_to(F0, (11, 3)), rtol=1e-12, atol=1e-12)

@@ -1,5 +1,6 @@
 """Tests of reflectance.io.images: PNG and OpenEXR round trips, determinism, bad input."""
 
+import io
 import struct
 import zlib
 
@@ -364,3 +365,118 @@ def test_rgb_exr_round_trip_with_colour_science_chromaticities(tmp_path, space):
     assert header["note"] == "x"
     read, _ = read_exr(tmp_path / "a.exr", channels="RGB")
     np.testing.assert_array_equal(read, RGB)
+
+
+# --- figures: matplotlib and pyvista PNGs carry their colour space ------------------------------
+
+
+def _colour_chunks(data):
+    """{type: body} of the colour chunks, checking they come before the image data (PNG §5.6)."""
+    kinds = [kind for kind, _ in read_png_chunks(data)]
+    first_data = kinds.index(b"IDAT")
+    found = {kind: body for kind, body in read_png_chunks(data)
+             if kind in (b"cHRM", b"gAMA", b"sRGB", b"iCCP", b"cICP")}
+    assert all(kinds.index(kind) < first_data for kind in found)
+    assert all(kinds.count(kind) == 1 for kind in found)
+    return found
+
+
+def _srgb_chunks_as_colour_science_says(found):
+    """sRGB chunk, gAMA 1/2.2 and cHRM with colour-science's sRGB primaries and white."""
+    assert found[b"sRGB"] == bytes([1]) and b"iCCP" not in found
+    assert struct.unpack(">I", found[b"gAMA"]) == (45455,)
+    cs = _colourspace("sRGB")
+    chrm = np.array(struct.unpack(">8I", found[b"cHRM"])) / 100000
+    np.testing.assert_allclose(chrm, [*cs.whitepoint, *cs.primaries.ravel()], atol=1e-5)
+
+
+def _plot():
+    from matplotlib.patches import Rectangle
+
+    from reflectance.io.figures import new_figure
+
+    fig = new_figure(2.0, 1.5)
+    ax = fig.add_subplot()
+    ax.plot([0, 1, 2], [0, 1, 0])
+    ax.add_patch(Rectangle((0.2, 0.2), 0.5, 0.3, color="#d55e00"))
+    return fig
+
+
+def test_matplotlib_figure_png_is_tagged_srgb_with_its_pixels_untouched(tmp_path):
+    """savefig: the sRGB chunk (matplotlib's colours are sRGB values); the pixels equal the ones
+    matplotlib writes untagged; the PDF beside it is still written; a rerun is byte-identical."""
+    from reflectance.io.figures import savefig
+
+    savefig(_plot(), tmp_path / "a.png", tmp_path / "a.pdf", dpi=50)
+    savefig(_plot(), tmp_path / "b.png", dpi=50)
+    fig = _plot()
+    fig.savefig(tmp_path / "plain.png", dpi=50, bbox_inches="tight")
+    data = (tmp_path / "a.png").read_bytes()
+    _srgb_chunks_as_colour_science_says(_colour_chunks(data))
+    assert data == (tmp_path / "b.png").read_bytes()
+    assert (tmp_path / "a.pdf").read_bytes()[:5] == b"%PDF-"
+    assert b"tIME" not in [kind for kind, _ in read_png_chunks(data)]
+    with Image.open(tmp_path / "a.png") as im, Image.open(tmp_path / "plain.png") as plain:
+        assert im.info["srgb"] == 1 and "icc_profile" not in im.info  # Pillow reads it too
+        assert "srgb" not in plain.info and "icc_profile" not in plain.info  # (what tags it)
+        np.testing.assert_array_equal(np.asarray(im), np.asarray(plain))
+
+
+def test_figure_of_smpte_c_pixels_carries_the_displays_icc_profile(tmp_path):
+    """A figure showing SMPTE-C-encoded pixels (tag=display_tag): iCCP, no sRGB chunk; the profile
+    is the one write_png gives a render of that display, and littlecms reads it."""
+    from PIL import ImageCms
+
+    from reflectance.colour.display import display_tag
+    from reflectance.io.figures import savefig
+
+    savefig(_plot(), tmp_path / "a.png", dpi=50, tag=display_tag("SMPTE-C"))
+    write_png(tmp_path / "render.png", image((2, 2, 3), 3), tag=display_tag("SMPTE-C"))
+    found = _colour_chunks((tmp_path / "a.png").read_bytes())
+    assert b"sRGB" not in found
+    assert found == _colour_chunks((tmp_path / "render.png").read_bytes())
+    with Image.open(tmp_path / "a.png") as im:
+        profile = ImageCms.ImageCmsProfile(io.BytesIO(im.info["icc_profile"]))
+    assert ImageCms.getProfileDescription(profile).strip() == "SMPTE-C"
+
+
+def test_pyvista_screenshot_is_tagged_srgb(tmp_path):
+    import pyvista as pv
+
+    from reflectance.io.figures import off_screen_plotter, save_plotter
+
+    for name in ("a", "b"):
+        plotter = off_screen_plotter(48, 32)
+        plotter.add_mesh(pv.Sphere(), color="#0072b2")
+        save_plotter(plotter, tmp_path / f"{name}.png")
+    data = (tmp_path / "a.png").read_bytes()
+    _srgb_chunks_as_colour_science_says(_colour_chunks(data))
+    assert data == (tmp_path / "b.png").read_bytes()
+    with Image.open(tmp_path / "a.png") as im:
+        assert im.size == (48, 32) and im.info["srgb"] == 1
+
+
+def test_the_fixed_srgb_tag_writes_what_colour_sciences_srgb_writes(tmp_path):
+    """SRGB_TAG (IEC 61966-2-1's numbers, for io, which may not import colour) and
+    display_tag("sRGB") (colour-science's) give the same chunks."""
+    from reflectance.colour.display import display_tag
+    from reflectance.io.images import SRGB_TAG
+
+    rgb = image((2, 3, 3), 5)
+    write_png(tmp_path / "a.png", rgb, tag=SRGB_TAG)
+    write_png(tmp_path / "b.png", rgb, tag=display_tag("sRGB"))
+    assert (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
+
+
+def test_tag_png_refuses_a_second_colour_space_and_non_png():
+    from reflectance.io.images import SRGB_TAG, tag_png
+
+    buffer = io.BytesIO()
+    Image.new("RGB", (2, 2)).save(buffer, format="PNG")
+    tagged = tag_png(buffer.getvalue(), SRGB_TAG)
+    with pytest.raises(ValueError, match="already declares its colour space"):
+        tag_png(tagged, SRGB_TAG)
+    with pytest.raises(ValueError, match="not a PNG"):
+        tag_png(b"GIF89a....", SRGB_TAG)
+    with Image.open(io.BytesIO(tagged)) as im:  # still a valid PNG, same pixels
+        assert im.info["srgb"] == 1 and np.asarray(im).sum() == 0

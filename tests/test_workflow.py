@@ -179,6 +179,22 @@ def test_every_output_is_readable(built):
             assert len(pd.read_csv(path).columns) >= 2, p
 
 
+def test_every_png_carries_its_colour_space(built):
+    """Renders, matplotlib figures, pyvista screenshots, README's strip: each PNG declares its
+    colour space, an sRGB chunk or an ICC profile (never both), before its image data."""
+    from test_imageio import read_png_chunks
+
+    pngs = [p for p in results(built) if p.endswith(".png")]
+    assert len(pngs) >= 70
+    untagged = []
+    for p in pngs:
+        kinds = [kind for kind, _ in read_png_chunks((built / p).read_bytes())]
+        declared = [kind for kind in (b"sRGB", b"iCCP") if kind in kinds]
+        if len(declared) != 1 or kinds.index(declared[0]) > kinds.index(b"IDAT"):
+            untagged.append(f"{p}: {[kind.decode() for kind in kinds]}")
+    assert not untagged, "\n".join(untagged)
+
+
 def test_provenance_lists_every_output_with_its_sha256(built):
     """results/provenance.yaml: each other file of results/ and spectra/ with its SHA-256, the
     configuration's hash; a copy without .git has no commit."""

@@ -421,6 +421,25 @@ def _table1_references(config):
     return problems
 
 
+def _readme_vases(config):
+    """``readme.strip.fig7_vases``: each a vase of Cook & Torrance 1982 Fig. 7 (the ids of
+    :func:`reflectance.papers.scenes.fig7_vases_CookTorrance1982`, the vases the workflow renders)."""
+    names = config.get("readme", {}).get("strip", {}).get("fig7_vases", [])
+    ct = config.get("figures", {}).get("cook_torrance_1982", {})
+    if not names or not all(key in ct for key in ("table1", "fig6", "fig7")):
+        return []
+    from reflectance.papers.scenes import fig7_vases_CookTorrance1982
+
+    try:
+        vases = [vase for vase, _, _ in fig7_vases_CookTorrance1982(ct["fig7"], ct["fig6"],
+                                                                     ct["table1"]["rows"])]
+    except ValueError:
+        return []  # a bad fig7.extras row, named by _table1_references
+    return [f"readme.strip.fig7_vases[{i}]: {name!r} is not a vase of Cook & Torrance 1982 "
+            f"Fig. 7; known: {', '.join(vases)}" for i, name in enumerate(names)
+            if name not in vases]
+
+
 #: Angle steps and the range each must divide (the figure's curve includes both ends).
 ANGLE_STEPS = [
     (("figures", "cook_torrance_1982", "fig3", "alpha_step_deg"), 90.0),
@@ -761,6 +780,7 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
       the CSV the workflow writes from it;
     - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
+    - the vases README's strip names (``readme.strip.fig7_vases``) are vases of Fig. 7;
     - (``check_spectra``) the wavelength grid is ordered and inside every material's data range
       (taken from the data source, see :func:`reflectance.optics.spectra.coverage_nm`);
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
@@ -797,6 +817,7 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
             problems.append(f"materials.{name}.path: {entry['path']} is the file the workflow "
                             f"writes from it; keep your own data outside spectra/ (e.g. data/)")
     problems += _table1_references(config)
+    problems += _readme_vases(config)
     problems += _cross_field(config)
     problems += _munsell_notations(config)
     problems += _texture_values(config)

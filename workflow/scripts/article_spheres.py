@@ -8,6 +8,7 @@ from pathlib import Path
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import display_tag
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -66,4 +67,4 @@ with script_log(snakemake) as log:
                  f"pigments Munsell {names}; middle: {metal['material']}, exact F, "
                  f"m = {metal['m']:g} (s = 1, d = 0)",
                  size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top", linespacing=1.3)
-    savefig(fig, out.png, dpi=w_px / width_in, tight=False)
+    savefig(fig, out.png, dpi=w_px / width_in, tight=False, tag=display_tag(scene.display.space))

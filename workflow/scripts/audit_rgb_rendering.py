@@ -11,7 +11,7 @@ from matplotlib.colors import BoundaryNorm
 from reflectance.render.rgb import (dE2000_map, dE2000_statistics, display_exposure,
                                           render_spectral_and_rgb)
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.colour.display import XYZ_to_display, XYZ_to_linear_RGB
+from reflectance.colour.display import display_tag, XYZ_to_display, XYZ_to_linear_RGB
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.io.tables import write_csv
@@ -86,7 +86,7 @@ with script_log(snakemake) as log:
     bar.ax.tick_params(labelsize=7)
     fig.suptitle("Cook & Torrance 1982, Figs. 6b and 7: metal vases, spectral against RGB "
                  "rendering", fontsize=9)
-    savefig(fig, out.png, out.pdf, tight=False)
+    savefig(fig, out.png, out.pdf, tight=False, tag=display_tag(colour_cfg["space"]))
 
     worst = table.loc[table.dE2000_max.idxmax()]
     pkey = f"dE2000_p{cfg['percentile']:g}"

@@ -5,7 +5,7 @@ i = 1 is display white). One figure per reading of Phong's p_s; a table of the d
 
 import numpy as np
 import pandas as pd
-from reflectance.colour.display import encode
+from reflectance.colour.display import display_tag, encode
 
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import display_image, render, render_to_files
@@ -134,4 +134,4 @@ with script_log(snakemake) as log:
                      f"\u00b0 (front) from the eye; MgO's highlight passes aluminium's beyond "
                      f"{crossover:.1f}\u00b0; p_a = {fig_cfg['p_a']:g}, i = 1 is white", fontsize=11,
                      y=1 - 0.04 / H, va="top")
-        savefig(fig, png, dpi=100, tight=False)
+        savefig(fig, png, dpi=100, tight=False, tag=display_tag(scene.display.space))

@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 from PIL import Image, ImageDraw, ImageFont
 
+from reflectance.colour.display import display_tag
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import RenderResult, display_image, shade_samples
@@ -102,4 +103,4 @@ with script_log(snakemake) as log:
                                           f"{crossover:.1f}\u00b0")
     fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')}"
                  f"{cross})", fontsize=10, y=1 - 0.08 / H, va="top", color="white")
-    savefig(fig, out.contact, dpi=100, tight=False)
+    savefig(fig, out.contact, dpi=100, tight=False, tag=display_tag(first.display.space))

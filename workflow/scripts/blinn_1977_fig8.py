@@ -8,6 +8,7 @@ import json
 import numpy as np
 import pandas as pd
 
+from reflectance.colour.display import display_tag
 from reflectance.optics.microfacet import c3_texture_Blinn1977
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
@@ -69,4 +70,4 @@ with script_log(snakemake) as log:
                  f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
                  f"i = 1 is white", fontsize=9.5, y=1 - 0.05 / H, va="top")
-    savefig(fig, out.png, dpi=100, tight=False)
+    savefig(fig, out.png, dpi=100, tight=False, tag=display_tag(scene.display.space))

@@ -13,6 +13,7 @@ from matplotlib.patches import Rectangle
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.audit.colour_shift import (COLOUR_METHODS, approximation_onset_CookTorrance1982,
                                             colour_table)
+from reflectance.colour.display import display_tag
 from reflectance.io.images import write_exr_XYZ
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
@@ -101,7 +102,7 @@ with script_log(snakemake) as log:
                  f"({colour_cfg['illuminant']}, {colour_cfg['space']})\n"
                  f"swatches, then continuous strips on a proportional angle axis; dashed: (c) leaves copper "
                  f"at {onset['onset_deg']:.2f}\u00b0", y=0.995, va="top")
-    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=display_tag(colour_cfg["space"]))
     for method in rows:
         log.info("%s: max dE2000 vs exact %.3f (%s)", method,
                  table[table.method == method].dE2000_vs_exact.max(), COLOUR_METHODS[method])

@@ -11,6 +11,7 @@ import numpy as np
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import display_tag
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.spectra import load_material
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
@@ -100,4 +101,4 @@ with script_log(snakemake) as log:
                     f"highlights above {exposure['highlight_knee']:g} compressed at constant "
                     "chromaticity")
     fig.suptitle(f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}", color="white", fontsize=10)
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tag=display_tag(scene.display.space))

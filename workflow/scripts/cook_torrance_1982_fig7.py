@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.colour.display import XYZ_to_display
+from reflectance.colour.display import display_tag, XYZ_to_display
 from reflectance.io.figures import savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
@@ -119,4 +119,4 @@ with script_log(snakemake) as log:
     fig = image_grid(cells, 2, n_cols, title,
                      headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
                      crop=covered_rows(images), foot=0.55 if published else 0.4)
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tag=display_tag(colour_cfg["space"]))

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
@@ -64,4 +65,4 @@ with script_log(snakemake) as log:
     fig.suptitle(f"Cook & Torrance 1982, Fig. 8 \u2014 a watch: gold, stainless steel, "
                  f"{p.fig['led']['dominant_wavelength_nm']:g} nm LEDs",
                  color="white", fontsize=10, y=1 - 0.12 / (height / 100 + 0.45))
-    savefig(fig, out.png, dpi=100)
+    savefig(fig, out.png, dpi=100, tag=display_tag(scene.display.space))

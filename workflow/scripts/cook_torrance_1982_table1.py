@@ -8,7 +8,7 @@ import pandas as pd
 from matplotlib.patches import Rectangle
 
 from reflectance.colour.colorimetry import tristimulus_weights
-from reflectance.colour.display import XYZ_to_display
+from reflectance.colour.display import display_tag, XYZ_to_display
 from reflectance.io.figures import new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material, wavelength_grid
@@ -62,7 +62,7 @@ with script_log(snakemake) as log:
     fig.suptitle(f"Cook & Torrance 1982, Table I \u2014 s, d, m of the nonmetals of Fig. 7, with "
                  f"their spectra ({colour_cfg['space']} swatch, not exposed: white = Y 1)",
                  fontsize=10.5, y=0.97)
-    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=display_tag(colour_cfg["space"]))
     for r in table.itertuples():
         log.info("%s: mean F0 %.4f, Y %.4f, %s", r.material, r.R_d_mean_per_sr * np.pi, r.Y,
                  r.display_RGB)

@@ -1,11 +1,13 @@
 """README's picture strip: Cook & Torrance's copper vase (Fig. 6b), a row of their Fig. 7 vases,
 and under them copper's exact colour against the angle of incidence (Fig. 5b's continuous strip,
-0 to 90 degrees from left to right)."""
+0 to 90 degrees from left to right), in the display space of config ``colour.space`` as its
+parts are, and tagged with it."""
 
 import numpy as np
 import pandas as pd
 from PIL import Image
 
+from reflectance.colour.display import display_tag
 from reflectance.io.images import write_png
 from reflectance.scripting import script_log
 
@@ -32,6 +34,6 @@ with script_log(snakemake) as log:
     angles = (np.arange(total) + 0.5) / total * 90.0
     nearest = np.abs(angles[:, None] - exact.angle_deg.to_numpy()[None, :]).argmin(axis=1)
     canvas[height + gap:] = exact[["R", "G", "B"]].to_numpy()[nearest][None, :, :]
-    write_png(snakemake.output.png, canvas)
+    write_png(snakemake.output.png, canvas, tag=display_tag(snakemake.params.space))  # as its parts
     log.info("strip %d x %d px: %d renders and copper's colour from 0 to 90 degrees",
              total, canvas.shape[0], len(tiles))

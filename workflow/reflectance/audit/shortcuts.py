@@ -39,6 +39,7 @@ from reflectance.audit.colour_shift import (
 )
 from reflectance.optics.fresnel import (
     fresnel_conductor,
+    fresnel_Schlick1994,
     nk_from_reflectivity_Gulbrandsen2014,
     reflectivity_from_nk_Gulbrandsen2014,
 )
@@ -230,7 +231,8 @@ def _XYZ_rgb(material, cos_theta, W, space):
 
     # the RGB renderer's F0 per display channel and Schlick 1994 per channel (one definition,
     # shared with the RGB render of audit 2)
-    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space)
+    return fresnel_XYZ_rgb(material.F0 @ W, cos_theta, W.sum(axis=0), space,
+                           fresnel=fresnel_Schlick1994)
 
 
 def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):
@@ -443,6 +445,7 @@ def write_audit(table, out_dir, white, space="sRGB", title=""):
 
     The figure is drawn before anything is written, so a failure leaves no file.
     """
+    from reflectance.colour.display import display_tag
     from reflectance.io.atomic import atomic_write
     from reflectance.io.figures import savefig
 
@@ -451,7 +454,7 @@ def write_audit(table, out_dir, white, space="sRGB", title=""):
         raise ValueError(f"-o {out}: exists and is not a folder")
     fig = _figure(dict(table, _white=np.asarray(white)), space, title)
     text = format_audit_csv(table)
-    savefig(fig, out / "audit.png", out / "audit.pdf")
+    savefig(fig, out / "audit.png", out / "audit.pdf", tag=display_tag(space))  # its swatches
     with atomic_write(out / "audit.csv") as tmp:
         Path(tmp).write_bytes(text.encode("utf-8"))
     return [out / "audit.csv", out / "audit.png", out / "audit.pdf"]

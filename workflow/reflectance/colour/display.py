@@ -33,7 +33,7 @@ References
 -   W3C CSS Color Module Level 4, §13.2 "CSS Gamut Mapping to an RGB Destination" (binary search
     with local MINDE, deltaEOK, JND 0.02).
 -   Schlick, C. (1994). An Inexpensive BRDF Model for Physically-based Rendering. CGF 13(3)
-    (:func:`fresnel_XYZ_rgb`, an RGB renderer's F per display channel).
+    (an RGB renderer's F per display channel: :func:`fresnel_XYZ_rgb` with it passed in).
 """
 
 from __future__ import annotations
@@ -686,16 +686,29 @@ def XYZ_to_display(
     return encode(gamut_clip(RGB, clip, space), space)
 
 
-def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB"):
-    """XYZ of F by a three-channel RGB renderer: F0 per display channel, Schlick per channel.
+def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB", *, fresnel):
+    """XYZ of F by a three-channel RGB renderer: F0 per display channel, ``fresnel`` per channel.
 
     What a renderer that stores a metal as an RGB "specular colour" does: the colour of the normal
     reflectance ``F0_XYZ`` in the linear display space ``space`` with the light's ``white`` at RGB
-    (1, 1, 1), clipped to [0, 1] per channel (as a base-colour texture is); then Schlick 1994 per
-    channel, ``F_c(c) = F0_c + (1 - F0_c)(1 - c)^5``, and back to XYZ. Schlick is linear in F0,
-    so a spectrally flat material gives exactly the spectral Schlick colour. (Here, beside the
-    display channels it is defined by; the renderer's table and the shortcut audit's ``rgb``
-    method both use it.)
+    (1, 1, 1), clipped to [0, 1] per channel (as a base-colour texture is); then
+    ``fresnel(cos_theta, F0_c)`` per channel, and back to XYZ. The renderer's table and the
+    shortcut audit's ``rgb`` method pass Schlick 1994
+    (:func:`reflectance.optics.fresnel.fresnel_Schlick1994`, ``F0_c + (1 - F0_c)(1 - c)^5``),
+    which is linear in F0, so a spectrally flat material gives exactly the spectral Schlick
+    colour. (The function is passed in because colour may not import optics: the layering of
+    tests/test_architecture.py.)
+
+    Parameters
+    ----------
+    F0_XYZ : array_like, shape (3,)
+    cos_theta : array_like
+        Cosines of the angle of incidence.
+    white : array_like, shape (3,)
+        XYZ of the light (RGB (1, 1, 1)).
+    space : str
+    fresnel : callable
+        ``fresnel(cos_theta, F0)`` -> F, broadcasting a column of cosines against the channels.
 
     Returns
     -------
@@ -703,8 +716,7 @@ def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB"):
     """
     c = np.asarray(cos_theta, dtype=np.float64).reshape(-1, 1)
     F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)
-    F = F0 + (1.0 - F0) * (1.0 - c) ** 5  # Schlick 1994, per display channel
-    return linear_RGB_to_XYZ(F, space, illuminant=white)
+    return linear_RGB_to_XYZ(np.asarray(fresnel(c, F0)), space, illuminant=white)
 
 
 #: The transfer of :func:`encode` as a PNG tag says it: sRGB's own chunk, or the power of the

@@ -28,6 +28,8 @@ _EXPORTS = {
     "write_exr_XYZ": "images",
     "write_exr_RGB": "images",
     "ColourTag": "images",
+    "SRGB_TAG": "images",
+    "tag_png": "images",
     "icc_profile_v2": "images",
     "read_exr": "images",
     "Progress": "progress",

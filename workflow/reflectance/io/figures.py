@@ -1,7 +1,8 @@
 """Deterministic figure output for matplotlib (2-D plots) and pyvista (3-D scenes).
 
 Same inputs give byte-identical PNG and PDF files: no creation dates, no software versions in
-the metadata, fixed DPI, and the file is written atomically.
+the metadata, fixed DPI, and the file is written atomically. Every PNG declares its colour space
+(sRGB unless the figure shows pixels encoded for another display: :func:`savefig`'s ``tag``).
 
 Every figure of the project shares one style, :data:`STYLE` (applied by :func:`new_figure`): text
 sized for a figure printed about 7 inches wide (the figures are drawn at that size, so 9-10 pt
@@ -128,12 +129,24 @@ def new_figure(width_in=7.0, height_in=4.0, **kwargs):
     return fig
 
 
-def savefig(fig, *paths, dpi=200, tight=True):
+def savefig(fig, *paths, dpi=200, tight=True, tag=None):
     """Save ``fig`` to each path (.png or .pdf) deterministically and atomically, then close it.
 
     ``tight`` crops the file to its content (a small margin); pass ``False`` for layouts placed
     to the pixel (rendered images at ``dpi`` pixels per inch).
+
+    A PNG carries its colour space (:func:`reflectance.io.images.tag_png`): ``tag``, a
+    :class:`reflectance.io.images.ColourTag`, or by default sRGB
+    (:data:`reflectance.io.images.SRGB_TAG`), the space matplotlib's colours are given in. A
+    figure that shows display-encoded pixels (renders, colour swatches) passes the display's tag
+    (:func:`reflectance.colour.display.display_tag`): its lines and text are then read in that
+    space too, which moves their greys slightly off sRGB's but shows the colours the figure is
+    about as computed.
     """
+    import io
+
+    from reflectance.io.images import SRGB_TAG, tag_png
+
     paths = [Path(p) for p in paths]
     for path in paths:
         if path.suffix.lower() not in _METADATA:
@@ -142,9 +155,14 @@ def savefig(fig, *paths, dpi=200, tight=True):
     try:
         for path in paths:
             suffix = path.suffix.lower()
+            buffer = io.BytesIO()
+            fig.savefig(buffer, dpi=dpi, metadata=_METADATA[suffix], format=suffix[1:],
+                        bbox_inches="tight" if tight else None)
+            data = buffer.getvalue()
+            if suffix == ".png":
+                data = tag_png(data, SRGB_TAG if tag is None else tag)
             with atomic_write(path) as tmp:
-                fig.savefig(tmp, dpi=dpi, metadata=_METADATA[suffix], format=suffix[1:],
-                            bbox_inches="tight" if tight else None)
+                Path(tmp).write_bytes(data)
     finally:
         plt.close(fig)
 
@@ -162,10 +180,12 @@ def off_screen_plotter(width, height, shape=(1, 1)):
                       shape=tuple(int(n) for n in shape), border=False)
 
 
-def save_plotter(plotter, path):
-    """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer)."""
-    from reflectance.io.images import write_png
+def save_plotter(plotter, path, tag=None):
+    """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer),
+    tagged with ``tag`` (a :class:`reflectance.io.images.ColourTag`), by default sRGB: VTK's
+    colours are sRGB values, written to the screen as they are."""
+    from reflectance.io.images import SRGB_TAG, write_png
 
     img = plotter.screenshot(return_img=True)
     plotter.close()
-    write_png(path, img[..., :3] / 255.0, bit_depth=8)
+    write_png(path, img[..., :3] / 255.0, bit_depth=8, tag=SRGB_TAG if tag is None else tag)

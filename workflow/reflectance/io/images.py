@@ -52,8 +52,10 @@ from reflectance.io.atomic import atomic_write
 __all__ = [
     "PNG_BIT_DEPTHS",
     "ColourTag",
+    "SRGB_TAG",
     "icc_profile_v2",
     "write_png",
+    "tag_png",
     "XYZ_CHROMATICITIES",
     "write_exr_XYZ",
     "write_exr_RGB",
@@ -118,6 +120,10 @@ class ColourTag:
     whitepoint: tuple
     transfer: object
 
+
+SRGB_TAG = ColourTag("sRGB", ((0.64, 0.33), (0.30, 0.60), (0.15, 0.06)), (0.3127, 0.3290), "sRGB")
+"""The sRGB display (IEC 61966-2-1:1999 §5.1: its primaries and D65 white), the colour space
+of whatever matplotlib and VTK draw: their colours are sRGB values, written as they are."""
 
 # ICC.1:2001-04 §6.1: the PCS illuminant D50 as stored in every profile (s15Fixed16 of these).
 _ICC_D50 = (0.9642, 1.0, 0.8249)
@@ -283,6 +289,46 @@ def write_png(path, rgb01, bit_depth=8, tag=None):
     )
     with atomic_write(path) as tmp:
         Path(tmp).write_bytes(data)
+
+
+_PNG_COLOUR_CHUNK_TYPES = (b"cHRM", b"gAMA", b"iCCP", b"sRGB", b"cICP")
+
+
+def tag_png(data, tag):
+    """The PNG ``data`` (bytes) with the colour chunks of ``tag`` added: the same cHRM, gAMA and
+    sRGB or iCCP chunks :func:`write_png` writes, placed right after IHDR (PNG specification
+    §5.6: before PLTE and IDAT). The pixels and every other chunk are kept byte for byte, so
+    identical input gives identical bytes. This tags a PNG another encoder made (matplotlib's,
+    through Pillow) without decoding it.
+
+    Raises
+    ------
+    ValueError
+        If ``data`` is not a PNG starting with IHDR, or already declares a colour space (a cHRM,
+        gAMA, iCCP, sRGB or cICP chunk: a second declaration would contradict the first).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "grey.png"
+    >>> write_png(path, np.full((2, 3), 0.5))
+    >>> tagged = tag_png(path.read_bytes(), SRGB_TAG)
+    >>> b"sRGB" in tagged, tagged[:8] == _PNG_SIGNATURE
+    (True, True)
+    """
+    data = bytes(data)
+    if data[:8] != _PNG_SIGNATURE or data[12:16] != b"IHDR":
+        raise ValueError("data: not a PNG file (no signature and IHDR chunk)")
+    position = 8
+    while position + 8 <= len(data):  # walk the chunk list (§5.3: length, type, data, CRC)
+        (length,) = struct.unpack(">I", data[position:position + 4])
+        kind = data[position + 4:position + 8]
+        if kind in _PNG_COLOUR_CHUNK_TYPES:
+            raise ValueError(f"data: the PNG already declares its colour space ({kind.decode()} "
+                             f"chunk)")
+        position += 12 + length
+    end_of_IHDR = 8 + 12 + struct.unpack(">I", data[8:12])[0]
+    return data[:end_of_IHDR] + _png_colour_chunks(tag) + data[end_of_IHDR:]
 
 
 def _attribute_text(key, value):

@@ -46,7 +46,7 @@ import numpy as np
 from reflectance.optics.brdf import (brdf_BlinnPhong1977, brdf_CookTorrance1982, brdf_Lambert,
                               brdf_Phong1975, brdf_TorranceSparrow_Blinn1977)
 from reflectance.colour.colorimetry import OBSERVER_DEFAULT, cmfs, tristimulus_weights, white_XYZ
-from reflectance.optics.fresnel import fresnel
+from reflectance.optics.fresnel import fresnel, fresnel_Schlick1994
 from reflectance.optics.microfacet import ROUGHNESS_PARAMETERS, c3_texture_Blinn1977
 from reflectance.geometry.texture import texture
 from reflectance.render.lights import DirectionalLight, PointLight, light_vectors
@@ -445,7 +445,7 @@ def fresnel_XYZ_table_rgb(material, W, size=1025, space="sRGB"):
     if not SHADING_MODELS[material.model]["fresnel"] or material.n is None:
         return np.broadcast_to(white, (len(c), 3)).copy()
     F0_XYZ = fresnel(np.ones(1), material.n, material.k, method="exact") @ W
-    return fresnel_XYZ_rgb(F0_XYZ, c, white, space)
+    return fresnel_XYZ_rgb(F0_XYZ, c, white, space, fresnel=fresnel_Schlick1994)
 
 
 def lookup_table(table, c):
