@@ -120,7 +120,8 @@ def read_config(path="config.yaml"):
 
 @functools.lru_cache(maxsize=4)
 def _schema(path):
-    return yaml.safe_load(Path(path).read_text())
+    # our own schema: libyaml's safe loader where PyYAML has it (the same data, 5x faster)
+    return yaml.load(Path(path).read_text(), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
 
 
 def _watch_keywords(config, path):

@@ -160,7 +160,7 @@ rule blinn77_fig7:
         "benchmarks/blinn_1977/fig7.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 634 MB
+        mem_mb=1500,  # script peak 709 MB (three shared traces held)
         runtime=15,  # measured 242 s
     params:
         fig=B77_FIG7,

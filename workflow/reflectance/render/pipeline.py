@@ -25,6 +25,7 @@ same scene gives byte-identical files.
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import json
 import time
 from dataclasses import dataclass, field
@@ -44,6 +45,7 @@ __all__ = [
     "COMPONENTS",
     "RenderResult",
     "trace",
+    "trace_key",
     "tiles",
     "SINGLE_TILE_SAMPLES",
     "TILE_SAMPLES",
@@ -180,7 +182,27 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False, fre
     return (XYZ, parts) if components else XYZ
 
 
-def render(scene, spectral=None, components=False, fresnel_table=None, progress=None):
+def trace_key(scene, rows=None):
+    """What :func:`trace` depends on, as a SHA-256 hex digest: the composed mesh (points, faces,
+    every point and cell array), the camera, the lights' directions or positions, whether shadows
+    are cast, and the band of rows. Two scenes with the same key are traced identically (the
+    trace never looks at materials, spectra, intensities or the ambient term)."""
+    digest = hashlib.sha256()
+    mesh = scene.mesh
+    arrays = [("points", mesh.points), ("faces", mesh.faces)]
+    arrays += [(f"point_data.{name}", mesh.point_data[name]) for name in sorted(mesh.point_data)]
+    arrays += [(f"cell_data.{name}", mesh.cell_data[name]) for name in sorted(mesh.cell_data)]
+    for name, array in arrays:
+        array = np.ascontiguousarray(array)
+        digest.update(f"{name} {array.dtype.str} {array.shape}\n".encode())
+        digest.update(array.tobytes())
+    digest.update(repr((scene.camera, [light.source for light in scene.lights], bool(scene.shadows),
+                        rows)).encode())
+    return digest.hexdigest()
+
+
+def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
+           traced=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -196,6 +218,11 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     progress : callable, optional
         Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
         starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
+    traced : dict, optional
+        A cache the caller keeps across renders of scenes that differ only in what :func:`trace`
+        does not look at (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7
+        vases): an image traced in one band is looked up by :func:`trace_key` and traced once;
+        the result is the same, bit for bit. Images of several bands are not kept (memory).
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
@@ -203,15 +230,24 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     t0 = time.perf_counter()
     camera, n_ss = scene.camera, scene.camera.supersample
     bands = tiles(camera)
-    primitives = Primitives(scene.mesh)
+    primitives = None  # built on the first band that is traced (not for a cached trace)
+    keep = traced is not None and len(bands) == 1
     image = np.zeros((camera.height, camera.width, 3))
     parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
     timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
     count = _Counts(len(scene.lights), len(scene.objects))
     for start, stop in bands:
         where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
-        samples, shadowed, t = trace(scene, (start, stop), primitives,
-                                     progress and (lambda phase: progress(where + phase)))
+        key = trace_key(scene, (start, stop)) if keep else None
+        if key is not None and key in traced:
+            samples, shadowed = traced[key]
+            t = {"visibility": 0.0, "shadows": 0.0}
+        else:
+            primitives = Primitives(scene.mesh) if primitives is None else primitives
+            samples, shadowed, t = trace(scene, (start, stop), primitives,
+                                         progress and (lambda phase: progress(where + phase)))
+            if key is not None:
+                traced[key] = (samples, shadowed)
         t1 = time.perf_counter()
         (progress or _silent)(where + "shading")
         shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
@@ -483,16 +519,16 @@ def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
 
 
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
-                    rgb_exr_path=None):
+                    rgb_exr_path=None, traced=None):
     """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
     the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
-    rendered again alone with ``reflectance render``.
+    rendered again alone with ``reflectance render``. ``traced``: as in :func:`render`.
     """
     from reflectance.render.scene import write_scene_file
 
     write_scene_file(scene, scene_path)
-    result = render(scene, components=components)
+    result = render(scene, components=components, traced=traced)
     write_render(result, exr_path, png_path, rgb_exr_path)
     return result

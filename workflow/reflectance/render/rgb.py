@@ -24,7 +24,7 @@ import numpy as np
 __all__ = ["render_spectral_and_rgb", "display_exposure", "dE2000_map", "dE2000_statistics"]
 
 
-def render_spectral_and_rgb(scene, space="sRGB"):
+def render_spectral_and_rgb(scene, space="sRGB", traced=None):
     """(spectral XYZ image, RGB-renderer XYZ image) of ``scene``, one visibility pass for both.
 
     Parameters
@@ -33,11 +33,20 @@ def render_spectral_and_rgb(scene, space="sRGB"):
         Shaded with ``spectral="table"`` (the RGB renderer replaces the Fresnel table only).
     space : str
         Display space of the RGB renderer's channels (:data:`reflectance.colour.display.DISPLAY_SPACES`).
+    traced : dict, optional
+        A cache of traces kept across scenes that differ only in materials, as in
+        :func:`reflectance.render.pipeline.render`.
     """
-    from reflectance.render.pipeline import shade_samples, trace
+    from reflectance.render.pipeline import shade_samples, trace, trace_key
     from reflectance.render.shading import fresnel_XYZ_table_rgb
 
-    samples, shadowed, _ = trace(scene)
+    key = trace_key(scene) if traced is not None else None
+    if key is not None and key in traced:
+        samples, shadowed = traced[key]
+    else:
+        samples, shadowed, _ = trace(scene)
+        if key is not None:
+            traced[key] = (samples, shadowed)
     images = []
     for table in (None, functools.partial(fresnel_XYZ_table_rgb, space=space)):
         images.append(samples.to_pixels(

@@ -84,7 +84,8 @@ def _validator():
     """The schema's validator (that fills in defaults), read once per process."""
     import jsonschema
 
-    schema = yaml.safe_load(SCENE_SCHEMA_PATH.read_text())
+    schema = yaml.load(SCENE_SCHEMA_PATH.read_text(),  # libyaml's safe loader where available
+                       Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     return _with_defaults(jsonschema.Draft202012Validator)(schema)
 
 
@@ -382,8 +383,27 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
                                 else m.get("diffuse_material", "")))
 
 
+#: Meshes built in this process, by their geometry keys (JSON): a figure that renders many scenes
+#: of one object (Cook & Torrance's thirteen Fig. 7 vases) builds it once. Each scene gets a deep
+#: copy; meshes read from files are not kept (the file may change).
+_BUILT = {}
+_BUILT_MAX = 4
+
+
+def _build_geometry(g, base):
+    if g["type"] == "mesh":
+        return GEOMETRY_BUILDERS["mesh"](g, base)
+    key = json.dumps(g, sort_keys=True, default=str)
+    if key not in _BUILT:
+        mesh = GEOMETRY_BUILDERS[g["type"]](g, base)
+        if len(_BUILT) >= _BUILT_MAX:
+            _BUILT.pop(next(iter(_BUILT)))
+        _BUILT[key] = mesh
+    return _BUILT[key].copy(deep=True)
+
+
 def _geometry(check, path, g, transform, base):
-    mesh = check.run(path + ["geometry"], GEOMETRY_BUILDERS[g["type"]], g, base)
+    mesh = check.run(path + ["geometry"], _build_geometry, g, base)
     if mesh is None or transform is None:
         return mesh
     return check.run(path + ["transform"], place, mesh, transform["offset"], transform["scale"],
