@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Arc, Polygon
 
-from reflectance.io.figures import TEXT_SIZE
+from reflectance.io.figures import TEXT_SIZE, text_colour
 
 __all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle", "draw_dimension"]
 
@@ -32,7 +32,8 @@ def draw_arrow(ax, start, vector, label=None, color="k", **kwargs):
                                 **kwargs))
     if label:
         tip = start + vector * (1 + 0.14 / max(np.linalg.norm(vector), 1e-9))
-        ax.text(*tip, label, color=color, ha="center", va="center", fontsize=TEXT_SIZE["symbol"], zorder=6,
+        ax.text(*tip, label, color=text_colour(color), ha="center", va="center",
+                fontsize=TEXT_SIZE["symbol"], zorder=6,
                 bbox=dict(facecolor="white", edgecolor="none", alpha=0.85, pad=0.6))
 
 
@@ -44,7 +45,8 @@ def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_
     ax.add_patch(Arc(vertex, 2 * radius, 2 * radius, theta1=a1, theta2=a2, color=color, lw=1.1))
     mid = np.radians(a1 + ((a2 - a1) % 360) / 2)
     ax.text(*(np.asarray(vertex) + label_radius * radius * np.array([np.cos(mid), np.sin(mid)])),
-            label, ha="center", va="center", fontsize=fontsize or TEXT_SIZE["symbol"], color=color)
+            label, ha="center", va="center", fontsize=fontsize or TEXT_SIZE["symbol"],
+            color=text_colour(color))
 
 
 def draw_dimension(ax, P0, P1, offset, label, color="k"):
@@ -144,7 +146,8 @@ def draw_top_view(ax, sim, L, E, H):
         if label != "H":
             ax.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
             ax.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
-            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=TEXT_SIZE["symbol"],
+            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=text_colour(c),
+                    fontsize=TEXT_SIZE["symbol"],
                     ha="center", va="bottom" if top[1] < 0 else "top")
     for u, label in ((-1, "A"), (0, "B"), (1, "C")):
         ax.text(u, 1.06, label, ha="center", va="top", fontsize=TEXT_SIZE["symbol"],
