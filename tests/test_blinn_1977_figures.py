@@ -152,6 +152,14 @@ def test_fig5_6_numbers(tmp, fig):
         mgo = summary[summary.n == 1.8].iloc[0]
         assert abs(mgo.peak_ratio_ts_to_matched - 1) < 0.05
         assert 1 / mgo.peak_ratio_ts_to_as_printed == pytest.approx(2.69, abs=0.02)
+    # Issue 13 (style): drawn at the print width, so its text prints at its point size: printed
+    # PRINT_WIDTH_IN wide, the PNG (pixels / dpi) shrinks nothing below 0.95 of it.
+    from PIL import Image
+
+    from reflectance.io.figures import PRINT_WIDTH_IN
+
+    with Image.open(out["png"]) as png:
+        assert PRINT_WIDTH_IN / (png.size[0] / png.info["dpi"][0]) >= 0.95
 
 
 def test_distribution_numbers(tmp):

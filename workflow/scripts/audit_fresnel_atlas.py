@@ -10,7 +10,7 @@ from matplotlib.colors import BoundaryNorm
 from reflectance.audit.shortcuts import AUDIT_METHODS, dE2000_against_angle, first_angle_above
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material, wavelength_grid
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -40,28 +40,29 @@ with script_log(snakemake) as log:
                           for i, name in enumerate(metals) for j, method in enumerate(methods)])
     first.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(11.0, 6.4)
+    # drawn at the print width, so its text prints at the figures' sizes
+    fig = new_figure(PRINT_WIDTH_IN, 5.6)
     axes = fig.subplots(2, 3, sharex=True, sharey=True,
-                        gridspec_kw={"left": 0.1, "right": 0.9, "top": 0.9, "bottom": 0.09,
-                                     "hspace": 0.22, "wspace": 0.06})
+                        gridspec_kw={"left": 0.15, "right": 0.86, "top": 0.85, "bottom": 0.09,
+                                     "hspace": 0.2, "wspace": 0.16})
     norm = BoundaryNorm(BOUNDS, 256, extend="max")
     step = cfg["angle_step_deg"]
     for j, (ax, method) in enumerate(zip(axes.flat, methods)):
         image = ax.imshow(dE[:, j, :], aspect="auto", cmap="magma_r", norm=norm,
                           extent=(-step / 2, angles[-1] + step / 2, len(metals) - 0.5, -0.5),
                           interpolation="nearest")
-        ax.set_title(method, fontsize=10)
-        ax.set_yticks(range(len(metals)), metals, fontsize=8)
-        ax.set_xticks(np.arange(0, 91, 15))
+        ax.set_title(method)
+        ax.set_yticks(range(len(metals)), metals, fontsize=TEXT_SIZE["table"])
+        ax.set_xticks(np.arange(0, 91, 30))
         if j >= 3:
-            ax.set_xlabel("incidence angle \u03b8 (degrees)")
+            ax.set_xlabel("incidence \u03b8 (\u00b0)")
     for ax in axes.flat[len(methods):]:
         ax.set_visible(False)
-    bar = fig.colorbar(image, ax=axes, fraction=0.025, pad=0.02, ticks=BOUNDS)
+    bar = fig.colorbar(image, ax=axes, fraction=0.04, pad=0.03, ticks=BOUNDS)
     bar.set_label("CIEDE2000 against exact")
-    fig.suptitle(f"Fresnel shortcut atlas: colour error of each shortcut against the exact "
+    fig.suptitle(f"Fresnel shortcut atlas: colour error of each shortcut against\nthe exact "
                  f"spectral Fresnel colour ({colour_cfg['illuminant']}, smooth metal)",
-                 fontsize=11)
+                 linespacing=1.3, y=0.995, va="top")
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
 
     lo, hi = f"first_deg_above_{levels[0]:g}", f"first_deg_above_{levels[-1]:g}"

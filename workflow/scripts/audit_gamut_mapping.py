@@ -13,7 +13,7 @@ from reflectance.audit.gamut import clip_differences, exr_display_RGB, out_of_ga
 from reflectance.audit.shortcuts import CAM16_VIEWING_CONDITIONS
 from reflectance.colour.display import display_space
 from reflectance.io.atomic import atomic_write
-from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.io.images import read_exr
 from reflectance.io.tables import write_csv
 from reflectance.scripting import script_log
@@ -70,15 +70,17 @@ with script_log(snakemake) as log:
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     images.pipe(write_csv, snakemake.output.images, float_format="%.6g")
 
-    fig = new_figure(10.0, 4.6)
-    ax = fig.add_axes((0.06, 0.11, 0.4, 0.8))
+    # drawn at the print width, so its text prints at the figures' sizes
+    fig = new_figure(PRINT_WIDTH_IN, 4.3)
+    ax = fig.add_axes((0.08, 0.1, 0.42, 0.82))
     cmfs = colour.MSDS_CMFS[snakemake.params.observer]
     locus = colour.XYZ_to_xy(cmfs.values)
     ax.plot(*np.vstack([locus, locus[:1]]).T, color="0.3", linewidth=0.8)
     ds = display_space(space)
     primaries = colour.XYZ_to_xy(ds.matrix_RGB_to_XYZ.T)
     ax.plot(*np.vstack([primaries, primaries[:1]]).T, color="black", linewidth=1.0)
-    ax.text(*primaries[1] + [0.01, 0.0], f"{space} gamut", fontsize=7)
+    ax.text(*primaries[1] + [-0.015, 0.0], f"{space} gamut", fontsize=TEXT_SIZE["annotation"],
+            ha="right")  # inside the locus, clear of it
     cloud = np.concatenate(clouds)
     ax.scatter(*cloud[::max(1, len(cloud) // 4000)].T, s=4, color="0.6", lw=0,
                label="out-of-gamut pixels (unclipped)")
@@ -92,24 +94,25 @@ with script_log(snakemake) as log:
         ax.plot(*start, "o", color="black", markersize=3)
     for method in methods:
         ax.plot([], [], color=style[method], label=f"clip: {method}")
-    ax.set_xlim(0.0, 0.75), ax.set_ylim(0.0, 0.85)
+    ax.set_xlim(0.0, 0.75), ax.set_ylim(0.0, 1.08)  # the legend above the locus
+    ax.set_yticks(np.arange(0.0, 0.81, 0.2)), ax.set_xticks(np.arange(0.0, 0.71, 0.2))
     ax.set_aspect("equal")
     ax.set_xlabel("x"), ax.set_ylabel("y")
-    ax.legend(fontsize=7, loc="upper right")
-    ax.set_title("CIE 1931 xy: clipping paths (dots: unclipped)", fontsize=9)
+    ax.legend(fontsize=TEXT_SIZE["table"], loc="upper right", handlelength=1.2)
+    ax.set_title("CIE 1931 xy: clipping paths\n(black dots: unclipped)", fontsize=TEXT_SIZE["symbol"])
 
     names = list(figures)
-    bx = fig.add_axes((0.56, 0.62, 0.42, 0.3))
+    bx = fig.add_axes((0.62, 0.64, 0.37, 0.28))
     fraction = table.drop_duplicates("figure").set_index("figure").loc[names, "fraction"]
     bx.bar(range(len(names)), 100 * fraction, color="0.5")
     for i, f in enumerate(fraction):
         text = f"{100 * f:.1f} %" if f == 0 or f >= 0.0005 else "< 0.1 %"
-        bx.text(i, 100 * f, text, ha="center", va="bottom", fontsize=7)
+        bx.text(i, 100 * f, text, ha="center", va="bottom", fontsize=TEXT_SIZE["table"])
     bx.set_xticks(range(len(names)), [])
-    bx.set_ylabel("object pixels out\nof gamut (%)", fontsize=8)
+    bx.set_ylabel("object pixels\nout of gamut (%)", fontsize=TEXT_SIZE["annotation"])
     bx.set_ylim(0, max(5.0, 115 * fraction.max()))
     bx.spines[["top", "right"]].set_visible(False)
-    cx = fig.add_axes((0.56, 0.2, 0.42, 0.38))
+    cx = fig.add_axes((0.62, 0.2, 0.37, 0.4))
     width = 0.8 / len(methods)
     for j, method in enumerate(methods):
         part = table[table.method == method].set_index("figure").loc[names]
@@ -117,9 +120,14 @@ with script_log(snakemake) as log:
         cx.bar(x, part.dE2000_mean, width, color=style[method], label=f"{method} (mean)")
         cx.plot(x, part[f"dE2000_p{q:g}"], "_", color="black", markersize=6)
     cx.plot([], [], "_", color="black", label=f"{q:g}th percentile")
-    cx.set_xticks(range(len(names)), [n.replace(" Fig.", "\nFig.") for n in names], fontsize=7)
-    cx.set_ylabel("CIEDE2000 vs unclipped\n(out-of-gamut pixels)", fontsize=8)
-    cx.legend(fontsize=7, frameon=False)
+    short = [n.replace(" 1982", "").replace(" 1977", "") for n in names]  # the paper's year: caption
+    cx.set_xticks(range(len(names)), [n.replace(" Fig.", "\nFig.") if " Fig." in n
+                                      else n.replace(" ", "\n", 1) for n in short],
+                  fontsize=TEXT_SIZE["table"])
+    cx.set_ylabel("CIEDE2000 vs unclipped\n(out-of-gamut pixels)", fontsize=TEXT_SIZE["annotation"])
+    top = np.nanmax(table[f"dE2000_p{q:g}"].to_numpy(float), initial=1.0)
+    cx.set_ylim(0, 1.7 * top)  # head room for the legend above the bars
+    cx.legend(fontsize=TEXT_SIZE["table"], frameon=False, handlelength=1.2, loc="upper right")
     cx.spines[["top", "right"]].set_visible(False)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
 

@@ -10,7 +10,7 @@ import pandas as pd
 from reflectance.audit.colour_shift import reflected_XYZ
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import material_from_table, reflectance_from_munsell, wavelength_grid
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -42,10 +42,10 @@ with script_log(snakemake) as log:
     table = pd.DataFrame(rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(9.0, 3.0)
+    fig = new_figure(PRINT_WIDTH_IN, 3.0)  # the print width: its text prints at the figures' sizes
     axes = fig.subplots(1, len(spectra), sharey=True,
-                        gridspec_kw={"left": 0.07, "right": 0.99, "top": 0.76, "bottom": 0.17,
-                                     "wspace": 0.08})
+                        gridspec_kw={"left": 0.08, "right": 0.99, "top": 0.77, "bottom": 0.15,
+                                     "wspace": 0.1})
     styles = dict(zip(cfg["methods"], ["-", "--", ":", "-."]))
     for ax, (name, (own, tables)) in zip(np.atleast_1d(axes), spectra.items()):
         for method, t in tables.items():
@@ -54,15 +54,14 @@ with script_log(snakemake) as log:
                     label=f"{method}{' (used)' if method == own else ''}")
         worst = table[(table.material == name)].dE2000_vs_own.max()
         ax.set_title(f"{name} ({entries[name]['notation']})\nlargest \u0394E00 {worst:.2f}",
-                     fontsize=8)
-        ax.set_xlabel("wavelength (nm)", fontsize=8)
-        ax.set_xticks([400, 500, 600, 700, 800])
-        ax.tick_params(labelsize=7)
+                     fontsize=TEXT_SIZE["annotation"])
+        ax.set_xlabel("wavelength (nm)")
+        ax.set_xticks([400, 600, 800])
         ax.spines[["top", "right"]].set_visible(False)
-    np.atleast_1d(axes)[0].set_ylabel("reflectance", fontsize=8)
-    np.atleast_1d(axes)[0].legend(fontsize=6, frameon=False)
+    np.atleast_1d(axes)[0].set_ylabel("reflectance")
+    np.atleast_1d(axes)[0].legend(fontsize=TEXT_SIZE["table"], frameon=False, handlelength=1.5)
     fig.suptitle("Table I's derived materials: the same Munsell colour recovered three ways",
-                 fontsize=10)
+                 y=0.99, va="top")
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
 
     w = table.loc[table.dE2000_vs_own.idxmax()]

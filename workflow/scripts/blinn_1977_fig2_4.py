@@ -73,13 +73,15 @@ with script_log(snakemake) as log:
     ax4.text(*(g.P + [-0.09, 0.07]), "P", ha="center", va="center", fontsize=TEXT_SIZE["symbol"])
     draw_arrow(ax4, g.P, 0.45 * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
     draw_arrow(ax4, g.P, 0.45 * sim.H2, "H", "k")
-    draw_arrow(ax4, g.P, 0.55 * V2, f"{V}'", COLOURS[colour])
+    draw_arrow(ax4, g.P, 0.55 * V2, f"{V}'", COLOURS[colour], label_offset=(0.0, 0.08))  # off line PC
     up = np.array([0.0, 1.0])
     for vertex, u, v, radius, label in (
             (g.P, up, sim.H2, 0.3, "a"), (g.P, sim.H2, V2, 0.22, "e"), (g.P, g.B - g.P, V2, 0.14, "b"),
             (g.B, g.A - g.B, g.C - g.B, 0.08, "c"), (g.B, up, g.C - g.B, 0.22, "d"),
             (g.C, g.B - g.C, g.P - g.C, 0.35, "f")):
-        draw_angle(ax4, vertex, u, v, radius, label, label_radius={"b": 1.9, "c": 1.7}.get(label, 1.45))
+        # c's bisector is the dashed vertical through B (c = 2d): its label sits off it, towards BA
+        draw_angle(ax4, vertex, u, v, radius, label, label_radius={"b": 1.9, "c": 2.0}.get(label, 1.45),
+                   label_at=0.3 if label == "c" else 0.5)
     side = np.array([np.sin(sim.alpha), -np.cos(sim.alpha)]) * 0.16  # outside BC
     draw_dimension(ax4, g.B, g.C, side, "l")
     draw_dimension(ax4, g.P, g.B, -sim.H2 * 0.16, "m")

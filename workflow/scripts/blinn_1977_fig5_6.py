@@ -9,7 +9,7 @@ from matplotlib.ticker import MaxNLocator
 
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
-from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.polar import intensity_in_plane_of_incidence
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -26,7 +26,8 @@ with script_log(snakemake) as log:
     # n_directions from -90 to 90 degrees inclusive; the two horizon samples (i = 0) are dropped
     theta_r = np.radians(np.linspace(-90.0, 90.0, cfg["n_directions"])[1:-1])
     sets = cfg["parameter_sets"]
-    fig = new_figure(10.0, 0.55 + 2.45 * len(sets))
+    # drawn at the print width (its text prints at the figures' sizes); each row's parameters over it
+    fig = new_figure(PRINT_WIDTH_IN, 1.15 + 2.35 * len(sets))
     axes = np.atleast_2d(fig.subplots(len(sets), 3, gridspec_kw={"width_ratios": [1, 1, 0.82]}))
     curves, summary = [], []
     for row_axes, s in zip(axes, sets):
@@ -67,7 +68,8 @@ with script_log(snakemake) as log:
             arc = np.linspace(0, np.pi, 181)
             for t in ticks:
                 ax.plot(t * np.cos(arc), t * np.sin(arc), color="0.88", lw=0.6, zorder=0)
-                ax.text(t, -0.012 * R, f"{t:g}", ha="center", va="top", fontsize=7.5, color="0.35")
+                ax.text(t, -0.012 * R, f"{t:g}", ha="center", va="top", fontsize=TEXT_SIZE["table"],
+                        color="0.35")
             for key in keys:  # Blinn's light from the right: the plane seen from behind (x -> -x)
                 label, colour, style = CURVES[key]
                 ax.plot(-values[key] * np.sin(theta_r), values[key] * np.cos(theta_r), color=colour,
@@ -87,26 +89,32 @@ with script_log(snakemake) as log:
             cart.plot(tr_deg, values[key], color=colour, ls=style, lw=1.6 if style == "-" else 1.2,
                       label=label)
         cart.axvline(np.degrees(theta_i), color="0.5", lw=0.8, ls=(0, (3, 2)))
-        cart.text(np.degrees(theta_i), 1.0, " mirror", transform=cart.get_xaxis_transform(),
-                  fontsize=7.5, color="0.35", va="top", ha="left")
-        cart.set(xlim=(-90, 90), ylim=(0, 1.05 * R), xticks=np.arange(-90, 91, 30),
-                 xlabel="viewing angle \u03b8 from N (\u00b0; + mirror side)", ylabel="intensity i")
+        right = np.degrees(theta_i) > 45  # the word beside the line, inside the axes
+        cart.text(np.degrees(theta_i), 1.0, "mirror " if right else " mirror",
+                  transform=cart.get_xaxis_transform(), fontsize=TEXT_SIZE["annotation"],
+                  color="0.35", va="top", ha="right" if right else "left")
+        cart.set(xlim=(-90, 90), ylim=(0, 1.05 * R), xticks=np.arange(-90, 91, 45),
+                 xlabel="\u03b8 from N (\u00b0; + mirror side)", ylabel="intensity i")
         cart.grid(True)
         cart.set_title("the same, i(\u03b8)", pad=2)
-        row_axes[0].text(-0.04, 0.5, f"{s['label']}\np_s = {s['p_s']:g}, p_d = {s['p_d']:g}\n"
-                         f"n = {s['n']:g}, F(0) = {F0:.3g}\nc\u2083 = {s['c3']:g}, "
-                         f"\u03b2 = {np.degrees(beta):.1f}\u00b0\nc\u2081 = {c1:.2f}",
-                         transform=row_axes[0].transAxes, ha="right", va="center", fontsize=8.5)
+        row_axes[0].text(0.0, 1.36, f"{s['label']}: p_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
+                         f"n = {s['n']:g}, F(0) = {F0:.3g}, c\u2083 = {s['c3']:g}, "
+                         f"\u03b2 = {np.degrees(beta):.1f}\u00b0, c\u2081 = {c1:.2f}",
+                         transform=row_axes[0].transAxes, ha="left", va="bottom",
+                         fontsize=TEXT_SIZE["annotation"] + 0.5)
         for ax, key in ((row_axes[0], "phong_matched"), (row_axes[1], "torrance_sparrow")):
             ax.text(0.5, -0.02, f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
-                    transform=ax.transAxes, ha="center", va="top", fontsize=8, color=CURVES[key][1])
+                    transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"],
+                    color=CURVES[key][1])
         log.info("%s: %s", s["label"], ", ".join(f"{k} = {v:.6g}" for k, v in row.items()
                                                    if not isinstance(v, str)))
-    fig.suptitle(f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection, light at "
-                 f"{np.degrees(theta_i):g}\u00b0 from the normal, from the right", y=0.995)
-    fig.legend(*axes[0, 2].get_legend_handles_labels(), loc="upper center", ncol=3,
-               bbox_to_anchor=(0.5, 0.955), fontsize=8.5)
-    fig.subplots_adjust(left=0.13, right=0.995, top=0.86, bottom=0.1, wspace=0.22, hspace=0.42)
+    fig.suptitle(f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\nlight at "
+                 f"{np.degrees(theta_i):g}\u00b0 from the normal, from the right", y=0.998, va="top",
+                 linespacing=1.3)
+    fig.legend(*axes[0, 2].get_legend_handles_labels(), loc="upper center", ncol=2,
+               bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
+    fig.subplots_adjust(left=0.01, right=0.99, top=1 - 1.5 / fig.get_figheight(), bottom=0.08,
+                        wspace=0.3, hspace=0.75)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 from reflectance.colour.display import display_tag, encode
 
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
@@ -71,23 +71,33 @@ with script_log(snakemake) as log:
     zoom = fig_cfg["camera"]["fov_deg"] / fig_cfg["rim_closeup"]["fov_deg"]
     rim_scale = max(rim.max() for rim in rims.values())  # one grey scale for every close-up
 
-    h, wd = (n / 100 for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches at 100 dpi
-    gap, block, top, row_h = 0.05, 0.35, 0.7, h + 0.5  # row: title, image, difference line
-    plot_w = 3.3  # the mirror-point highlight against the light angle, beside the renders
-    W, H = 4 * wd + 3 * gap + block + 0.1 + plot_w + 0.75, top + 2 * row_h + 0.05
+    # Drawn at the print width (PRINT_WIDTH_IN), so its text prints at the figures' sizes: the four
+    # renders of a row side by side, pixel for pixel at DPI, the light-angle plot under them.
+    T = TEXT_SIZE
+    DPI = 230
+    h, wd = (n / DPI for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches
+    gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
+    W = 4 * wd + 2 * gap + block + 0.12
+    top, heads, foot = 0.5, 0.7, 0.24  # suptitle; panel title and column names; difference line
+    plot_h, plot_foot = 1.9, 0.5
+    H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
     sweep = np.linspace(90.0, 178.0, 881)
+    lights = fig_cfg["lights"]
     for reading, png in zip(fig_cfg["phong_specular_readings"], out.figures):
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
-            x0 = 0.05 + k * (2 * wd + gap + block)
+            x0 = 0.06 + k * (2 * wd + gap + block)
             for j, light in enumerate(("edge", "front")):
-                y0 = H - top - (j + 1) * row_h + 0.3  # bottom of the image
+                y0 = H - top - heads - j * (h + foot) - h  # bottom of the image
                 for i, model in enumerate(MODELS):
                     key = (f"{panel}_{model}_{light}" + (f"_{reading}" if model == "phong" else ""))
                     ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
                     ax.imshow(images[key], interpolation="nearest")
                     ax.set_xticks([]), ax.set_yticks([])
-                    ax.set_title(f"{MODELS[model]}, {light} lit", fontsize=9, pad=3)
+                    if j == 0:
+                        ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
+                    ax.text(0.03, 0.95, f"{light} lit", transform=ax.transAxes, color="white",
+                            fontsize=T["annotation"], va="top")
                     if light == "edge":
                         grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
                         rh, rw = rims[key].shape
@@ -97,43 +107,41 @@ with script_log(snakemake) as log:
                         inset.set_xticks([]), inset.set_yticks([])
                         for side in inset.spines.values():
                             side.set(color="#e69f00", lw=0.8, visible=True)
-                        inset.text(0.01, 0.03, f"rim close up \u00d7{zoom:.0f}, white = i "
-                                   f"{rim_scale:.1f}",
-                                   transform=inset.transAxes, color="#e69f00", fontsize=7.5,
-                                   va="bottom")
+                        inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}", transform=inset.transAxes,
+                                   color="#e69f00", fontsize=T["annotation"], va="bottom")
                 row = table[(table.panel == panel) & (table.phong_specular == reading)
                             & (table.light == light)].iloc[0]
-                fig.text((x0 + wd + gap / 2) / W, (y0 - 0.06) / H,
-                         f"max |i_Phong \u2212 i_T-S| = {row.max_abs_difference:.3f}   (max i: Phong "
-                         f"{row.phong_max:.2f}, Torrance-Sparrow {row.torrance_sparrow_max:.2f})",
-                         ha="center", va="top", fontsize=8.5)
+                fig.text((x0 + wd + gap / 2) / W, (y0 - 0.04) / H,
+                         f"max |i_Phong \u2212 i_T-S| = {row.max_abs_difference:.3f}; max i "
+                         f"{row.phong_max:.2f} vs {row.torrance_sparrow_max:.2f}",
+                         ha="center", va="top", fontsize=T["annotation"])
             p = fig_cfg["panels"][panel]
-            fig.text((x0 + wd + gap / 2) / W, (H - 0.3) / H,
+            fig.text((x0 + wd + gap / 2) / W, (H - top) / H,
                      f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
-                     f"c3 = {p['c3']:g} (\u03b2 = {row.beta_deg:.2f}\u00b0); Phong c1 = {row.c1:.2f}, "
-                     f"its p_s = {row.phong_s:.4g}", ha="center", va="top", fontsize=9.5)
-        lights = fig_cfg["lights"]
-        ax = fig.add_axes(((W - plot_w - 0.1) / W, (row_h + 0.3) / H, plot_w / W,
-                           (row_h - 0.05) / H))
+                     f"c3 = {p['c3']:g}\n\u03b2 = {row.beta_deg:.2f}\u00b0; Phong c1 = {row.c1:.2f}, "
+                     f"its p_s = {row.phong_s:.4g}", ha="center", va="top", fontsize=T["annotation"],
+                     linespacing=1.3)
+        ax = fig.add_axes((0.75 / W, plot_foot / H, 3.3 / W, plot_h / H))
         for panel, colour in (("a", "#0072b2"), ("b", "#d55e00")):
             p = fig_cfg["panels"][panel]
             ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep), color=colour,
-                    label=f"{p['label']} (p_s = {p['p_s']:g}, n = {p['n']:g})")
+                    label=f"{p['label']}\n(p_s = {p['p_s']:g}, n = {p['n']:g})")
             edge = table[(table.panel == panel) & (table.light == "edge")].iloc[0]
             ax.plot(lights["edge"]["angle_deg"], edge.torrance_sparrow_max, "o", mfc="none",
                     color=colour, ms=6)
         ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
-        ax.text(crossover - 1.5, 0.3, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
-                fontsize=8, color="0.3", transform=ax.get_xaxis_transform())
+        ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
+                fontsize=T["annotation"], color="0.3", transform=ax.get_xaxis_transform())
         ax.set(yscale="log", xlim=(90, 178), xticks=np.arange(90, 179, 15),
-               xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E) where N = H")
+               xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E)")
         ax.grid(True, which="major")
-        ax.legend(loc="upper left", fontsize=7.5)
-        ax.set_title("Torrance-Sparrow highlight where N = H\n(line; circles: brightest rendered i, edge lit)",
-                     fontsize=8.5)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
+        ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nbrightest rendered i,\n"
+                f"edge lit (circles)", transform=ax.transAxes, va="bottom",
+                fontsize=T["annotation"], linespacing=1.3)
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 Phong's p_s {reading.replace('_', ' ')}; light "
                      f"{lights['edge']['angle_deg']:g}\u00b0 (edge) and {lights['front']['angle_deg']:g}"
-                     f"\u00b0 (front) from the eye; MgO's highlight passes aluminium's beyond "
-                     f"{crossover:.1f}\u00b0; p_a = {fig_cfg['p_a']:g}, i = 1 is white", fontsize=11,
-                     y=1 - 0.04 / H, va="top")
-        savefig(fig, png, dpi=100, tight=False, tag=display_tag(scene.display.space))
+                     f"\u00b0 (front)\nfrom the eye; p_a = {fig_cfg['p_a']:g}, i = 1 is white; "
+                     f"close-ups: white = i {rim_scale:.1f}",
+                     y=1 - 0.04 / H, va="top", linespacing=1.3)
+        savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))

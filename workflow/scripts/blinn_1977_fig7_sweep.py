@@ -12,7 +12,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from reflectance.colour.display import display_tag
 from reflectance.io.atomic import atomic_write
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import RenderResult, display_image, shade_samples
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
@@ -44,7 +44,7 @@ with script_log(snakemake) as log:
     crossover = (highlight_crossover_Blinn1977(fig7["panels"]["a"], fig7["panels"]["b"])
                  if len(panels) == 2 else None)
     font = ImageFont.load_default(size=13)
-    frames, rows = [], []
+    frames, rows, greys = [], [], {}  # greys: the frame's images without text, for the contact sheet
     h, w = cam["height"], cam["width"]
     label_w, head, foot, gap = 96, 20, 22, 4
     for f, angle in enumerate(angles):
@@ -61,6 +61,7 @@ with script_log(snakemake) as log:
                 rgb = display_image(RenderResult(XYZ, None, {}, {}, one))[0]
                 image = np.round(255 * rgb[..., 1]).astype(np.uint8)  # grey: R = G = B
                 canvas.paste(Image.fromarray(image), (label_w + k * (w + gap), head + r * (h + gap)))
+                greys[f, key, model] = image
                 Y[model] = XYZ[..., 1]
             draw.text((label_w - 6, head + r * (h + gap) + h / 2), p["label"].replace(" ", "\n", 1),
                       fill=255, font=font, anchor="rm", align="right")
@@ -89,18 +90,39 @@ with script_log(snakemake) as log:
     table.pipe(write_csv, out.csv, float_format="%.6g")
     log.info("%d frames of %s; %s", len(frames), frames[0].size, table.to_string())
 
+    # The contact sheet drawn at the print width (its text at the figures' sizes, not the GIF's
+    # pixel font): a block of frames per light angle, the renders pixel for pixel at DPI.
     picks = np.unique(np.round(np.linspace(0, len(frames) - 1, cfg["contact_frames"])).astype(int))
-    cols = int(np.ceil(len(picks) / 2))
-    w, h, gap, top = frames[0].size[0] / 100, frames[0].size[1] / 100, 0.1, 0.4  # inches
-    W, H = cols * w + (cols + 1) * gap, 2 * h + 3 * gap + top
+    cols, T = int(np.ceil(len(picks) / 2)), TEXT_SIZE
+    label_in, gap, block_gap, top, head = 0.75, 0.03, 0.12, 0.5, 0.42  # inches
+    DPI = 2 * w * cols / (PRINT_WIDTH_IN - label_in - (cols - 1) * block_gap - cols * gap)
+    wi, hi = w / DPI, h / DPI
+    bw = 2 * wi + gap  # a block: Phong and Torrance-Sparrow side by side
+    W = label_in + cols * bw + (cols - 1) * block_gap
+    H = top + 2 * (head + len(panels) * (hi + gap)) + 0.05
     fig = new_figure(W, H, facecolor="black")
-    for k, f in enumerate(picks):
-        x, y = gap + (k % cols) * (w + gap), gap + (1 - k // cols) * (h + gap)
-        ax = fig.add_axes((x / W, y / H, w / W, h / H))
-        ax.imshow(np.asarray(frames[f]), cmap="gray", vmin=0, vmax=255, interpolation="nearest")
-        ax.set_axis_off()
-    cross = "" if crossover is None else (f"; MgO's highlight passes aluminium's beyond "
-                                          f"{crossover:.1f}\u00b0")
-    fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')}"
-                 f"{cross})", fontsize=10, y=1 - 0.08 / H, va="top", color="white")
-    savefig(fig, out.contact, dpi=100, tight=False, tag=display_tag(first.display.space))
+    for n, f in enumerate(picks):
+        c, r = n % cols, n // cols
+        x0, y_top = label_in + c * (bw + block_gap), H - top - r * (head + len(panels) * (hi + gap))
+        past = crossover is not None and angles[f] > crossover
+        fig.text((x0 + bw / 2) / W, (y_top - 0.02) / H, f"light {angles[f]:.0f}\u00b0"
+                 + (": MgO > Al" if past else ""), ha="center", va="top", color="white",
+                 fontsize=T["symbol"])
+        for k, (model, name) in enumerate(MODELS.items()):
+            fig.text((x0 + k * (wi + gap) + wi / 2) / W, (y_top - head + 0.03) / H, name,
+                     ha="center", va="bottom", color="0.85", fontsize=T["annotation"])
+            for j, key in enumerate(cfg["panels"]):
+                y = y_top - head - (j + 1) * (hi + gap) + gap
+                ax = fig.add_axes(((x0 + k * (wi + gap)) / W, y / H, wi / W, hi / H))
+                ax.imshow(greys[f, key, model], cmap="gray", vmin=0, vmax=255,
+                          interpolation="nearest")
+                ax.set_axis_off()
+                if c == 0 and k == 0:
+                    fig.text((label_in - 0.06) / W, (y + hi / 2) / H,
+                             panels[j]["label"].replace(" ", "\n", 1), ha="right", va="center",
+                             color="white", fontsize=T["annotation"])
+    cross = "" if crossover is None else (f";\nMgO's highlight passes aluminium's beyond "
+                                          f"{crossover:.1f}\u00b0 from the eye")
+    fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')})"
+                 f"{cross}", y=1 - 0.04 / H, va="top", color="white", linespacing=1.3)
+    savefig(fig, out.contact, dpi=DPI, tight=False, tag=display_tag(first.display.space))

@@ -10,7 +10,7 @@ import pandas as pd
 
 from reflectance.colour.display import display_tag
 from reflectance.optics.microfacet import c3_texture_Blinn1977
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import display_image, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import blinn_scene_Blinn1977
@@ -48,8 +48,11 @@ with script_log(snakemake) as log:
         log.info("pattern %s: %s; timings %s", part, rows[-1], result.timings)
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
-    h, w = (n / 100 for n in images["a"].shape[:2])  # inches at 100 dpi
-    mh, left, gap, top = w * 100 / 360, 0.45, 0.5, 0.95
+    # drawn at the print width (the renders pixel for pixel at DPI): its text prints at its size
+    left, gap, T = 0.45, 0.3, TEXT_SIZE
+    DPI = 2 * images["a"].shape[1] / (PRINT_WIDTH_IN - left - gap - 0.15)
+    h, w = (n / DPI for n in images["a"].shape[:2])  # inches
+    mh, top = w / 3.6, 0.95
     W, H = left + 2 * w + gap + 0.15, top + h + mh + 0.85
     fig = new_figure(W, H)
     for k, part in enumerate(("a", "b")):
@@ -58,17 +61,19 @@ with script_log(snakemake) as log:
         ax.imshow(images[part], interpolation="nearest")
         ax.set_xticks([]), ax.set_yticks([])
         ax.set_title(f"({part}) {pattern['method']}: " + ", ".join(
-            f"{key} {value:g}" for key, value in pattern["parameters"].items()), fontsize=9, pad=3)
+            f"{key} {value:g}" for key, value in pattern["parameters"].items()),
+            fontsize=T["annotation"], pad=3)
         ax = fig.add_axes((x / W, 0.4 / H, w / W, mh / H))
         ax.imshow(maps[part], cmap="gray", vmin=cfg["c_min"], vmax=1, origin="lower", extent=(0, 1, 0, 1),
                   aspect="auto", interpolation="antialiased")
-        ax.set_xlabel("u (around the ring)", fontsize=8, labelpad=1)
-        ax.set_ylabel("v (tube)", fontsize=8, labelpad=1)
-        ax.tick_params(labelsize=7)
-        ax.set_title(f"C3(u, v): {cfg['c_min']:g} (black, shiny) to 1 (white, dull)", fontsize=8, pad=2)
+        ax.set(xticks=[0, 0.5, 1], yticks=[0, 1])
+        ax.set_xlabel("u (around the ring)", fontsize=T["annotation"], labelpad=1)
+        ax.set_ylabel("v (tube)", fontsize=T["annotation"], labelpad=1)
+        ax.set_title(f"C3(u, v): {cfg['c_min']:g} (black, shiny) to 1 (white, dull)",
+                     fontsize=T["annotation"], pad=2)
     fig.suptitle(f"Blinn 1977, Fig. 8 \u2014 surface shininess varying with two texture patterns\n"
                  f"Torrance-Sparrow, D3 with C3 = C_min + (1 \u2212 C_min) t(u, v), C_min = {cfg['c_min']:g}\n"
                  f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
-                 f"i = 1 is white", fontsize=9.5, y=1 - 0.05 / H, va="top")
-    savefig(fig, out.png, dpi=100, tight=False, tag=display_tag(scene.display.space))
+                 f"i = 1 is white", fontsize=T["symbol"], y=1 - 0.05 / H, va="top", linespacing=1.3)
+    savefig(fig, out.png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))

@@ -4,15 +4,14 @@ a point P, with alpha (N to H) and theta (V to H, and L to H) as arcs, as a pyvi
 import numpy as np
 import pandas as pd
 import pyvista as pv
-from matplotlib import font_manager
 
-from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.io.figures import OKABE_ITO, font_file, off_screen_plotter, save_plotter, text_colour
 from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
-FONT = font_manager.findfont("DejaVu Sans")  # has the Greek letters VTK's own fonts lack
-COLOURS = {"N": "black", "L": "#d98c00", "V": "#1f5fbf", "H": "#2a9d3a"}
+FONT = font_file()  # the figures' DejaVu Sans: it has the Greek letters VTK's own fonts lack
+COLOURS = {"N": "black", "L": OKABE_ITO[4], "V": "#1f5fbf", "H": "#2a9d3a"}
 
 
 def direction(angles):
@@ -63,7 +62,7 @@ with script_log(snakemake) as log:
     for text, p in labels.items():
         colour = COLOURS.get(text, "black")
         pl.add_point_labels(p[None, :], [text.strip()], font_size=34, font_file=FONT,
-                            text_color=colour, bold=False, show_points=False, shape=None,
+                            text_color=text_colour(colour), bold=False, show_points=False, shape=None,
                             always_visible=True, justification_horizontal="center",
                             justification_vertical="center")
     pl.add_text("Cook & Torrance 1982, Fig. 2 \u2014 the geometry of reflection\n"

@@ -5,15 +5,14 @@ import numpy as np
 import pandas as pd
 import pyvista as pv
 from scipy.integrate import simpson
-from matplotlib import font_manager
 
 from reflectance.optics.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
-from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.io.figures import font_file, off_screen_plotter, save_plotter, set_vtk_font
 from reflectance.papers.polar import direction_from_angles
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
-FONT = font_manager.findfont("DejaVu Sans")
+FONT = font_file()  # the figures' typeface, for VTK's text too
 
 with script_log(snakemake) as log:
     fig = snakemake.params.fig
@@ -45,13 +44,15 @@ with script_log(snakemake) as log:
                     scalar_bar_args={"title": f"D ({letter})", "n_labels": 3, "fmt": "%.3g",
                                      "color": "black", "vertical": True,
                                      "position_x": 0.9, "position_y": 0.15, "height": 0.6,
-                                     "width": 0.04, "font_family": "arial"})
+                                     "width": 0.04, "title_font_size": 26, "label_font_size": 24})
+        bar = pl.scalar_bars[f"D ({letter})"]
+        set_vtk_font(bar.GetTitleTextProperty(), bar.GetLabelTextProperty())
         # Projected-area integral 2 pi int D cos(alpha) sin(alpha) d alpha (pi for Beckmann, paper).
         integral = 2 * np.pi * simpson(D * np.cos(alpha) * np.sin(alpha), x=alpha)
         constant = "" if model == "Beckmann" else (
             f", c = 1/m\u00b2 = {c:.4g}" if fig["gaussian_c"] == "beckmann_peak" else f", c = {c:g}")
         pl.add_text(f"({letter}) {model}, m = {m:g}{constant}\nD(0) = {D[0]:.4g},  "
-                    f"\u222b D cos\u03b1 d\u03c9 = {integral:.4g}", font_size=12,
+                    f"\u222b D cos\u03b1 d\u03c9 = {integral:.4g}", font_size=14,
                     color="black", position="upper_left", font_file=FONT)
         pl.camera_position = [(0.0, -2.9, 2.5), (0.0, 0.0, 0.38), (0.0, 0.0, 1.0)]  # from 36 degrees above the disc
         log.info("(%s) %s m=%g c=%g: D(0)=%.6g, projected-area integral %.6g",

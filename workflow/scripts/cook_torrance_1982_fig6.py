@@ -12,10 +12,10 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
-from reflectance.render.composite import appearance
+from reflectance.render.composite import appearance, covered_rows
 from reflectance.render.pipeline import display_image, render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.render.shading import ambient_intensity
@@ -44,13 +44,13 @@ with script_log(snakemake) as log:
     for part in ("a", "b"):
         panel = fig_cfg["panels"][part]
         if part in departures:
-            renders.append((part, f"{TITLES[part]}, as printed", panel, False))
-            renders.append((part, f"{TITLES[part]}, {departure_text(departures[part])} "
-                                  f"(departure; printed: {departure_text({k: panel[k] for k in departures[part]})})",
+            renders.append((part, f"{TITLES[part]}\nas printed", panel, False))
+            renders.append((part, f"{TITLES[part]}\n{departure_text(departures[part])} "
+                                  f"(departure;\nprinted: {departure_text({k: panel[k] for k in departures[part]})})",
                             {**panel, **departures[part]}, True))
         else:
             renders.append((part, TITLES[part], panel, True))
-    rows, images = [], []
+    rows, images, covered = [], [], []
     traced = {}  # the panels share vase, camera and lights: traced once (pipeline.render)
     for part, title, panel, written in renders:
         document = vase_scene_CookTorrance1982(fig_cfg, panel_material(panel), reference,
@@ -62,7 +62,7 @@ with script_log(snakemake) as log:
                                   out[f"{part}_png"], components=True, traced=traced) if written
                   else render(scene, components=True, traced=traced))
         rgb, scale = display_image(result)
-        images.append((title, rgb))
+        images.append((title, rgb)), covered.append(result.XYZ)
         Y = {name: value[..., 1] for name, value in result.components.items()}
         direct = Y["diffuse"] + Y["specular"]
         I_ia = ambient_intensity(scene.ambient, scene.lights)
@@ -86,20 +86,29 @@ with script_log(snakemake) as log:
         log.info("panel %s (%s): %s; timings %s", part, title, rows[-1], result.timings)
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
-    height, width = images[0][1].shape[:2]
-    n = len(images)
-    fig = new_figure(n * width / 100 + 0.2, height / 100 + 1.2, facecolor="black")
-    for k, (title, rgb) in enumerate(images):
-        ax = fig.add_axes(((0.1 + k * width / 100) / (n * width / 100 + 0.2), 0.02,
-                           (width / 100) / (n * width / 100 + 0.2), height / (height + 120)))
-        ax.imshow(rgb, interpolation="nearest")
-        ax.set_axis_off()
-        ax.set_title(title.replace(" (departure", "\n(departure"), color="white", fontsize=9)
+    # drawn at the print width (the renders pixel for pixel at dpi), the empty rows cropped
+    crop = covered_rows(covered, margin=8)
+    height, width = images[0][1][crop].shape[:2]
+    lines = max(label.count("\n") + 1 for label, _ in images)
     reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
     if published:
         key = exposure["key"]
-        reading += (f"\neach vase metered (median luminance shown at {key['luminance']:g}), "
+        reading += (f"\neach vase metered (median luminance shown at {key['luminance']:g}),\n"
                     f"highlights above {exposure['highlight_knee']:g} compressed at constant "
                     "chromaticity")
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}", color="white", fontsize=10)
-    savefig(fig, out.png, dpi=100, tag=display_tag(scene.display.space))
+    title = f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}".replace(": I_ia", ":\nI_ia")
+    n, margin, head = len(images), 0.1, 0.1 + 0.16 * lines  # inches
+    top = 0.1 + 0.19 * (title.count("\n") + 1)
+    dpi = n * width / (PRINT_WIDTH_IN - 2 * margin)
+    W, H = PRINT_WIDTH_IN, height / dpi + head + top
+    fig = new_figure(W, H, facecolor="black")
+    for k, (label, rgb) in enumerate(images):
+        ax = fig.add_axes(((margin + k * width / dpi) / W, 0.02 / H, width / dpi / W,
+                           height / dpi / H))
+        ax.imshow(rgb[crop], interpolation="nearest")
+        ax.set_axis_off()
+        ax.set_title(label, color="white", fontsize=TEXT_SIZE["annotation"], linespacing=1.2,
+                     pad=4)
+    fig.suptitle(title, color="white", fontsize=TEXT_SIZE["symbol"], y=1 - 0.04 / H, va="top",
+                 linespacing=1.3)
+    savefig(fig, out.png, dpi=dpi, tag=display_tag(scene.display.space))

@@ -14,7 +14,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag, XYZ_to_display
-from reflectance.io.figures import savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
 from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982, fig7_vases_CookTorrance1982,
@@ -31,11 +31,12 @@ READINGS = {"intensity": "as printed, I_ia = {f} I_i",
 
 
 def label(material, sources, names):
-    """The paper's name of the material and where its spectrum comes from."""
+    """The paper's name of the material and where its spectrum comes from (the n, k data set, or
+    the Munsell notation it is derived from), each on a line of its own: the grid is print-wide."""
     name = material["name"]
     row = sources.loc[name]
-    kind = (f"n, k: {row.dataset.rsplit('/', 1)[-1]}" if row.kind == "measured"
-            else f"Munsell {row.dataset.split(' ', 1)[-1]} (derived)")
+    kind = (row.dataset.rsplit('/', 1)[-1] if row.kind == "measured"
+            else f"Munsell {row.dataset.split(' ', 1)[-1]}")
     return f"{names.get(name, name)}\n{kind}"
 
 
@@ -83,23 +84,24 @@ with script_log(snakemake) as log:
     if published:  # one exposure per row, metered on a white card; the label: relative to metals
         scales = [row["vase_exposure_scale"] for row in rows]
         factors = [p.fig.get("vase_exposure", {}).get(row["vase"], 1.0) for row in rows]
-        labels = [f"{text}\nexposure x{s / scales[0]:.3g}" + (f" ({f:g}x its row)" if f != 1 else "")
+        labels = [f"{text}\nexposure x{s / scales[0]:.3g}" + (f"\n({f:g}x its row)" if f != 1 else "")
                   for text, s, f in zip(labels, scales, factors)]
         metered = {g: (f"white card at {e['white']['luminance']:g}" if "white" in e
                        else f"median at {e['key']['luminance']:g}")
                    for g, e in p.fig["exposure"].items()}
         departures = ", ".join(f"{p.fig['labels'].get(r['material'], r['material']).lower()} {f:g}x"
                                for r, f in zip(rows, factors) if f != 1)
-        title = ("Cook & Torrance 1982, Fig. 7 \u2014 one exposure per row: metals "
+        title = ("Cook & Torrance 1982, Fig. 7 \u2014 one exposure per row:\nmetals "
                  f"{metered['metal']}, nonmetals {metered['nonmetal']}"
-                 + (f"; per vase: {departures}" if departures else ""))
+                 + (f";\nper vase: {departures}" if departures else ""))
     else:  # the grid is one scene: "all XYZ values in the scene are scaled equally"
         scale = common_exposure(images, colour_cfg["space"], **display)
         scales = [scale] * len(images)
         shown = [XYZ_to_display(XYZ * scale, colour_cfg["space"], colour_cfg["gamut_clip"],
                                 expose=False, **display) for XYZ in images]
         reading = READINGS[reference].format(f=f"{p.fig6['ambient_fraction']:g}")
-        title = f"Cook & Torrance 1982, Fig. 7 \u2014 ambient {reading}; one exposure for all vases"
+        title = (f"Cook & Torrance 1982, Fig. 7 \u2014 one exposure for all vases\n"
+                 f"ambient {reading}")
     table = pd.DataFrame(rows).assign(exposure_scale=scales)
     for i, (rgb, XYZ) in enumerate(zip(shown, images)):
         for key, value in appearance(rgb, XYZ, colour_cfg["space"]).items():
@@ -116,8 +118,13 @@ with script_log(snakemake) as log:
             headings.append((row, col, group))
         cells.append((row, col, rgb, text))
     styles = {"metal": {"x": 0.01}, "nonmetal": {"x": 0.01},
-              "extra": {"x": 1 - 0.5 / n_cols, "color": "#ffcc66", "fontsize": 8, "ha": "center"}}
+              "extra": {"x": 0.995, "color": "#ffcc66", "fontsize": TEXT_SIZE["annotation"],
+                        "ha": "right"}}
+    # the grid drawn at the print width, the vases pixel for pixel, so its text prints at its size
+    dpi = shown[0].shape[1] * n_cols * 1.04 / PRINT_WIDTH_IN
     fig = image_grid(cells, 2, n_cols, title,
                      headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
-                     crop=covered_rows(images), foot=0.55 if published else 0.4)
-    savefig(fig, out.png, dpi=100, tag=display_tag(colour_cfg["space"]))
+                     crop=covered_rows(images), foot=0.6 if published else 0.4,
+                     top=0.12 + 0.22 * (title.count("\n") + 1), dpi=dpi,
+                     label_size=TEXT_SIZE["table"])
+    savefig(fig, out.png, dpi=dpi, tag=display_tag(colour_cfg["space"]))

@@ -9,7 +9,7 @@ from matplotlib.patches import Rectangle
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag, XYZ_to_display
-from reflectance.io.figures import new_figure, paper_name, savefig
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import list_materials, load_material, wavelength_grid
 from reflectance.io.tables import write_csv
@@ -41,27 +41,35 @@ with script_log(snakemake) as log:
     table["display_RGB"] = ["#" + "".join(f"{round(255 * v):02x}" for v in rgb) for rgb in RGB]
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
+    # Drawn at the print width, so its text prints at the table size of the figures (TEXT_SIZE)
+    T = TEXT_SIZE
     headers = ["Material", "s", "d", "m", "spectrum (source)", f"mean F0\n{lo:g}-{hi:g} nm",
                "x, y, Y", "R_d = F0/\u03c0\nunder " + colour_cfg["illuminant"]]
-    xs = [0.01, 0.12, 0.17, 0.22, 0.28, 0.64, 0.72, 0.87]
-    fig = new_figure(12.5, 1.3 + 0.55 * len(table))
-    ax = fig.add_axes((0.01, 0.02, 0.98, 0.84))
+    widths = [0.85, 0.35, 0.35, 0.6, 1.7, 0.85, 1.35, 0.75]  # inches
+    xs = np.concatenate([[0.05], 0.05 + np.cumsum(widths)[:-1]])
+    row_in, head_in, title_in = 0.36, 0.42, 0.5
+    W, H = PRINT_WIDTH_IN, title_in + head_in + row_in * len(table) + 0.05
+    fig = new_figure(W, H)
+    ax = fig.add_axes((0, 0, 1, 1))
     ax.set_axis_off()
-    ax.set_xlim(0, 1)
-    ax.set_ylim(len(table) - 0.4, -1.2)
+    ax.set(xlim=(0, W), ylim=(H, 0))  # inches from the top left
+    y0 = title_in + head_in
     for x, h in zip(xs, headers):
-        ax.text(x, -0.7, h, fontsize=9.5, fontweight="bold", va="center")
-    ax.axhline(-0.45, color="0.2", lw=0.8)
+        ax.text(x, y0 - 0.06, h, fontsize=T["annotation"], fontweight="bold", va="bottom",
+                linespacing=1.15)
+    ax.axhline(y0 - 0.03, color="0.2", lw=0.8)
     for i, r in table.iterrows():
         m = "not used" if r.m is None or np.isnan(r.m) else f"{r.m:.2f}"
-        cells = [r["name"], f"{r.s:.1f}", f"{r.d:.1f}", m, f"{r.spectrum}: {r.dataset}",
+        y = y0 + (i + 0.5) * row_in
+        cells = [r["name"], f"{r.s:.1f}", f"{r.d:.1f}", m, f"{r.spectrum}:\n{r.dataset}",
                  f"{r[f'F0_mean_{lo:g}_{hi:g}nm']:.4f}", f"{r.x:.4f}, {r.y:.4f}, {r.Y:.4f}"]
         for x, text in zip(xs, cells):
-            ax.text(x, i, text, fontsize=9, va="center")
-        ax.add_patch(Rectangle((xs[-1], i - 0.38), 0.1, 0.76, color=RGB[i], ec="0.5", lw=0.5))
-    fig.suptitle(f"Cook & Torrance 1982, Table I \u2014 s, d, m of the nonmetals of Fig. 7, with "
+            ax.text(x, y, text, fontsize=T["table"], va="center", linespacing=1.15)
+        ax.add_patch(Rectangle((xs[-1], y - 0.4 * row_in), widths[-1] - 0.05, 0.8 * row_in,
+                               color=RGB[i], ec="0.5", lw=0.5))
+    fig.suptitle(f"Cook & Torrance 1982, Table I \u2014 s, d, m of the nonmetals of Fig. 7,\nwith "
                  f"their spectra ({colour_cfg['space']} swatch, not exposed: white = Y 1)",
-                 fontsize=10.5, y=0.97)
+                 y=1 - 0.04 / H, va="top", linespacing=1.3)
     savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=display_tag(colour_cfg["space"]))
     for r in table.itertuples():
         log.info("%s: mean F0 %.4f, Y %.4f, %s", r.material, r.R_d_mean_per_sr * np.pi, r.Y,

@@ -9,7 +9,7 @@ import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
 from reflectance.optics.brdf import brdf
-from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.brdf_geometry import draw_brdf_angles
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.scripting import script_log
@@ -31,6 +31,17 @@ def parameters_text(params):
                      if not isinstance(v, list))
 
 
+def wrap_items(text, width=30):
+    """``"a = 1, b = 2, ..."`` over lines of at most about ``width`` characters, broken between items."""
+    lines = []
+    for item in text.split(", "):
+        if lines and len(lines[-1]) + 2 + len(item) <= width:
+            lines[-1] += ", " + item
+        else:
+            lines.append(item)
+    return ",\n".join(lines)
+
+
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     theta_i = np.radians(cfg["incidence_deg"])
@@ -42,17 +53,19 @@ with script_log(snakemake) as log:
         table[key] = brdf(L, V, N, method, **cfg["models"][key])
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(11.5, 5.6)
-    grid = fig.add_gridspec(2, 4, width_ratios=[1.25, 1, 1, 1], wspace=0.28, hspace=0.42,
-                            left=0.01, right=0.985, top=0.86, bottom=0.0)
+    # drawn at the print width (its text prints at the figures' sizes): the angle diagram and the
+    # legend over two rows of three polar plots
+    fig = new_figure(PRINT_WIDTH_IN, 6.9)
+    grid = fig.add_gridspec(3, 3, height_ratios=[1.2, 1, 1], wspace=0.3, hspace=0.62,
+                            left=0.03, right=0.97, top=0.92, bottom=0.03)
     g = cfg["geometry"]
-    ax = fig.add_subplot(grid[:, 0])
+    ax = fig.add_subplot(grid[0, :2])
     draw_brdf_angles(ax, g["light"]["theta_deg"], g["light"]["phi_deg"], g["view"]["theta_deg"],
                      g["view"]["phi_deg"])
     ax.text(0.5, -0.01, "BRDF = f(\u03bb, \u03c6\u1d62, \u03b8\u1d62, \u03c6\u1d65, \u03b8\u1d65) = f(\u03bb, L, V)",
-            fontsize=10, transform=ax.transAxes, ha="center", va="top")  # under the disc, not on it
+            fontsize=TEXT_SIZE["symbol"], transform=ax.transAxes, ha="center", va="top")  # under the disc
     for i, (key, (method, title)) in enumerate(MODELS.items()):
-        ax = fig.add_subplot(grid[i // 3, 1 + i % 3], projection="polar")
+        ax = fig.add_subplot(grid[1 + i // 3, i % 3], projection="polar")
         ax.set_theta_zero_location("N")
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
@@ -65,18 +78,19 @@ with script_log(snakemake) as log:
         ax.plot([theta_i, theta_i], [0, top], color="0.4", lw=1, ls="--", label="mirror direction")
         ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6) if f.max() > top else None
         ax.set_ylim(0, top)
-        ax.set_title(f"{title}\n{parameters_text(cfg['models'][key])}", fontsize=8.5, pad=1)
-        ax.tick_params(labelsize=7, pad=1)
+        ax.set_title(f"{title}\n" + wrap_items(parameters_text(cfg["models"][key])),
+                     fontsize=TEXT_SIZE["annotation"], pad=0, linespacing=1.25)
+        ax.tick_params(pad=1)
         ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
         ax.yaxis.set_major_locator(MaxNLocator(2))
-        ax.text(0.5, 0.1, f"max f = {f[inside].max():.3g} sr$^{{-1}}$ (|\u03b8| \u2264 85\u00b0)"
+        ax.text(0.5, 0.02, f"max f = {f[inside].max():.3g} sr$^{{-1}}$\n(|\u03b8| \u2264 85\u00b0)"
                 if f.max() > top else f"max f = {f.max():.3g} sr$^{{-1}}$", transform=ax.transAxes,
-                ha="center", fontsize=8)
+                ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
         log.info("%s: max f %.6g at theta_o = %.2f deg", key, f.max(),
                  np.degrees(theta_o[np.argmax(f)]))
-    fig.legend(*fig.axes[1].get_legend_handles_labels(), loc="upper right", ncol=2, fontsize=8.5,
-               bbox_to_anchor=(0.985, 0.955))
-    fig.suptitle(f"Lecture (Russin, Module 3B), the BRDF's angles and sample BRDFs in the plane of "
-                 f"incidence (radius f(L, V) in sr$^{{-1}}$, incidence {cfg['incidence_deg']:g}\u00b0, "
-                 f"light on the left)", x=0.01, ha="left", y=0.995)
+    fig.legend(*fig.axes[1].get_legend_handles_labels(), loc="center left",
+               bbox_to_anchor=(0.7, 0.8), title=f"incidence {cfg['incidence_deg']:g}\u00b0,\n"
+               "light on the left;\nradius f(L, V) in sr$^{-1}$", alignment="left")
+    fig.suptitle("Lecture (Russin, Module 3B), the BRDF's angles\nand sample BRDFs in the plane of "
+                 "incidence", y=0.995, va="top", linespacing=1.3)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

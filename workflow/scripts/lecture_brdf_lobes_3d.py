@@ -8,18 +8,18 @@ import numpy as np
 import pyvista as pv
 
 from reflectance.optics.brdf import brdf
-from reflectance.io.figures import off_screen_plotter, save_plotter
+from reflectance.io.figures import font_file, off_screen_plotter, save_plotter
 from reflectance.papers.polar import direction_from_angles, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 
 # config key -> (reflectance.optics.brdf method, panel title)
 MODELS = {
-    "diffuse": ("Lambert", "Diffuse (Lambert)"),
+    "diffuse": ("Lambert", "Diffuse\n(Lambert)"),
     "phong": ("Phong1975", "Phong"),
-    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong (m+8)/(8 pi)"),
+    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong\n(m+8)/(8 pi)"),
     "cook_torrance": ("CookTorrance1982", "Cook-Torrance"),
-    "ward": ("Ward1992", "Ward, anisotropic"),
-    "lunar": ("LommelSeeliger", "lunar (Lommel-Seeliger)"),
+    "ward": ("Ward1992", "Ward,\nanisotropic"),
+    "lunar": ("LommelSeeliger", "lunar\n(Lommel-Seeliger)"),
 }
 
 with script_log(snakemake) as log:
@@ -48,8 +48,8 @@ with script_log(snakemake) as log:
         pl.add_mesh(pv.Arrow(start=1.45 * L, direction=-L, scale=1.3, tip_length=0.12,
                              tip_radius=0.035, shaft_radius=0.012), color="#d98c00")
         pl.add_mesh(pv.Line((0, 0, 0), 1.3 * mirror), color="#595959", line_width=2)
-        pl.add_text(f"{title}\nmax f = {peak:.3g} /sr", font_size=10, color="black",
-                    position="upper_edge")
+        pl.add_text(f"{title}\nmax f = {peak:.3g} /sr", font_size=12, color="black",
+                    position="upper_edge", font_file=font_file())  # the figures' typeface, ~8 pt at 7 in
         pl.view_vector((0.2, -1.0, 0.45), viewup=(0, 0, 1))
         pl.reset_camera(bounds=(-1.45, 1.45, -1.0, 1.0, 0.0, 1.2))
         pl.camera.zoom(1.45)

@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 from scipy.integrate import quad
 
-from reflectance.io.figures import OKABE_ITO, new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, new_figure, savefig
 from reflectance.optics.microfacet import distribution_Beckmann1963, distribution_Gaussian_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -24,7 +24,7 @@ with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     alpha = np.radians(np.arange(0.0, 90.0 + 1e-9, cfg["alpha_step_deg"]))[:-1]
     curves, rows = {"alpha_deg": np.degrees(alpha)}, []
-    fig = new_figure(10.0, 3.6)
+    fig = new_figure(PRINT_WIDTH_IN, 4.6)  # the print width: its text prints at the figures' sizes
     axes = fig.subplots(1, 2)
     for m, style in zip(cfg["m"], ("-", (0, (4, 2)))):
         forms = {  # name -> D(cos alpha), each from its text
@@ -52,17 +52,17 @@ with script_log(snakemake) as log:
             axes[1].plot(np.degrees(alpha), curves[f"{key}_m{m:g}"], color=colour, ls=style,
                          label=f"{name}, m = {m:g}")
     table = pd.DataFrame(rows)
-    for ax, title, ylabel in ((axes[0], "(a) Gaussian: m in the numerator or the denominator", "D"),
-                              (axes[1], "(b) Beckmann: the constant in front", "D (log scale)")):
-        ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 15), xlabel="\u03b1, angle between N and H (\u00b0)",
+    for ax, title, ylabel in ((axes[0], "(a) Gaussian: m in the\nnumerator or the denominator", "D"),
+                              (axes[1], "(b) Beckmann:\nthe constant in front", "D (log scale)")):
+        ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 30), xlabel="\u03b1 between N and H (\u00b0)",
                ylabel=ylabel, title=title)
         ax.grid(True)
     axes[1].set(yscale="log", ylim=(1e-3, 30))
-    axes[0].legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=8)
-    axes[1].legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=8)
-    fig.suptitle("Lecture (Russin, Module 3B), \u201cDistribution of microfacet orientations\u201d: the slide's "
-                 "D's against the correct ones", y=1.0)
-    fig.subplots_adjust(wspace=0.25, top=0.85)
+    axes[0].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
+    axes[1].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
+    fig.suptitle("Lecture (Russin, Module 3B), \u201cDistribution of microfacet orientations\u201d:\nthe "
+                 "slide's D's against the correct ones", y=0.995, va="top", linespacing=1.3)
+    fig.subplots_adjust(wspace=0.32, top=0.8, bottom=0.42, left=0.09, right=0.98)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     table.pipe(write_csv, snakemake.output.summary, float_format="%.8g")

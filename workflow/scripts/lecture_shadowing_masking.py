@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.collections import LineCollection
 
-from reflectance.io.figures import new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.papers.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
@@ -59,9 +59,10 @@ with script_log(snakemake) as log:
     log.info("rays traced to the viewer agree with visible_fraction for %d of %d rays",
              np.sum(rays.escaped == (rays.seen[hit_segment] > 0.5)), hit_x.size)
 
-    fig = new_figure(13, 8.4)
-    grid = fig.add_gridspec(2, 3, height_ratios=[1.25, 1], hspace=0.3, wspace=0.25, top=0.9,
-                            bottom=0.07, left=0.06, right=0.98)
+    # drawn at the print width, so its text prints at the figures' sizes
+    fig = new_figure(PRINT_WIDTH_IN, 7.4)
+    grid = fig.add_gridspec(2, 3, height_ratios=[1.15, 1], hspace=0.62, wspace=0.42, top=0.83,
+                            bottom=0.2, left=0.08, right=0.99)
     ax = fig.add_subplot(grid[0, :])
     top, keep = hs.max() + 0.15 * (w1 - w0), (xs[:-1] >= w0) & (xs[1:] <= w1)
     classes = {"lit and seen": "#e69f00", "lit, masked by another facet": "#d62728",
@@ -85,37 +86,37 @@ with script_log(snakemake) as log:
         ax.plot([], [], color=c, lw=3.5, label=label)
     ax.set(xlim=(w0, w1), ylim=(hs.min() - 0.05 * (w1 - w0), top), aspect="equal",
            xlabel="x (samples)", ylabel="height")
-    ax.legend(loc="lower center", ncol=4, fontsize=8, frameon=False)
-    ax.set_title(f"(a) light from the left at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid rays; dotted: "
-                 "from a shadowed facet back to its occluder x), viewer on the right at \u03b8o = "
-                 f"{cfg['view_deg']:g}\u00b0 (dashed; red: masked)\nG1 of the whole profile: shadowing "
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
+    ax.set_title(f"(a) light from the left at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid rays), viewer "
+                 f"on the right at \u03b8o = {cfg['view_deg']:g}\u00b0 (dashed)\nred: masked; dotted: from "
+                 "a shadowed facet back to its occluder (x)\nG1 of the whole profile: shadowing "
                  f"{g1['light'][0]:.3f} (Smith {g1['light'][1]:.3f}), masking {g1['view'][0]:.3f} "
-                 f"(Smith {g1['view'][1]:.3f}); rms slope \u03c3 = {sigma:.3g}, Beckmann m = "
-                 f"\u221a2 \u03c3 = {m:.3g}", fontsize=9)
+                 f"(Smith {g1['view'][1]:.3f})\nrms slope \u03c3 = {sigma:.3g}, Beckmann m = "
+                 f"\u221a2 \u03c3 = {m:.3g}", fontsize=TEXT_SIZE["symbol"], linespacing=1.3)
 
     ax = fig.add_subplot(grid[1, 0])
-    ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, Beckmann m = {m:.3g}")
-    ax.plot(np.degrees(angles), sim[:, 0], "o", ms=3, color="#1f77b4", label="simulated profile")
-    ax.set(xlabel="direction from the normal \u03b8 (degrees)", ylabel="G1", ylim=(0, 1.02),
-           title="(b) G1 of the whole profile")
-    ax.legend(frameon=False, fontsize=8, loc="lower left")
+    ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, m = {m:.3g}")
+    ax.plot(np.degrees(angles), sim[:, 0], "o", ms=2.5, color=OKABE_ITO[0], label="simulated profile")
+    ax.set(xlabel="\u03b8 from the normal (\u00b0)", ylabel="G1", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
+           title="(b) G1 of the profile")
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
     ax = fig.add_subplot(grid[1, 1])
     for name, c, lab in (("view", "#d62728", "masking, \u03b8o"), ("light", "#e69f00", "shadowing, \u03b8i")):
         ax.plot((edges[1:] + edges[:-1]) / (2 * sigma), by[f"visible_{name}"], "o-", ms=3, color=c,
                 label=f"{lab}: simulated")
-        ax.axhline(g1[name][1], color=c, ls="--", lw=1, label=f"{lab}: Smith (independent of slope)")
+        ax.axhline(g1[name][1], color=c, ls="--", lw=1, label=f"{lab}: Smith")
     ax.set(xlabel="facet slope / rms slope", ylabel="visible fraction", ylim=(0, 1.02),
-           title="(c) visibility by facet slope at \u03b8o and \u03b8i")
-    ax.legend(frameon=False, fontsize=7, loc="lower center")
+           title="(c) visibility by slope")
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
     ax = fig.add_subplot(grid[1, 2])
     ax.plot(np.degrees(angles), G_slide, color="#d55e00",
-            label="slide: G = min{1, G$_s$, G$_m$} (V-cavity)")
+            label="slide: min{1, G$_s$, G$_m$}\n(V-cavity)")
     ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.5, label="Smith: G1(L) G1(V)")
-    ax.set(xlabel="view angle \u03b8o on the mirror side (degrees)", ylabel="G", ylim=(0, 1.02),
-           title=f"(d) the slide's G beside Smith's, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0")
-    ax.legend(frameon=False, fontsize=7.5, loc="lower left")
+    ax.set(xlabel="view \u03b8o, mirror side (\u00b0)", ylabel="G", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
+           title=f"(d) G, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0")
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
     ax.grid(True)
-    fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d, on a simulated "
-                 f"Gaussian surface profile (seed {cfg['seed']})", fontsize=11)
+    fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d,\non a simulated "
+                 f"Gaussian surface profile (seed {cfg['seed']})", y=0.995, va="top", linespacing=1.3)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     log.info("visible projected / (n cos) in [%.12f, %.12f]", sim[:, 1].min(), sim[:, 1].max())

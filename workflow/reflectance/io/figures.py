@@ -25,8 +25,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
-__all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
-           "save_plotter"]
+__all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
+           "save_plotter", "font_file", "set_vtk_font"]
 
 OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
 """Okabe & Ito (2008), "Color universal design": eight colours told apart by every observer."""
@@ -36,6 +36,25 @@ DARK_YELLOW = "#a89600"
 has a contrast of 1.3:1 against white, this 3.0:1 (WCAG 2.1 relative luminance); under a simulated
 deuteranopia (Machado et al. 2009) it is a yellow 10 L* units darker than the palette's orange but
 only 5 lighter than its vermilion: a figure that draws both tells them apart by line style too."""
+
+DARK_ORANGE = "#9c6c00"
+"""Okabe & Ito's orange (#e69f00) darkened at the same hue (each sRGB channel x 0.68) for text on
+white: the orange has a contrast of 2.25:1 against white, this 4.6:1 (WCAG 2.1 asks 4.5:1 for text).
+Lines and fills keep the palette's orange; text drawn in a line's colour goes through
+:func:`text_colour`."""
+
+
+def text_colour(colour):
+    """The colour to write text in beside a line of ``colour``, on white: Okabe & Ito's orange and
+    yellow give their darkened variants (:data:`DARK_ORANGE`, :data:`DARK_YELLOW`), others are kept.
+
+    Examples
+    --------
+    >>> text_colour("#E69F00"), text_colour("#f0e442"), text_colour("#0072b2")
+    ('#9c6c00', '#a89600', '#0072b2')
+    """
+    return {OKABE_ITO[4]: DARK_ORANGE, OKABE_ITO[6]: DARK_YELLOW}.get(str(colour).lower(), colour)
+
 
 STYLE = {
     "font.family": "sans-serif",
@@ -178,6 +197,23 @@ def off_screen_plotter(width, height, shape=(1, 1)):
     pv.OFF_SCREEN = True
     return pv.Plotter(off_screen=True, window_size=(int(width), int(height)),
                       shape=tuple(int(n) for n in shape), border=False)
+
+
+def font_file():
+    """The file of the figures' typeface (:data:`STYLE`'s DejaVu Sans, the copy matplotlib ships), so
+    that VTK text (pyvista's ``font_file``, :func:`set_vtk_font`) is set in the same face."""
+    from matplotlib import font_manager
+
+    return font_manager.findfont(STYLE["font.sans-serif"][0], fallback_to_default=False)
+
+
+def set_vtk_font(*text_properties):
+    """Set VTK text properties (a scalar bar's title and labels, ...) in :func:`font_file`."""
+    import vtk
+
+    for prop in text_properties:
+        prop.SetFontFamily(vtk.VTK_FONT_FILE)
+        prop.SetFontFile(font_file())
 
 
 def save_plotter(plotter, path, tag=None):

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from reflectance.io.figures import TEXT_SIZE, text_colour
 from reflectance.papers.polar import direction_from_angles
 
 __all__ = ["draw_brdf_angles"]
@@ -42,6 +43,7 @@ def draw_brdf_angles(ax, theta_i_deg, phi_i_deg, theta_v_deg, phi_v_deg, colours
     Angles in degrees; phi from the surface's x axis, counter-clockwise seen from above. Labels sit
     outside the arcs and away from the vectors.
     """
+    phi_label = {"\u03c6\u1d62": (0.12, 0.5), "\u03c6\u1d65": (0.7, 0.84)}
     colours = colours or {"L": "#e69f00", "V": "#0072b2", "N": "0.15", "surface": "0.85"}
     P = _projector()
     N, x = np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0])
@@ -52,12 +54,12 @@ def draw_brdf_angles(ax, theta_i_deg, phi_i_deg, theta_v_deg, phi_v_deg, colours
     ax.fill(*P(circle).T, color=colours["surface"], alpha=0.6, lw=0)
     ax.plot(*P(circle).T, color="0.6", lw=0.8)
     ax.plot(*P(np.array([[0, 0, 0], 1.25 * x])).T, color="0.45", lw=0.9, ls=(0, (4, 2)))
-    ax.text(*P(1.36 * x), "x", ha="center", va="center", fontsize=9, color="0.35")
+    ax.text(*P(1.36 * x), "x", ha="center", va="center", fontsize=TEXT_SIZE["symbol"], color="0.35")
     for vec, name, colour in ((N, "N", colours["N"]), (L, "L", colours["L"]), (V, "V", colours["V"])):
         ax.annotate("", xy=P(vec), xytext=P(np.zeros(3)),
                     arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.6, shrinkA=0, shrinkB=0))
-        ax.text(*(P(1.12 * vec)), name, color=colour, ha="center", va="center", fontsize=11,
-                fontweight="bold")
+        ax.text(*(P(1.12 * vec)), name, color=text_colour(colour), ha="center", va="center",
+                fontsize=TEXT_SIZE["symbol"] + 1.5, fontweight="bold")
     for vec, theta_name, phi_name, colour, r_theta, r_phi in (
             (L, "\u03b8\u1d62", "\u03c6\u1d62", colours["L"], 0.4, 0.38),
             (V, "\u03b8\u1d65", "\u03c6\u1d65", colours["V"], 0.55, 0.62)):
@@ -68,17 +70,20 @@ def draw_brdf_angles(ax, theta_i_deg, phi_i_deg, theta_v_deg, phi_v_deg, colours
         arc = _arc(N, vec / np.linalg.norm(vec), r_theta)  # theta: from N to the direction
         ax.plot(*P(arc).T, color=colour, lw=1.2)
         mid = arc[len(arc) // 2] / r_theta
-        ax.text(*P((r_theta + 0.2) * mid), theta_name, color=colour, ha="center", va="center",
-                fontsize=11)
+        ax.text(*P((r_theta + 0.2) * mid), theta_name, color=text_colour(colour), ha="center",
+                va="center", fontsize=TEXT_SIZE["symbol"] + 1.5)
         phi = np.arctan2(flat[1], flat[0]) % (2 * np.pi)  # phi: from x, counter-clockwise
         t = np.linspace(0.0, phi, 90)
         ring = r_phi * np.stack([np.cos(t), np.sin(t), np.zeros_like(t)], -1)
         ax.plot(*P(ring).T, color=colour, lw=1.2)
         ax.annotate("", xy=P(ring[-1]), xytext=P(ring[-4]),
                     arrowprops=dict(arrowstyle="-|>", color=colour, lw=1.0))
-        half = r_phi * np.array([np.cos(0.7 * phi), np.sin(0.7 * phi), 0.0])
-        ax.text(*P(half * (1 + 0.22 / r_phi)), phi_name, color=colour, ha="center", va="center",
-                fontsize=11)
+        # the label beside its ring where no other ring or vector passes: phi_label = (fraction of
+        # phi along the ring, radius of the label)
+        at, radius = phi_label[phi_name]
+        spot = radius * np.array([np.cos(at * phi), np.sin(at * phi), 0.0])
+        ax.text(*P(spot), phi_name, color=text_colour(colour), ha="center", va="center",
+                fontsize=TEXT_SIZE["symbol"] + 1.5)
     points = P(np.concatenate([circle, 1.2 * np.stack([N, L, V])]))
     lo, hi = points.min(axis=0) - 0.08, points.max(axis=0) + 0.08
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), aspect="equal")

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.patches import Arc, Polygon
 
-from reflectance.io.figures import TEXT_SIZE
+from reflectance.io.figures import TEXT_SIZE, text_colour
 
 __all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle", "draw_dimension"]
 
@@ -24,27 +24,32 @@ COLOURS = {"light": "#e69f00", "eye": "#0072b2", "masked": "#d55e00", "facet": "
            "other": "0.75", "normal": "0.2"}
 
 
-def draw_arrow(ax, start, vector, label=None, color="k", **kwargs):
-    """An arrow from ``start`` along ``vector`` with an optional label just beyond its tip."""
+def draw_arrow(ax, start, vector, label=None, color="k", label_offset=(0.0, 0.0), **kwargs):
+    """An arrow from ``start`` along ``vector`` with an optional label just beyond its tip (moved by
+    ``label_offset``, data units, where a line passes there)."""
     start, vector = np.asarray(start, float), np.asarray(vector, float)
     ax.annotate("", xy=start + vector, xytext=start,
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=1.4, shrinkA=0, shrinkB=0,
                                 **kwargs))
     if label:
-        tip = start + vector * (1 + 0.14 / max(np.linalg.norm(vector), 1e-9))
-        ax.text(*tip, label, color=color, ha="center", va="center", fontsize=TEXT_SIZE["symbol"], zorder=6,
+        tip = start + vector * (1 + 0.14 / max(np.linalg.norm(vector), 1e-9)) + label_offset
+        ax.text(*tip, label, color=text_colour(color), ha="center", va="center",
+                fontsize=TEXT_SIZE["symbol"], zorder=6,
                 bbox=dict(facecolor="white", edgecolor="none", alpha=0.85, pad=0.6))
 
 
-def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_radius=1.45):
-    """Arc of the (smaller) angle between directions u and v at ``vertex``, labelled at its bisector."""
+def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_radius=1.45,
+               label_at=0.5):
+    """Arc of the (smaller) angle between directions u and v at ``vertex``, labelled at its bisector
+    (or at the fraction ``label_at`` of the angle, where a line runs along the bisector)."""
     a1, a2 = np.degrees(np.arctan2(u[1], u[0])), np.degrees(np.arctan2(v[1], v[0]))
     if (a2 - a1) % 360 > 180:  # draw counter-clockwise over the smaller angle
         a1, a2 = a2, a1
     ax.add_patch(Arc(vertex, 2 * radius, 2 * radius, theta1=a1, theta2=a2, color=color, lw=1.1))
-    mid = np.radians(a1 + ((a2 - a1) % 360) / 2)
+    mid = np.radians(a1 + label_at * ((a2 - a1) % 360))
     ax.text(*(np.asarray(vertex) + label_radius * radius * np.array([np.cos(mid), np.sin(mid)])),
-            label, ha="center", va="center", fontsize=fontsize or TEXT_SIZE["symbol"], color=color)
+            label, ha="center", va="center", fontsize=fontsize or TEXT_SIZE["symbol"],
+            color=text_colour(color))
 
 
 def draw_dimension(ax, P0, P1, offset, label, color="k"):
@@ -100,7 +105,10 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
     if vectors:
         M = (A + B) / 2
         # N shorter than H, L', E': its label stays clear of theirs when E' or L' lies near N
-        draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
+        # ... and beside its tip, on the side away from the steeper of L', E' (its shaft runs there)
+        steep = max((sim.L2, sim.E2), key=lambda v: v[1])
+        draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--",
+                   label_offset=(-0.09 * np.sign(steep[0] or 1.0), -0.07))
         draw_arrow(ax, M, 0.55 * h * sim.H2, "H", "k")
         draw_arrow(ax, M, 0.8 * h * sim.L2, "L'", COLOURS["light"])
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])
@@ -144,7 +152,8 @@ def draw_top_view(ax, sim, L, E, H):
         if label != "H":
             ax.plot(*np.column_stack([O + top, O + [top[0], 0]]), color=c, ls=":", lw=1.2)
             ax.plot(*(O + [top[0], 0]), "o", color=c, ms=5)
-            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=c, fontsize=TEXT_SIZE["symbol"],
+            ax.text(*(O + [top[0], 0.06 * np.sign(-top[1])]), f"{label}'", color=text_colour(c),
+                    fontsize=TEXT_SIZE["symbol"],
                     ha="center", va="bottom" if top[1] < 0 else "top")
     for u, label in ((-1, "A"), (0, "B"), (1, "C")):
         ax.text(u, 1.06, label, ha="center", va="top", fontsize=TEXT_SIZE["symbol"],

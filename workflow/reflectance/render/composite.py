@@ -43,7 +43,7 @@ def covered_rows(images, margin=4):
 
 
 def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head=0.25, foot=0.4,
-               top=0.45, dpi=100):
+               top=0.45, dpi=100, label_size=None):
     """A figure of display images (encoded RGB) in a grid on a black ground.
 
     Parameters
@@ -58,8 +58,16 @@ def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head
         Rows of every image shown.
     head, foot, top : float
         Inches above each row of images (headings), below it (labels) and above the grid (title).
+    dpi : float
+        Image pixels per inch: the figure is ``n_cols`` images wide at this resolution (choose it so
+        that the figure is :data:`reflectance.io.figures.PRINT_WIDTH_IN` wide, and save it at ``dpi``).
+    label_size : float, optional
+        Points of the labels (default ``TEXT_SIZE["annotation"]``); headings and title use the
+        figures' symbol and title sizes.
     """
-    from reflectance.io.figures import new_figure
+    from reflectance.io.figures import STYLE, TEXT_SIZE, new_figure
+
+    label_size = TEXT_SIZE["annotation"] if label_size is None else label_size
 
     first = cells[0][2][crop]
     w, h = first.shape[1] / dpi, first.shape[0] / dpi
@@ -71,13 +79,14 @@ def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head
         ax.imshow(rgb[crop], interpolation="nearest")
         ax.set_axis_off()
         ax.text(0.5, -0.01, label, transform=ax.transAxes, ha="center", va="top", color="white",
-                fontsize=8, linespacing=1.15)
+                fontsize=label_size, linespacing=1.15)
     for row, col, text, style in headings:
         style = dict(style)
         y0 = fig_h - top - row * (head + h + foot) - head
         fig.text(style.pop("x", col / n_cols + 0.01), (y0 + 0.07) / fig_h, text,
-                 **{"color": "white", "fontsize": 9, "ha": "left", **style})
-    fig.suptitle(title, color="white", fontsize=10)
+                 **{"color": "white", "fontsize": TEXT_SIZE["symbol"], "ha": "left", **style})
+    fig.suptitle(title, color="white", fontsize=STYLE["figure.titlesize"], y=1 - 0.06 / fig_h,
+                 va="top", linespacing=1.3)
     return fig
 
 
