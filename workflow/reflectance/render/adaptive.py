@@ -1,0 +1,156 @@
+"""Adaptive supersampling: more samples in the pixels whose samples disagree.
+
+A render first samples every pixel on the camera's regular n x n grid
+(:meth:`reflectance.render.camera.Camera.sample_coordinates`). A pixel is then *refined* when
+
+- a silhouette crosses it: the object seen (or the background) is not the same at every sample
+  of its window; or
+- the shading varies across it by more than ``threshold`` in CIELAB units: the spread (largest
+  minus smallest) over its window of 116 (t / t_n)^(1/3) for each of t = X, Y, Z on the display's
+  exposure (t_n the display white's; CIE 15:2004 Eq. 8.3-8.5, the cube root of L*, a* and b*),
+  for the largest of the three.
+
+The window is the pixel's own n x n samples and the ring of samples around them (one fine-grid
+sample of each neighbour, (n + 2)^2 in all), so that a highlight or an edge lying between two
+pixels' samples still shows. The exposure is the one the display will apply, measured on the
+first pass's image: the threshold is in the units of the colour difference the reader sees. The
+cube root without CIELAB's linear toe near black over-estimates the spread of very dark pixels:
+they are refined more often than needed, never less.
+
+A refined pixel is sampled again on a regular N x N grid (``supersample``, N > n, the sample
+positions of a camera with supersampling N: deterministic) by the same exact machinery (the ID
+buffer of the pixel's band of rows at the finer spacing chooses each sample's triangle, the
+float64 ray and the cast-shadow rays decide, :func:`reflectance.render.visibility.visibility`
+with ``select``), and its value is the box-filter mean of those N x N samples: the same numbers
+as the whole image rendered at N x N in that pixel. The pixels are refined in bands of rows
+(:func:`refinement_bands`) so that memory stays bounded, and the cost grows with the number of
+refined pixels, not with the number of wavelengths (the shading is the table path's).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Refinement", "pixel_spread", "refine_mask", "refinement_bands",
+           "REFINE_BAND_SAMPLES", "REFINE_BAND_ID_PIXELS"]
+
+#: refined samples traced at once (bounds the per-sample arrays of a refinement band)
+REFINE_BAND_SAMPLES = 1 << 19
+#: ID-buffer pixels drawn at once for a refinement band (rows of the finer grid x its columns)
+REFINE_BAND_ID_PIXELS = 1 << 23
+
+
+@dataclass(frozen=True)
+class Refinement:
+    """How a scene's pixels are refined (the scene's ``camera.adaptive``).
+
+    Attributes
+    ----------
+    enabled : bool
+    threshold : float
+        Largest spread, in CIELAB units on the display's exposure, that a pixel's window may show
+        without being refined (see the module's description).
+    supersample : int
+        N: a refined pixel gets N x N samples (more than the camera's n x n).
+    """
+
+    enabled: bool = False
+    threshold: float = 2.0
+    supersample: int = 8
+
+    def __post_init__(self):
+        if not (np.isfinite(self.threshold) and self.threshold > 0):
+            raise ValueError(f"adaptive threshold must be a positive number, got "
+                             f"{self.threshold!r}")
+        if isinstance(self.supersample, bool) or not isinstance(self.supersample,
+                                                                (int, np.integer)) \
+                or not 1 <= self.supersample <= 64:
+            raise ValueError(f"adaptive supersample must be an integer in 1 .. 64, got "
+                             f"{self.supersample!r}")
+
+
+def _window_range(values, n):
+    """(min, max) per pixel of a fine-grid array (rows, cols[, k]) over each pixel's n x n
+    samples and the ring of samples around them (edge samples repeated at the band's border)."""
+    from scipy.ndimage import maximum_filter, minimum_filter
+
+    size = (3, 3) + (1,) * (values.ndim - 2)
+    hi = maximum_filter(values, size=size, mode="nearest")
+    lo = minimum_filter(values, size=size, mode="nearest")
+    rows, cols = values.shape[:2]
+    shape = (rows // n, n, cols // n, n) + values.shape[2:]
+    return lo.reshape(shape).min(axis=(1, 3)), hi.reshape(shape).max(axis=(1, 3))
+
+
+def pixel_spread(samples, XYZ, white):
+    """Per pixel of a band: the spread of its window before exposure, and its silhouettes.
+
+    Parameters
+    ----------
+    samples : SurfaceSamples
+        A band of the regular grid (:func:`reflectance.render.visibility.visibility`).
+    XYZ : ndarray, shape (N, 3)
+        The samples' shaded linear XYZ.
+    white : array_like, shape (3,)
+        XYZ of the display white (Y = 1).
+
+    Returns
+    -------
+    spread : ndarray of float32, shape (rows // n, cols // n)
+        Over each pixel's window, the largest of the spreads of (t / t_n)^(1/3), t = X, Y, Z
+        (unexposed: on an exposure s it is s^(1/3) times this, :func:`refine_mask`).
+    silhouette : ndarray of bool, same shape
+        The window's samples do not all see the same object (or all the background).
+    """
+    n = samples.supersample
+    root = np.cbrt(np.maximum(samples.image(XYZ), 0.0) / np.asarray(white, np.float64))
+    lo, hi = _window_range(root, n)
+    spread = (hi - lo).max(axis=-1).astype(np.float32)
+    lo, hi = _window_range(samples.image(samples.object_id), n)
+    return spread, lo != hi
+
+
+def refine_mask(spread, silhouette, scale, threshold):
+    """Pixels to refine: a silhouette, or a spread above ``threshold`` CIELAB units on the
+    exposure ``scale`` (a factor on XYZ): 116 s^(1/3) spread > threshold (CIE 15:2004
+    Eq. 8.3: L* = 116 f(Y / Y_n) - 16, f the cube root)."""
+    limit = threshold / (116.0 * np.cbrt(max(float(scale), 0.0)) or 1.0)
+    return silhouette | (spread > limit)
+
+
+def refinement_bands(mask, supersample, max_samples=None, max_id_pixels=None):
+    """The refinement's bands: ``[(rows, select, pixels)]`` where ``rows`` (start, stop) is a
+    band of rows of the N x N fine grid, ``select`` its refined samples (row-major indices in the
+    band; pixel by pixel, N x N each, in the order of ``pixels``) and ``pixels`` the flat indices
+    (row * width + col) of its refined pixels, increasing.
+
+    A band spans whole pixel rows from the first refined one on; it ends before the row that
+    would take it beyond ``max_samples`` refined samples (default :data:`REFINE_BAND_SAMPLES`)
+    or ``max_id_pixels`` ID-buffer pixels (default :data:`REFINE_BAND_ID_PIXELS`), and always
+    holds at least one pixel row. Rows without refined pixels between bands are skipped.
+    """
+    mask = np.asarray(mask, bool)
+    N = int(supersample)
+    max_samples = REFINE_BAND_SAMPLES if max_samples is None else int(max_samples)
+    max_id = REFINE_BAND_ID_PIXELS if max_id_pixels is None else int(max_id_pixels)
+    height, width = mask.shape
+    per_row = np.count_nonzero(mask, axis=1) * N * N
+    cols = width * N
+    block = (np.arange(N)[:, None] * cols + np.arange(N)[None, :]).ravel()  # a pixel's samples
+    bands, row = [], 0
+    while row < height:
+        if per_row[row] == 0:
+            row += 1
+            continue
+        stop, count = row + 1, per_row[row]
+        while (stop < height and count + per_row[stop] <= max_samples
+               and (stop + 1 - row) * N * cols <= max_id):
+            count += per_row[stop]
+            stop += 1
+        r, c = np.nonzero(mask[row:stop])
+        select = (((r * N) * cols + c * N)[:, None] + block[None, :]).ravel()
+        bands.append(((row * N, stop * N), select, (r + row) * width + c))
+        row = stop
+    return bands
