@@ -76,11 +76,17 @@ class RenderResult:
     components : dict or None
         ``{name: (height, width, 3)}`` for :data:`COMPONENTS` when asked for.
     timings : dict
-        Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total``.
+        Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total`` (and, with adaptive
+        supersampling, ``refinement``: the refinement's share of those three).
     stats : dict
         Visibility statistics, the fraction of samples hit and the fraction of hit samples in
-        each light's shadow.
+        each light's shadow (of the first pass, n x n per pixel); ``refined``, the fraction of
+        pixels the adaptive supersampling refined, and ``samples_per_pixel``, the mean number
+        of camera samples spent per pixel (n^2 plus N^2 per refined pixel: the budget).
     scene : Scene
+    refined : ndarray of bool, shape (height, width), or None
+        The pixels sampled again at N x N (:mod:`reflectance.render.adaptive`); None when the
+        scene's adaptive supersampling is off.
     """
 
     XYZ: np.ndarray
@@ -88,6 +94,7 @@ class RenderResult:
     timings: dict
     stats: dict
     scene: object = field(repr=False)
+    refined: np.ndarray | None = field(default=None, repr=False)
 
 
 #: images of at most this many samples are traced in one pass (every figure of the workflow is)
@@ -242,7 +249,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         timings["shadows"] += t["shadows"]
         timings["shading"] += time.perf_counter() - t1
     stats = count.stats()
-    refined = 0
+    refined, mask = 0, None
     if adaptive:
         t1 = time.perf_counter()
         mask = refine_mask(spread, silhouette, _display_scale(scene, image),
@@ -256,7 +263,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     stats.update(refined=refined / pixels, samples_per_pixel=n_ss**2 + (
         refined * refinement.supersample**2 / pixels if adaptive else 0.0))
     timings["total"] = time.perf_counter() - t0
-    return RenderResult(image, parts, timings, stats, scene)
+    return RenderResult(image, parts, timings, stats, scene, mask)
 
 
 def _refine(scene, primitives, mask, image, parts, spectral, components, fresnel_table,

@@ -123,7 +123,7 @@ def visibility(meshes, camera, rows=None, select=None):
     lost = missed[best_key[missed] < 0]
     if len(lost):
         _search_projected_boxes(scene, view, eye, d, lost, cols, start, best_t, best_key,
-                                best_b1, best_b2, where)
+                                best_b1, best_b2, where, n_ss)
     hit = best_key >= 0
     stats = {
         "raster_miss": len(missed) / N,
@@ -144,24 +144,36 @@ _CHUNK = 1 << 18  # camera rays tested at once (bounds the memory of the ray-tes
 
 
 def _search_projected_boxes(scene, view, eye, d, samples, cols, first_row, best_t, best_key,
-                            best_b1, best_b2, where):
+                            best_b1, best_b2, where, group=1):
     """Exact nearest hit of each sample's ray among the primitives whose screen-space bounding
     box holds the sample (updates the ``best_*`` arrays in place); sample s sits at
-    ``where[s]`` of the band (row-major), whose first row is row ``first_row`` of the view."""
+    ``where[s]`` of the band (row-major), whose first row is row ``first_row`` of the view.
+
+    The samples are taken ``group`` x ``group`` cells of the grid at a time (a pixel's): the
+    primitives whose boxes meet the cell are found once, and each sample's among them."""
     x, y, _ = view.project(scene.P)
     tx, ty = x[scene.T], y[scene.T]  # (3, n) corners of every triangle on the fine grid
     x0, x1, y0, y1 = tx.min(axis=0), tx.max(axis=0), ty.min(axis=0), ty.max(axis=0)
-    for s in samples:
-        px, py = where[s] % cols + 0.5, where[s] // cols + first_row + 0.5
-        near = np.nonzero((x0 <= px) & (px <= x1) & (y0 <= py) & (py <= y1))[0]
-        keys = np.unique(scene.key[near])
-        if not len(keys):
-            continue
-        t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1), keys,
-                                       0.0, np.inf)
-        if h.any():
-            j = int(np.argmin(np.where(h, t, np.inf)))
-            best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
+    at = where[samples]
+    sx, sy = at % cols + 0.5, at // cols + first_row + 0.5
+    cell = (at // cols + first_row) // group * (cols // group + 1) + at % cols // group
+    order = np.argsort(cell, kind="stable")
+    cuts = np.flatnonzero(np.diff(cell[order])) + 1
+    for members in np.split(order, cuts):
+        mx, my = sx[members], sy[members]
+        box = np.nonzero((x0 <= mx.max()) & (mx.min() <= x1) & (y0 <= my.max())
+                         & (my.min() <= y1))[0]
+        for m in members:
+            s, px, py = samples[m], sx[m], sy[m]
+            near = box[(x0[box] <= px) & (px <= x1[box]) & (y0[box] <= py) & (py <= y1[box])]
+            keys = np.unique(scene.key[near])
+            if not len(keys):
+                continue
+            t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1),
+                                           keys, 0.0, np.inf)
+            if h.any():
+                j = int(np.argmin(np.where(h, t, np.inf)))
+                best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
 
 
 def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, select=None):
@@ -225,7 +237,8 @@ def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, se
     object_id = np.full(N, -1, np.int32)
     object_id[hit] = scene.object_id[triangle[hit]]
     return SurfaceSamples(
-        shape=(stop - start, cols) if select is None else (N, 1), supersample=n_ss, hit=hit, object_id=object_id,
+        shape=(stop - start, cols) if select is None else (N, 1), supersample=n_ss, hit=hit,
+        object_id=object_id,
         triangle=triangle, barycentric=barycentric, position=position, normal=normal,
         geometric_normal=geometric, flipped=flipped, uv=uv, view=view, depth=t, pixel=pixel,
         stats=stats, scene=scene,
