@@ -577,8 +577,11 @@ def _add_bench(sub):
                     "second, peak resident memory, brute-force per-wavelength shading against "
                     "the per-angle table (speed ratio, CIEDE2000), the error against a "
                     "converged reference (the same render at --reference-supersample, "
-                    "CIEDE2000 mean and 95th percentile), and the shading time on 5 nm "
-                    "and 1 nm wavelength grids.")
+                    "CIEDE2000 mean and 95th percentile), the samples per pixel spent and the "
+                    "share of pixels refined by the adaptive supersampling, and the shading "
+                    "time on 5 nm and 1 nm wavelength grids. The hard scene "
+                    "workflow/scenes/bench_hard.yaml has sharp highlights, small lights and "
+                    "silhouettes.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels, 1 to 16384 (default 256 512 1024)")
@@ -591,9 +594,12 @@ def _add_bench(sub):
                    help="wavelength steps compared at --grid-size, 0 < NM <= 100 (default 5 1)")
     p.add_argument("--grid-size", type=PIXELS, default=512,
                    help="size of the grid comparison (1 to 16384)")
-    p.add_argument("--reference-supersample", type=_whole(0, 64), default=8,
-                   help="n x n samples per pixel of the converged reference (0: skip; skipped "
-                        "where it would exceed 2**24 samples)")
+    p.add_argument("--reference-supersample", type=_whole(0, 64), default=16,
+                   help="n x n samples per pixel of the converged reference, no adaptive "
+                        "refinement (0: skip; skipped where it would exceed 2**26 samples)")
+    p.add_argument("--adaptive", choices=("scene", "on", "off"), default="scene",
+                   help="adaptive supersampling: as the scene's camera.adaptive says (default), "
+                        "or switched on or off")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",
@@ -624,7 +630,8 @@ def _run_bench(args):
         progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
                             args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
-                            args.reference_supersample, progress=progress)
+                            args.reference_supersample, progress=progress,
+                            adaptive={"scene": None, "on": True, "off": False}[args.adaptive])
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))
