@@ -5,22 +5,23 @@ A render first samples every pixel on the camera's regular n x n grid
 
 - a silhouette crosses it: the object seen (or the background) is not the same at every sample
   of its window; or
-- the shading curves across it by more than ``threshold`` in CIELAB units: the mean over its
-  window of 116 (t / t_n)^(1/3), for each of t = X, Y, Z on the display's exposure (t_n the
-  display white's; CIE 15:2004 Eq. 8.3-8.5: the cube root of L*, a* and b*), differs from the
-  mean over its own samples by more than the threshold, for the largest of the three.
+- the shading curves across it: the mean linear XYZ over its window differs from the mean
+  over its own samples by more than ``threshold`` CIELAB units, the difference of each of
+  t = X, Y, Z taken through the slope of CIELAB's f at the pixel's exposed value (CIE 15:2004
+  Eq. 8.3-8.5; :func:`refine_mask`), on the display's exposure.
 
 The window is the pixel's own n x n samples and the ring of samples around them (one fine-grid
 sample of each neighbour, (n + 2)^2 in all), so that a highlight or an edge lying between two
 pixels' samples still shows. A shading that varies linearly across the window (the flank of a
-broad highlight) leaves the two means equal, and needs no refinement: the pixel's regular grid
+broad highlight) leaves the two means equal and needs no refinement: the pixel's regular grid
 integrates it exactly; a highlight's peak, a narrow highlight and a shadow edge do not. (A first
 design refined where the window's samples *spread* by more than the threshold: on the Fig. 6b
 vase it refined 12 % of the pixels, the whole flanks of its highlights, where 2 x 2 is already
-0.006 CIEDE2000 from 8 x 8.) The exposure is the one the display will apply, measured on the
-first pass's image: the threshold is in the units of the colour difference the reader sees. The
-cube root without CIELAB's linear toe near black over-estimates the differences of very dark
-pixels: they are refined more often than needed, never less.
+0.006 CIEDE2000 from 8 x 8. A second took the difference of the cube roots, not of the linear
+values the box filter averages: the flank of a Gaussian highlight is nearly linear in the cube
+root, and its worst pixel went unrefined.) The exposure is the one the display will apply,
+measured on the first pass's image, so the threshold is in the units of the colour difference
+the reader sees.
 
 A refined pixel is sampled again on a regular N x N grid (``supersample``, N > n, the sample
 positions of a camera with supersampling N: deterministic) by the same exact machinery (the ID
@@ -104,16 +105,13 @@ def _window_minus_pixel_mean(values, n):
     return window / (n + 2) ** 2 - own
 
 
-def pixel_spread(samples, XYZ, white):
-    """Per pixel of a band: how far its n x n samples are from the pixel integral, before
-    exposure, and its silhouettes.
+def pixel_spread(samples, XYZ):
+    """Per pixel of a band: the window's mean minus the pixel's own mean, and its silhouettes.
 
-    The estimate is the difference between the mean over the pixel's window (its samples and
-    the ring around them) and its own mean, of (t / t_n)^(1/3) for t = X, Y, Z: for shading
-    that varies linearly across the window the two agree (the midpoint rule integrates a
-    linear function exactly, and the window is centred on the pixel); curvature (a highlight's
-    peak, an edge, a feature between the samples) makes them differ. For a quadratic variation
-    the difference is 12 times the n = 2 grid's error of the pixel mean.
+    For shading that varies linearly across the window the two means agree (the midpoint rule
+    integrates a linear function exactly, and the window is centred on the pixel); curvature (a
+    highlight's peak, an edge, a feature between the samples) makes them differ: for a quadratic
+    variation by 12 times the 2 x 2 grid's error of the pixel mean.
 
     Parameters
     ----------
@@ -121,30 +119,53 @@ def pixel_spread(samples, XYZ, white):
         A band of the regular grid (:func:`reflectance.render.visibility.visibility`).
     XYZ : ndarray, shape (N, 3)
         The samples' shaded linear XYZ.
-    white : array_like, shape (3,)
-        XYZ of the display white (Y = 1).
 
     Returns
     -------
-    spread : ndarray of float32, shape (rows // n, cols // n)
-        The largest over X, Y, Z of that difference's magnitude (unexposed: on an exposure s it
-        is s^(1/3) times this, :func:`refine_mask`).
-    silhouette : ndarray of bool, same shape
+    difference : ndarray of float32, shape (rows // n, cols // n, 3)
+        Mean linear XYZ over each pixel's window minus the mean over its own n x n samples.
+    silhouette : ndarray of bool, shape (rows // n, cols // n)
         The window's samples do not all see the same object (or all the background).
     """
     n = samples.supersample
-    root = np.cbrt(np.maximum(samples.image(XYZ), 0.0) / np.asarray(white, np.float64))
-    spread = np.abs(_window_minus_pixel_mean(root, n)).max(axis=-1).astype(np.float32)
+    difference = _window_minus_pixel_mean(samples.image(XYZ), n).astype(np.float32)
     lo, hi = _window_range(samples.image(samples.object_id), n)
-    return spread, lo != hi
+    return difference, lo != hi
 
 
-def refine_mask(spread, silhouette, scale, threshold):
-    """Pixels to refine: a silhouette, or a difference (:func:`pixel_spread`) above ``threshold``
-    CIELAB units on the exposure ``scale`` (a factor on XYZ): 116 s^(1/3) spread > threshold (CIE 15:2004
-    Eq. 8.3: L* = 116 f(Y / Y_n) - 16, f the cube root)."""
-    limit = threshold / (116.0 * np.cbrt(max(float(scale), 0.0)) or 1.0)
-    return silhouette | (spread > limit)
+#: CIELAB's f(t) is t^(1/3) above this t and linear below (CIE 15:2004 Eq. 8.5: (6/29)^3)
+_TOE = (6.0 / 29.0) ** 3
+
+
+def refine_mask(difference, silhouette, XYZ, scale, threshold, white):
+    """Pixels to refine: a silhouette, or a window-minus-pixel difference (:func:`pixel_spread`)
+    worth more than ``threshold`` CIELAB units on the exposure ``scale`` (a factor on XYZ).
+
+    The difference of each of t = X, Y, Z is taken through the slope of CIELAB's f at the
+    pixel's own exposed value (CIE 15:2004 Eq. 8.3-8.5: L* = 116 f(Y / Y_n) - 16, a* and b* from
+    f(X / X_n), f(Y / Y_n), f(Z / Z_n); f(u) = u^(1/3), or its linear toe below (6/29)^3):
+    116 f'(s t / t_n) s |difference| / t_n, the largest of the three against the threshold.
+
+    Parameters
+    ----------
+    difference : ndarray, shape (H, W, 3)
+    silhouette : ndarray of bool, shape (H, W)
+    XYZ : ndarray, shape (H, W, 3)
+        The first pass's image (each pixel's own mean).
+    scale : float
+        The display's exposure factor on XYZ.
+    threshold : float
+    white : array_like, shape (3,)
+        XYZ of the display white (Y = 1).
+    """
+    white = np.asarray(white, np.float64)
+    s = max(float(scale), 0.0)
+    mask = silhouette.copy()
+    for c in range(3):  # channel by channel: temporaries of one image plane
+        u = np.maximum(XYZ[..., c], 0.0) * (s / white[c])
+        slope = 1.0 / (3.0 * np.cbrt(np.maximum(u, _TOE)) ** 2)  # f'(u); the toe's below
+        mask |= 116.0 * slope * (s / white[c]) * np.abs(difference[..., c]) > threshold
+    return mask
 
 
 def refinement_bands(mask, supersample, max_samples=None, max_id_pixels=None):

@@ -225,9 +225,8 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     if adaptive:  # per pixel of the first pass: its window's spread and silhouettes
         from reflectance.colour.colorimetry import white_XYZ
 
-        spread = np.zeros((camera.height, camera.width), np.float32)
+        difference = np.zeros((camera.height, camera.width, 3), np.float32)
         silhouette = np.zeros((camera.height, camera.width), bool)
-        white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
     for start, stop in bands:
         where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
         samples, shadowed, t = trace(scene, (start, stop), primitives,
@@ -242,7 +241,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
             for name, value in got.items():
                 parts[name][rows] = samples.to_pixels(value)
         if adaptive:
-            spread[rows], silhouette[rows] = pixel_spread(samples, XYZ, white)
+            difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
         count.add(samples, shadowed)
         del samples, shadowed, shaded, XYZ, got
         timings["visibility"] += t["visibility"]
@@ -252,9 +251,10 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     refined, mask = 0, None
     if adaptive:
         t1 = time.perf_counter()
-        mask = refine_mask(spread, silhouette, _display_scale(scene, image),
-                           refinement.threshold)
-        del spread, silhouette
+        white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
+        mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
+                           refinement.threshold, white)
+        del difference, silhouette
         refined = _refine(scene, primitives, mask, image, parts, spectral, components,
                           fresnel_table, timings, progress)
         timings["refinement"] = time.perf_counter() - t1
