@@ -144,7 +144,7 @@ def refine_mask(difference, silhouette, XYZ, scale, threshold, white):
     The difference of each of t = X, Y, Z is taken through the slope of CIELAB's f at the
     pixel's own exposed value (CIE 15:2004 Eq. 8.3-8.5: L* = 116 f(Y / Y_n) - 16, a* and b* from
     f(X / X_n), f(Y / Y_n), f(Z / Z_n); f(u) = u^(1/3), or its linear toe below (6/29)^3):
-    116 f'(s t / t_n) s |difference| / t_n, the largest of the three against the threshold.
+    116 f'(s t / t_n) s abs(difference) / t_n, the largest of the three against the threshold.
 
     Parameters
     ----------
