@@ -202,3 +202,10 @@ def test_adaptive_meets_the_accuracy_goal_where_2x2_does_not(root):
     assert plain[0] > 0.3 or plain[1] > 1.0, plain  # the scene is hard for 2 x 2
     assert adaptive[0] <= 0.3 and adaptive[1] <= 1.0, adaptive
     assert adaptive_result.stats["samples_per_pixel"] < 0.5 * REFERENCE_N**2
+
+
+def test_refined_components_add_up_to_the_refined_image(root):
+    result = render(sphere_scene(root / "spectra", size=24, m=0.1), components=True)
+    assert result.refined.any()
+    total = sum(result.components.values())
+    np.testing.assert_allclose(total, result.XYZ, rtol=1e-12, atol=1e-12)
