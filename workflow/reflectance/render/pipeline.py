@@ -9,6 +9,9 @@
    (:func:`reflectance.render.shading.shade`), background black;
 3. the n x n samples of each pixel averaged in linear XYZ (box filter,
    :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
+4. with the scene's adaptive supersampling on (``camera.adaptive``,
+   :mod:`reflectance.render.adaptive`): the pixels on a silhouette or whose shading curves
+   within them are traced, shaded and box-filtered again on a finer N x N grid, in bands.
 
 An image of more than :data:`SINGLE_TILE_SAMPLES` samples runs these steps band by band of
 pixel rows (:func:`tiles`), each band at most :data:`TILE_SAMPLES` samples, so that memory does
@@ -222,7 +225,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     refinement = getattr(scene, "refinement", None)
     adaptive = (refinement is not None and refinement.enabled
                 and refinement.supersample > n_ss)
-    if adaptive:  # per pixel of the first pass: its window's spread and silhouettes
+    if adaptive:  # per pixel of the first pass: its window's difference and silhouettes
         from reflectance.colour.colorimetry import white_XYZ
 
         difference = np.zeros((camera.height, camera.width, 3), np.float32)
