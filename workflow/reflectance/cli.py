@@ -533,7 +533,9 @@ def _run_render(args):
         _writable(option, path)
     progress = Progress(5, "reflectance render", enabled=not args.quiet)
     phases = ["scene", "visibility", "shadows", "shading", "writing"]
-    step = lambda phase: progress.update(phases.index(phase), phase)  # noqa: E731
+    # a band's or the refinement's phase is named "rows a-b: shading" and so on
+    step = lambda phase: progress.update(  # noqa: E731
+        phases.index(phase.rsplit(": ", 1)[-1]), phase)
     try:
         step("scene")
         scene = load_scene(args.scene, spectra_dir=args.spectra_dir, width=args.width,
@@ -561,7 +563,11 @@ def _run_render(args):
         print(f"{', '.join(path for _, path, _ in outputs)}: {scene.camera.width} x "
               f"{scene.camera.height} pixels, "
               f"{scene.camera.supersample} x {scene.camera.supersample} samples each, "
-              f"{scene.spectral if args.spectral is None else args.spectral} shading; "
+              + (f"{100 * result.stats['refined']:.1f} % refined to "
+                 f"{scene.refinement.supersample} x {scene.refinement.supersample} "
+                 f"({result.stats['samples_per_pixel']:.2f} samples per pixel), "
+                 if result.refined is not None else "")
+              + f"{scene.spectral if args.spectral is None else args.spectral} shading; "
               f"visibility {t['visibility']:.2f} s, shadows {t['shadows']:.2f} s, shading "
               f"{t['shading']:.2f} s", file=sys.stderr)
 
