@@ -533,7 +533,9 @@ def _run_render(args):
         _writable(option, path)
     progress = Progress(5, "reflectance render", enabled=not args.quiet)
     phases = ["scene", "visibility", "shadows", "shading", "writing"]
-    step = lambda phase: progress.update(phases.index(phase), phase)  # noqa: E731
+    # a band's or the refinement's phase is named "rows a-b: shading" and so on
+    step = lambda phase: progress.update(  # noqa: E731
+        phases.index(phase.rsplit(": ", 1)[-1]), phase)
     try:
         step("scene")
         scene = load_scene(args.scene, spectra_dir=args.spectra_dir, width=args.width,
@@ -561,7 +563,11 @@ def _run_render(args):
         print(f"{', '.join(path for _, path, _ in outputs)}: {scene.camera.width} x "
               f"{scene.camera.height} pixels, "
               f"{scene.camera.supersample} x {scene.camera.supersample} samples each, "
-              f"{scene.spectral if args.spectral is None else args.spectral} shading; "
+              + (f"{100 * result.stats['refined']:.1f} % refined to "
+                 f"{scene.refinement.supersample} x {scene.refinement.supersample} "
+                 f"({result.stats['samples_per_pixel']:.2f} samples per pixel), "
+                 if result.refined is not None else "")
+              + f"{scene.spectral if args.spectral is None else args.spectral} shading; "
               f"visibility {t['visibility']:.2f} s, shadows {t['shadows']:.2f} s, shading "
               f"{t['shading']:.2f} s", file=sys.stderr)
 
@@ -577,9 +583,12 @@ def _add_bench(sub):
                     "second, peak resident memory, brute-force per-wavelength shading against "
                     "the per-angle table (speed ratio, CIEDE2000), the error against a "
                     "converged reference (the same render at --reference-supersample, "
-                    "CIEDE2000 mean and 95th percentile), and the shading time on 5 nm "
-                    "and 1 nm wavelength grids; with Mitsuba 3 installed, at --crosscheck-size "
-                    "a path tracer's times and errors against its own converged render.")
+                    "CIEDE2000 mean and 95th percentile), the samples per pixel spent and the "
+                    "share of pixels refined by the adaptive supersampling, and the shading "
+                    "time on 5 nm and 1 nm wavelength grids. The hard scene "
+                    "workflow/scenes/bench_hard.yaml has sharp highlights, small lights and "
+                    "silhouettes. With Mitsuba 3 installed, at --crosscheck-size a path "
+                    "tracer's times and errors against its own converged render.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels, 1 to 16384 (default 256 512 1024)")
@@ -592,9 +601,12 @@ def _add_bench(sub):
                    help="wavelength steps compared at --grid-size, 0 < NM <= 100 (default 5 1)")
     p.add_argument("--grid-size", type=PIXELS, default=512,
                    help="size of the grid comparison (1 to 16384)")
-    p.add_argument("--reference-supersample", type=_whole(0, 64), default=8,
-                   help="n x n samples per pixel of the converged reference (0: skip; skipped "
-                        "where it would exceed 2**24 samples)")
+    p.add_argument("--reference-supersample", type=_whole(0, 64), default=16,
+                   help="n x n samples per pixel of the converged reference, no adaptive "
+                        "refinement (0: skip; skipped where it would exceed 2**26 samples)")
+    p.add_argument("--adaptive", choices=("scene", "on", "off"), default="scene",
+                   help="adaptive supersampling: as the scene's camera.adaptive says (default), "
+                        "or switched on or off")
     p.add_argument("--crosscheck-size", type=_whole(0, 16384), default=512, metavar="N",
                    help="with Mitsuba 3 installed (pip install .[crosscheck]), the size of the "
                         "path-tracer cross-check, if among --sizes (0: skip; default 512)")
@@ -631,6 +643,7 @@ def _run_bench(args):
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
                             args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
                             args.reference_supersample, progress=progress,
+                            adaptive={"scene": None, "on": True, "off": False}[args.adaptive],
                             crosscheck_size=args.crosscheck_size,
                             crosscheck_spp=args.crosscheck_spp)
     except (ValueError, RuntimeError) as err:

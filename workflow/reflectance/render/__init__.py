@@ -2,7 +2,7 @@
 
 Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
-(spectral, per-angle Fresnel table); rgb (a scene also rendered as a three-channel RGB renderer
+(spectral, per-angle Fresnel table); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
 would); scene (scene files); pipeline (trace, shade, write);
 composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
 exported to the path tracer Mitsuba 3, an optional extra).
@@ -14,10 +14,16 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
+    "Refinement": "adaptive",
+    "pixel_spread": "adaptive",
+    "refine_mask": "adaptive",
+    "refinement_bands": "adaptive",
+    "REFINE_BAND_SAMPLES": "adaptive",
+    "REFINE_BAND_ID_PIXELS": "adaptive",
     "render_spectral_and_rgb": "rgb",
     "display_exposure": "rgb",
     "dE2000_map": "rgb",

@@ -10,11 +10,14 @@ includes VTK's, belongs to that size alone) and reports:
 - median wall seconds over ``runs`` renders (:func:`reflectance.render.pipeline.render`, in
   bands of rows for large images) of visibility (camera ID buffer + exact hits), cast shadows
   (every light) and shading (table path), and samples per second of each;
-- the peak resident memory of those renders, and the samples per pixel;
+- the peak resident memory of those renders; the samples per pixel actually spent (the
+  budget: n x n everywhere plus N x N in each pixel the adaptive supersampling refined,
+  :mod:`reflectance.render.adaptive`, when the scene's ``camera.adaptive`` is on or
+  ``adaptive`` says so) and the fraction of pixels refined;
 - the error of the image against a converged reference: the same scene rendered with
-  ``reference_supersample`` x ``reference_supersample`` samples per pixel (brute-force
-  supersampling of the same shading; box filter), as CIEDE2000 mean and 95th percentile over
-  the lit pixels on the reference's exposure;
+  ``reference_supersample`` x ``reference_supersample`` samples per pixel everywhere
+  (brute-force supersampling of the same shading, no adaptive refinement; box filter), as
+  CIEDE2000 mean and 95th percentile over the lit pixels on the reference's exposure;
 - brute-force per-wavelength shading of the same samples: its seconds, its speed ratio to the
   table and the CIEDE2000 (mean, max over the lit pixels) between the two images (images of
   one band only);
@@ -44,10 +47,11 @@ from pathlib import Path
 
 __all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
 
-#: default samples per pixel side of the converged reference
-REFERENCE_SUPERSAMPLE = 8
-#: the reference is skipped at sizes where it would exceed this many samples
-REFERENCE_MAX_SAMPLES = 1 << 24
+#: default samples per pixel side of the converged reference (twice the adaptive refinement's
+#: default 8, so that a refined pixel is not compared with itself)
+REFERENCE_SUPERSAMPLE = 16
+#: the reference is skipped at sizes where it would exceed this many samples (512 px at 16 x 16)
+REFERENCE_MAX_SAMPLES = 1 << 26
 #: the size of the path-tracer cross-check (the issue's 512-px vase)
 CROSSCHECK_SIZE = 512
 
@@ -57,18 +61,24 @@ def _peak_MiB():
 
 
 def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersample=None,
-                     spectral=None, wavelengths=None):
+                     spectral=None, wavelengths=None, adaptive=None):
     """The benchmarked scene: a scene file's path, or a scene document (dict, with its
     ``source`` description under the key ``"_source"`` if any), with overrides as
-    :func:`reflectance.render.scene.load_scene` takes them."""
+    :func:`reflectance.render.scene.load_scene` takes them; ``adaptive`` (True or False)
+    switches the camera's adaptive supersampling on or off (None: the scene's)."""
     import copy
+    import dataclasses
 
     from reflectance.render.scene import load_scene, scene_from_dict
 
     overrides = {"width": width, "height": height, "supersample": supersample,
                  "spectral": spectral, "wavelengths": wavelengths}
     if not isinstance(scene, dict):
-        return load_scene(scene, spectra_dir=spectra_dir, **overrides)
+        out = load_scene(scene, spectra_dir=spectra_dir, **overrides)
+        if adaptive is None:
+            return out
+        return dataclasses.replace(out, refinement=dataclasses.replace(out.refinement,
+                                                                      enabled=bool(adaptive)))
     doc = copy.deepcopy(scene)
     source = doc.pop("_source", "scene document")
     doc["camera"].update({k: v for k, v in overrides.items()
@@ -77,14 +87,17 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
         doc["spectral"] = spectral
     if wavelengths is not None:
         doc["wavelengths"] = dict(wavelengths)
+    if adaptive is not None:
+        doc["camera"].setdefault("adaptive", {})["enabled"] = bool(adaptive)
     return scene_from_dict(doc, source=source, spectra_dir=spectra_dir)
 
 
 def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
                spectra_dir=None, reference_supersample=REFERENCE_SUPERSAMPLE,
-               reference_max_samples=REFERENCE_MAX_SAMPLES, progress=None):
+               reference_max_samples=REFERENCE_MAX_SAMPLES, progress=None, adaptive=None):
     """Measurements for one image size, in this process (see :func:`run_bench`); ``progress``, if
-    given, is called with the name of each phase as it starts."""
+    given, is called with the name of each phase as it starts; ``adaptive`` as for
+    :func:`load_bench_scene`."""
     import numpy as np
 
     from reflectance.colour.colorimetry import tristimulus_weights
@@ -98,7 +111,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     t0 = time.perf_counter()
     progress("scene")
     scene = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
-                             supersample=supersample, spectral="table")
+                             supersample=supersample, spectral="table", adaptive=adaptive)
     load_s = time.perf_counter() - t0
     times = {"visibility": [], "shadows": [], "shading": []}
     for run in range(runs):
@@ -116,6 +129,8 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         "wavelengths": len(scene.wavelengths), "load_s": load_s, "peak_MiB": peak,
         **{f"{k}_s": v for k, v in median.items()},
         "total_s": sum(median.values()),
+        # the budget actually spent (adaptive supersampling: n^2 + N^2 x the refined fraction)
+        "spp_spent": result.stats["samples_per_pixel"], "refined": result.stats["refined"],
         "visibility_samples_per_s": n_samples / median["visibility"],
         "shadows_samples_per_s": n_hit * len(scene.lights) / max(median["shadows"], 1e-12),
         "shading_samples_per_s": n_hit / median["shading"],
@@ -126,7 +141,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         t1 = time.perf_counter()
         reference = render(load_bench_scene(document, spectra_dir=spectra_dir, width=size,
                                             height=size, supersample=reference_supersample,
-                                            spectral="table")).XYZ
+                                            spectral="table", adaptive=False)).XYZ
         dE = pixel_difference_CIEDE2000(result.XYZ, reference, scene.display.illuminant,
                                         scene.observer, scene.wavelengths)
         out.update(reference_supersample=reference_supersample,
@@ -157,7 +172,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         progress(f"{step:g} nm wavelength grid")
         w = scene.document["wavelengths"]
         other = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
-                                 supersample=supersample,
+                                 supersample=supersample, adaptive=False,
                                  wavelengths={"start_nm": w["start_nm"], "end_nm": w["end_nm"],
                                               "step_nm": step})
         row = {"step_nm": step, "wavelengths": len(other.wavelengths)}
@@ -199,12 +214,13 @@ _PROGRESS = "@progress "  # a worker's progress lines on its standard output sta
 
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
-              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None,
+              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
               crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=None):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
-    :class:`reflectance.io.progress.Progress` told each size and each phase of it. With Mitsuba
+    :class:`reflectance.io.progress.Progress` told each size and each phase of it. ``adaptive``
+    (True, False; None: the scene's) switches the adaptive supersampling. With Mitsuba
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
     pixel; default :data:`reflectance.render.crosscheck.REFERENCE_SPP`)."""
@@ -218,7 +234,8 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
                "grids_nm": list(grids_nm) if size == grid_size else [],
-               "spectra_dir": spectra_dir, "reference_supersample": reference_supersample}
+               "spectra_dir": spectra_dir, "reference_supersample": reference_supersample,
+               "adaptive": adaptive}
         with tempfile.TemporaryFile("w+") as errors:
             # stdout is read line by line (progress, then the JSON result); stderr goes to a
             # file, so that a chatty worker cannot block on a full pipe
@@ -263,8 +280,9 @@ def format_report(results):
                      f"{r0['supersample']} x {r0['supersample']} samples per pixel, "
                      f"{r0['wavelengths']} wavelengths; median of {r0['runs']} runs; "
                      "peak = max resident memory of the process (VTK included)")
-    head = (f"{'size':>6} {'spp':>4} {'samples':>9} {'bands':>5} {'scene s':>8} {'visib. s':>9} "
-            f"{'shadow s':>9} {'shade s':>8} {'total s':>8} {'vis Ms/s':>9} {'shd Ms/s':>9} "
+    head = (f"{'size':>6} {'spp':>4} {'spent':>6} {'refined':>7} {'samples':>9} {'bands':>5} "
+            f"{'scene s':>8} {'visib. s':>9} {'shadow s':>9} {'shade s':>8} {'total s':>8} "
+            f"{'vis Ms/s':>9} {'shd Ms/s':>9} "
             f"{'peak MiB':>9} {'ref spp':>7} {'dE ref mean':>11} {'dE ref p95':>10} "
             f"{'brute s':>8} {'brute/tab':>9} {'dE00 mean':>10} {'dE00 max':>9}")
     lines.append(head)
@@ -276,12 +294,17 @@ def format_report(results):
                  f"{r['dE2000_mean']:10.2e} {r['dE2000_max']:9.2e}"
                  if "brute_force_s" in r else f"{'-':>8} {'-':>9} {'-':>10} {'-':>9}")
         lines.append(
-            f"{r['size']:>6} {r['spp']:>4} {r['samples']:>9} {r['bands']:>5} {r['load_s']:8.3f} "
+            f"{r['size']:>6} {r['spp']:>4} {r.get('spp_spent', r['spp']):6.2f} "
+            f"{100 * r.get('refined', 0.0):6.2f}% {r['samples']:>9} {r['bands']:>5} "
+            f"{r['load_s']:8.3f} "
             f"{r['visibility_s']:9.3f} "
             f"{r['shadows_s']:9.3f} {r['shading_s']:8.3f} {r['total_s']:8.3f} "
             f"{r['visibility_samples_per_s'] / 1e6:9.2f} {r['shading_samples_per_s'] / 1e6:9.2f} "
             f"{r['peak_MiB']:9.0f} {ref} {brute}")
-    lines.append("(scene s: reading the scene, building the mesh, resampling the spectra, once; "
+    lines.append("(spp: n x n samples per pixel of the first pass; spent: the mean samples per "
+                 "pixel actually traced, with the adaptive refinement's N x N in the refined "
+                 "pixels; refined: the share of pixels refined; "
+                 "scene s: reading the scene, building the mesh, resampling the spectra, once; "
                  "total s = visibility + shadows + shading; vis Ms/s: camera samples per second "
                  "of visibility; shd Ms/s: hit samples per second of table shading, all lights; "
                  "dE ref: CIEDE2000 of the image against the same render at 'ref spp' samples "
@@ -302,7 +325,8 @@ def _worker(argv):
     result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
                         job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
                         job["reference_supersample"],
-                        progress=lambda phase: print(_PROGRESS + phase, flush=True))
+                        progress=lambda phase: print(_PROGRESS + phase, flush=True),
+                        adaptive=job.get("adaptive"))
     print(json.dumps(result))
 
 

@@ -9,6 +9,9 @@
    (:func:`reflectance.render.shading.shade`), background black;
 3. the n x n samples of each pixel averaged in linear XYZ (box filter,
    :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
+4. with the scene's adaptive supersampling on (``camera.adaptive``,
+   :mod:`reflectance.render.adaptive`): the pixels on a silhouette or whose shading curves
+   within them are traced, shaded and box-filtered again on a finer N x N grid, in bands.
 
 An image of more than :data:`SINGLE_TILE_SAMPLES` samples runs these steps band by band of
 pixel rows (:func:`tiles`), each band at most :data:`TILE_SAMPLES` samples, so that memory does
@@ -35,6 +38,7 @@ import numpy as np
 from reflectance.colour.display import expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
+from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
 from reflectance.render.primitives import Primitives
 from reflectance.render.shading import shade, white_card_luminance
 from reflectance.render.shadows import shadow_masks
@@ -77,11 +81,17 @@ class RenderResult:
     components : dict or None
         ``{name: (height, width, 3)}`` for :data:`COMPONENTS` when asked for.
     timings : dict
-        Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total``.
+        Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total`` (and, with adaptive
+        supersampling, ``refinement``: the refinement's share of those three).
     stats : dict
         Visibility statistics, the fraction of samples hit and the fraction of hit samples in
-        each light's shadow.
+        each light's shadow (of the first pass, n x n per pixel); ``refined``, the fraction of
+        pixels the adaptive supersampling refined, and ``samples_per_pixel``, the mean number
+        of camera samples spent per pixel (n^2 plus N^2 per refined pixel: the budget).
     scene : Scene
+    refined : ndarray of bool, shape (height, width), or None
+        The pixels sampled again at N x N (:mod:`reflectance.render.adaptive`); None when the
+        scene's adaptive supersampling is off.
     """
 
     XYZ: np.ndarray
@@ -89,6 +99,7 @@ class RenderResult:
     timings: dict
     stats: dict
     scene: object = field(repr=False)
+    refined: np.ndarray | None = field(default=None, repr=False)
 
 
 #: images of at most this many samples are traced in one pass (every figure of the workflow is)
@@ -129,21 +140,24 @@ def _silent(phase):
     pass
 
 
-def trace(scene, rows=None, primitives=None, progress=None):
+def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None):
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
     (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
 
-    ``progress``, if given, is called with the name of each phase as it starts."""
+    ``select`` traces only those samples of the band (``visibility``'s); ``map_size`` sets the
+    light maps' side (default: from the band's share of the grid). ``progress``, if given, is
+    called with the name of each phase as it starts."""
     progress = progress or _silent
     t0 = time.perf_counter()
     progress("visibility")
-    samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows)
+    samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows,
+                         select)
     t1 = time.perf_counter()
     progress("shadows")
     if scene.shadows and scene.lights:
         shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
-                                _map_size(scene.camera, rows))
+                                map_size or _map_size(scene.camera, rows))
     else:
         shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
     t2 = time.perf_counter()
@@ -236,6 +250,14 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
     timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
     count = _Counts(len(scene.lights), len(scene.objects))
+    refinement = getattr(scene, "refinement", None)
+    adaptive = (refinement is not None and refinement.enabled
+                and refinement.supersample > n_ss)
+    if adaptive:  # per pixel of the first pass: its window's difference and silhouettes
+        from reflectance.colour.colorimetry import white_XYZ
+
+        difference = np.zeros((camera.height, camera.width, 3), np.float32)
+        silhouette = np.zeros((camera.height, camera.width), bool)
     for start, stop in bands:
         where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
         key = trace_key(scene, (start, stop)) if keep else None
@@ -257,13 +279,72 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         if components:
             for name, value in got.items():
                 parts[name][rows] = samples.to_pixels(value)
+        if adaptive:
+            difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
         count.add(samples, shadowed)
         del samples, shadowed, shaded, XYZ, got
         timings["visibility"] += t["visibility"]
         timings["shadows"] += t["shadows"]
         timings["shading"] += time.perf_counter() - t1
+    stats = count.stats()
+    refined, mask = 0, None
+    if adaptive:
+        t1 = time.perf_counter()
+        white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
+        mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
+                           refinement.threshold, white)
+        del difference, silhouette
+        refined = _refine(scene, primitives, mask, image, parts, spectral, components,
+                          fresnel_table, timings, progress)
+        timings["refinement"] = time.perf_counter() - t1
+    pixels = camera.height * camera.width
+    # the sample budget: every pixel's n x n, and N x N more in each refined pixel
+    stats.update(refined=refined / pixels, samples_per_pixel=n_ss**2 + (
+        refined * refinement.supersample**2 / pixels if adaptive else 0.0))
     timings["total"] = time.perf_counter() - t0
-    return RenderResult(image, parts, timings, count.stats(), scene)
+    return RenderResult(image, parts, timings, stats, scene, mask)
+
+
+def _refine(scene, primitives, mask, image, parts, spectral, components, fresnel_table,
+            timings, progress):
+    """Replace the pixels of ``mask`` in ``image`` (and ``parts``) by the box-filter mean of
+    their N x N samples (:mod:`reflectance.render.adaptive`); return how many were refined."""
+    import dataclasses
+
+    N = scene.refinement.supersample
+    fine = dataclasses.replace(scene, camera=dataclasses.replace(scene.camera, supersample=N))
+    flat = image.reshape(-1, 3)
+    map_size = _map_size(scene.camera)  # the whole first pass's light maps
+    refined = 0
+    for rows, select, pixels in refinement_bands(mask, N):
+        where = f"refining rows {rows[0] // N}-{rows[1] // N}: "
+        samples, shadowed, t = trace(fine, rows, primitives,
+                                     progress and (lambda phase: progress(where + phase)),
+                                     select, map_size)
+        t1 = time.perf_counter()
+        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
+        XYZ, got = shaded if components else (shaded, None)
+        flat[pixels] = XYZ.reshape(len(pixels), N * N, 3).mean(axis=1)
+        for name, value in (got or {}).items():
+            parts[name].reshape(-1, 3)[pixels] = value.reshape(len(pixels), N * N, 3).mean(axis=1)
+        refined += len(pixels)
+        timings["visibility"] += t["visibility"]
+        timings["shadows"] += t["shadows"]
+        timings["shading"] += time.perf_counter() - t1
+    return refined
+
+
+def _display_scale(scene, XYZ):
+    """The exposure factor :func:`display_linear_RGB` will apply to the image ``XYZ`` of the
+    scene (automatic exposure; 1 without)."""
+    d = scene.display
+    if not d.expose:
+        return 1.0
+    if d.white is not None:
+        return d.white / white_card_luminance(scene.lights)
+    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
+              "wavelengths": scene.wavelengths}
+    return _exposure_scale(XYZ, d, max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1])), kwargs)
 
 
 class _Counts:

@@ -14,7 +14,10 @@ class SurfaceSamples:
     """What each camera sample sees; arrays have one row per sample (N = rows * cols).
 
     Samples are ordered row-major on the fine grid ``shape`` (rows, cols); use :meth:`image` and
-    :meth:`to_pixels` to get back to images. Background samples have ``hit`` False,
+    :meth:`to_pixels` to get back to images. A selection of a band's samples
+    (:func:`reflectance.render.visibility.visibility` with ``select``, the adaptive
+    refinement's) has shape (N, 1), in the selection's order; ``pixel`` says where each
+    belongs. Background samples have ``hit`` False,
     ``object_id`` and ``triangle`` -1, zeros in the geometric arrays and ``depth`` inf; ``view``
     is defined everywhere.
 

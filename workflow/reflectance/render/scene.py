@@ -29,6 +29,7 @@ from reflectance.render.shading import (SHADING_MODELS, Ambient, Light, Roughnes
                                  ShadingMaterial, emission_XYZ)
 from reflectance.geometry.texture import texture
 from reflectance.optics.spectra import Material, load_material, wavelength_grid
+from reflectance.render.adaptive import Refinement
 from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
@@ -143,7 +144,9 @@ class Scene:
     """A validated scene with its meshes and spectra resolved (see :func:`load_scene`).
 
     ``document`` is the scene as validated, with every default filled in (it goes into the EXR
-    header); ``mesh`` the composed scene (object id = index in ``objects``).
+    header); ``mesh`` the composed scene (object id = index in ``objects``); ``refinement`` the
+    camera's adaptive supersampling (:class:`reflectance.render.adaptive.Refinement`; None:
+    none).
     """
 
     camera: Camera
@@ -159,6 +162,7 @@ class Scene:
     mesh: object
     source: str = "<scene>"
     document: dict = field(default_factory=dict)
+    refinement: object = None
 
     def to_json(self):
         """The validated document as canonical JSON (sorted keys)."""
@@ -446,6 +450,7 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     c = doc["camera"]
     camera = check.run(["camera"], Camera, c["position"], c["look_at"], c["up"], c["fov_deg"],
                        c["width"], c["height"], c["supersample"])
+    refinement = check.run(["camera", "adaptive"], Refinement, **c["adaptive"])
 
     lights = []
     for i, spec in enumerate(doc["lights"]):
@@ -506,7 +511,7 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
                  display=display, wavelengths=grid, observer=observer, spectral=doc["spectral"],
                  table_size=doc["fresnel_table_size"], shadows=doc["shadows"], mesh=composed,
-                 source=source, document=doc)
+                 source=source, document=doc, refinement=refinement)
 
 
 def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None,

@@ -198,7 +198,10 @@ def shadow_masks(samples, meshes, lights, map_size=None):
             else:
                 Ld, t_max = np.ascontiguousarray(L.T), distance * (1.0 - 1e-12) - eps
             planes = scene.light_planes(light)
-            for view, members in _light_views(light, position[facing], scene, int(map_size)):
+            # (no sample facing the light: all in shadow, no map to draw)
+            views = _light_views(light, position[facing], scene, int(map_size)) \
+                if len(facing) else []
+            for view, members in views:
                 members = facing[members]
                 keys = key_image(scene, renderer.render(view))
                 x, y, _ = view.project(np.take(position, members, axis=0).T)

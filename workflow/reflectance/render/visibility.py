@@ -27,7 +27,7 @@ from reflectance.render.samples import SurfaceSamples
 __all__ = ["visibility"]
 
 
-def visibility(meshes, camera, rows=None):
+def visibility(meshes, camera, rows=None, select=None):
     """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
 
     Parameters
@@ -40,11 +40,17 @@ def visibility(meshes, camera, rows=None):
         A band ``(start, stop)`` of rows of the fine grid, each a multiple of the camera's
         supersampling: only those samples are traced (a tile; the ID buffer drawn is that band
         and one row around it). Default: the whole image.
+    select : array_like of int, optional
+        Only these samples of the band (row-major indices on its fine grid, each at most once,
+        in any order) are traced, each exactly as in the whole band (the same ray, the same
+        ID buffer and candidates): the adaptive refinement's samples
+        (:mod:`reflectance.render.adaptive`).
 
     Returns
     -------
     SurfaceSamples
-        Of shape (stop - start, columns) for a band; ``pixel`` indexes the whole image.
+        Of shape (stop - start, columns) for a band, (len(select), 1) for a selection (in its
+        order); ``pixel`` indexes the whole image.
 
     Examples
     --------
@@ -69,9 +75,16 @@ def visibility(meshes, camera, rows=None):
     with IdRenderer(scene) as renderer:
         keys = key_image(scene, renderer.render(
             view if (top, bottom) == (0, height) else view.band(top, bottom)))
-    N = (stop - start) * cols
-    eye, d = view.pixel_rays(start, stop)
-    raster = keys[start - top:stop - top].ravel()
+    if select is None:
+        N = (stop - start) * cols
+        eye, d = view.pixel_rays(start, stop)
+        raster = keys[start - top:stop - top].ravel()
+    else:  # the rays through the selected samples' centres, as pixel_rays makes them
+        select = np.asarray(select, np.int64)
+        N = len(select)
+        eye, d = view.rays(select % cols + 0.5, select // cols + start + 0.5)
+        raster = keys[start - top:stop - top].ravel()[select]
+    where = np.arange(N) if select is None else select  # position of each sample in the band
     best_t, best_key = np.full(N, np.inf), np.full(N, -1, np.int32)
     barycentric = np.zeros((N, 2))  # (b1, b2) of the best hit so far, written in place
     best_b1, best_b2 = barycentric[:, 0], barycentric[:, 1]
@@ -90,10 +103,14 @@ def visibility(meshes, camera, rows=None):
     missed = surface[best_key[surface] < 0]
     del surface
     # where raster and exact rays disagree: retry with the neighbouring pixels' primitives
-    near = np.nonzero((raster < 0) & dilate(keys >= 0)[start - top:stop - top].ravel())[0]
+    beside = dilate(keys >= 0)[start - top:stop - top].ravel()
+    near = np.nonzero((raster < 0) & (beside if select is None else beside[select]))[0]
+    del beside
     retry = np.concatenate([missed, near])
-    candidates = distinct_keys(neighbour_keys(keys, retry // cols + (start - top), retry % cols),
+    at = where[retry]
+    candidates = distinct_keys(neighbour_keys(keys, at // cols + (start - top), at % cols),
                                raster[retry])
+    del at
     del keys, raster, near
     for j in range(candidates.shape[1]):
         m = candidates[:, j] >= 0
@@ -106,7 +123,7 @@ def visibility(meshes, camera, rows=None):
     lost = missed[best_key[missed] < 0]
     if len(lost):
         _search_projected_boxes(scene, view, eye, d, lost, cols, start, best_t, best_key,
-                                best_b1, best_b2)
+                                best_b1, best_b2, where, n_ss)
     hit = best_key >= 0
     stats = {
         "raster_miss": len(missed) / N,
@@ -120,36 +137,48 @@ def visibility(meshes, camera, rows=None):
     del d
     # best_t is inf and barycentric 0 wherever nothing was hit: they are the final arrays
     return _samples(scene, camera, (start, stop), eye, towards_camera, hit, best_t, best_key,
-                    barycentric, stats)
+                    barycentric, stats, select)
 
 
 _CHUNK = 1 << 18  # camera rays tested at once (bounds the memory of the ray-test temporaries)
 
 
 def _search_projected_boxes(scene, view, eye, d, samples, cols, first_row, best_t, best_key,
-                            best_b1, best_b2):
+                            best_b1, best_b2, where, group=1):
     """Exact nearest hit of each sample's ray among the primitives whose screen-space bounding
-    box holds the sample (updates the ``best_*`` arrays in place); samples are numbered from
-    row ``first_row`` of the view."""
+    box holds the sample (updates the ``best_*`` arrays in place); sample s sits at
+    ``where[s]`` of the band (row-major), whose first row is row ``first_row`` of the view.
+
+    The samples are taken ``group`` x ``group`` cells of the grid at a time (a pixel's): the
+    primitives whose boxes meet the cell are found once, and each sample's among them."""
     x, y, _ = view.project(scene.P)
     tx, ty = x[scene.T], y[scene.T]  # (3, n) corners of every triangle on the fine grid
     x0, x1, y0, y1 = tx.min(axis=0), tx.max(axis=0), ty.min(axis=0), ty.max(axis=0)
-    for s in samples:
-        px, py = s % cols + 0.5, s // cols + first_row + 0.5
-        near = np.nonzero((x0 <= px) & (px <= x1) & (y0 <= py) & (py <= y1))[0]
-        keys = np.unique(scene.key[near])
-        if not len(keys):
-            continue
-        t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1), keys,
-                                       0.0, np.inf)
-        if h.any():
-            j = int(np.argmin(np.where(h, t, np.inf)))
-            best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
+    at = where[samples]
+    sx, sy = at % cols + 0.5, at // cols + first_row + 0.5
+    cell = (at // cols + first_row) // group * (cols // group + 1) + at % cols // group
+    order = np.argsort(cell, kind="stable")
+    cuts = np.flatnonzero(np.diff(cell[order])) + 1
+    for members in np.split(order, cuts):
+        mx, my = sx[members], sy[members]
+        box = np.nonzero((x0 <= mx.max()) & (mx.min() <= x1) & (y0 <= my.max())
+                         & (my.min() <= y1))[0]
+        for m in members:
+            s, px, py = samples[m], sx[m], sy[m]
+            near = box[(x0[box] <= px) & (px <= x1[box]) & (y0[box] <= py) & (py <= y1[box])]
+            keys = np.unique(scene.key[near])
+            if not len(keys):
+                continue
+            t, b1, b2, h = scene.intersect(eye, np.repeat(d[:, s:s + 1], len(keys), axis=1),
+                                           keys, 0.0, np.inf)
+            if h.any():
+                j = int(np.argmin(np.where(h, t, np.inf)))
+                best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
 
 
-def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats):
-    """SurfaceSamples of the rows ``band`` (start, stop) from the best exact hits; ``view``
-    (N, 3) is the unit V = -d."""
+def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, select=None):
+    """SurfaceSamples of the rows ``band`` (start, stop), or of the samples ``select`` of it,
+    from the best exact hits; ``view`` (N, 3) is the unit V = -d."""
     N = len(hit)
     position, normal, geometric = np.zeros((N, 3)), np.zeros((N, 3)), np.zeros((N, 3))
     uv = np.zeros((N, 2))
@@ -199,12 +228,17 @@ def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats):
     start, stop = band
     n_ss = camera.supersample
     # final-image pixel of each sample, row * width + col (< 2**28: int32 suffices)
-    pixel = ((np.arange(start, stop, dtype=np.int32) // n_ss * np.int32(camera.width))[:, None]
-             + (np.arange(cols, dtype=np.int32) // n_ss)[None, :]).ravel()
+    if select is None:
+        pixel = ((np.arange(start, stop, dtype=np.int32) // n_ss * np.int32(camera.width))[:, None]
+                 + (np.arange(cols, dtype=np.int32) // n_ss)[None, :]).ravel()
+    else:
+        pixel = ((select // cols + start) // n_ss * camera.width
+                 + select % cols // n_ss).astype(np.int32)
     object_id = np.full(N, -1, np.int32)
     object_id[hit] = scene.object_id[triangle[hit]]
     return SurfaceSamples(
-        shape=(stop - start, cols), supersample=n_ss, hit=hit, object_id=object_id,
+        shape=(stop - start, cols) if select is None else (N, 1), supersample=n_ss, hit=hit,
+        object_id=object_id,
         triangle=triangle, barycentric=barycentric, position=position, normal=normal,
         geometric_normal=geometric, flipped=flipped, uv=uv, view=view, depth=t, pixel=pixel,
         stats=stats, scene=scene,
