@@ -194,6 +194,25 @@ def test_binary_spectrum_is_named(tmp_path):
 
 # --- no eval, exec or import of names from data anywhere in the project ---------------------------
 
+SAFE_YAML_LOADERS = {"SafeLoader", "CSafeLoader"}
+
+
+def _safe_yaml_load(f, node):
+    """``yaml.load(..., Loader=...)`` whose Loader names only PyYAML's safe loaders (e.g.
+    ``getattr(yaml, "CSafeLoader", yaml.SafeLoader)``): it builds no Python object from tags."""
+    if (f.value.id, f.attr) != ("yaml", "load"):
+        return False
+    loader = [k.value for k in node.keywords if k.arg == "Loader"]
+    if not loader:
+        return False
+    names = {n.attr for n in ast.walk(loader[0]) if isinstance(n, ast.Attribute)}
+    names |= {n.value for n in ast.walk(loader[0]) if isinstance(n, ast.Constant)}
+    calls = [n for n in ast.walk(loader[0]) if isinstance(n, ast.Call)]
+    variables = {n.id for n in ast.walk(loader[0]) if isinstance(n, ast.Name)}
+    return bool(names) and names <= SAFE_YAML_LOADERS and variables <= {"yaml", "getattr"} and all(
+        getattr(c.func, "id", None) == "getattr" for c in calls)
+
+
 FORBIDDEN_CALLS = {"eval", "exec", "compile", "__import__", "execfile", "breakpoint"}
 FORBIDDEN_ATTRIBUTES = {("yaml", "load"), ("yaml", "unsafe_load"), ("yaml", "full_load"),
                         ("pickle", "load"), ("pickle", "loads"), ("pd", "read_pickle"),
@@ -223,7 +242,7 @@ def code_from_data(source, path):
         if isinstance(f, ast.Name) and f.id in FORBIDDEN_CALLS:
             found.append(f"{where}: {f.id}()")
         if isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and (
-                (f.value.id, f.attr) in FORBIDDEN_ATTRIBUTES):
+                (f.value.id, f.attr) in FORBIDDEN_ATTRIBUTES) and not _safe_yaml_load(f, node):
             found.append(f"{where}: {f.value.id}.{f.attr}()")
         if isinstance(f, ast.Name) and f.id == "import_module":
             argument = node.args[0] if node.args else None
@@ -260,11 +279,15 @@ def test_the_scanner_finds_what_it_looks_for():
         "from importlib import import_module\nimport_module(dotted)",
         "import numpy as np\ngetattr(np, name)",
         "import yaml\nyaml.load(stream)",
+        "import yaml\nyaml.load(stream, Loader=yaml.Loader)",
+        "import yaml\nyaml.load(stream, Loader=getattr(yaml, 'CSafeLoader', chosen))",
         "__import__(module)",
         "import subprocess\nsubprocess.run(cmd, shell=True)",
     ]
     for source in planted:
         assert code_from_data(source, "x.py"), source
+    safe = 'import yaml\nyaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))'
+    assert code_from_data(safe, "x.py") == []  # PyYAML's safe loaders only
     lazy = 'from importlib import import_module\nimport_module(f"{__name__}.{name}")'
     assert code_from_data(lazy, "pkg/__init__.py") == []
     assert code_from_data(lazy, "pkg/module.py")  # only a package's lazy loader may
