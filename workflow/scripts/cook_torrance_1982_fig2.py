@@ -11,7 +11,7 @@ from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
 FONT = font_file()  # the figures' DejaVu Sans: it has the Greek letters VTK's own fonts lack
-COLOURS = {"N": "black", "L": OKABE_ITO[4], "V": "#1f5fbf", "H": "#2a9d3a"}
+COLOURS = {"N": "black", "L": OKABE_ITO[4], "V": "#1f5fbf", "H": "#1f7a2e"}  # H: 5.4:1 on white
 
 
 def direction(angles):
@@ -71,6 +71,6 @@ with script_log(snakemake) as log:
                 font_size=14, color="black", position="upper_left", font_file=FONT)
     pl.camera_position = [(-0.8, -5.0, 2.1), (0.0, 0.0, 0.45), (0.0, 0.0, 1.0)]
     pl.camera.zoom(1.2)
-    save_plotter(pl, snakemake.output.png)
+    save_plotter(pl, snakemake.output.png, margin=fig["margin_px"])
     log.info("L = %s, V = %s, H = %s; %s", L.round(4), V.round(4), H.round(4),
              {k: round(v, 3) for k, v in angles.items()})

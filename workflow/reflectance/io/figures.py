@@ -25,7 +25,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
-__all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter",
+__all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter", "trim_to_content",
            "save_plotter", "font_file", "set_vtk_font"]
 
 OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
@@ -216,12 +216,40 @@ def set_vtk_font(*text_properties):
         prop.SetFontFile(font_file())
 
 
-def save_plotter(plotter, path, tag=None):
+def trim_to_content(img, margin):
+    """``img`` (H, W, C) cropped to the pixels that differ from its top-left pixel (the
+    background), then padded with that background by ``margin`` pixels on every side: no empty
+    canvas, nothing touching the frame. An image of background only is returned as it is.
+
+    >>> import numpy as np
+    >>> img = np.zeros((10, 12, 3), np.uint8); img[4:6, 3:9] = 255
+    >>> trim_to_content(img, 2).shape
+    (6, 10, 3)
+    """
+    import numpy as np
+
+    img = np.asarray(img)
+    content = np.any(img != img[0, 0], axis=-1)
+    if not content.any():
+        return img
+    rows, cols = np.flatnonzero(content.any(axis=1)), np.flatnonzero(content.any(axis=0))
+    inner = img[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
+    out = np.empty((inner.shape[0] + 2 * margin, inner.shape[1] + 2 * margin) + img.shape[2:],
+                   img.dtype)
+    out[...] = img[0, 0]
+    out[margin:margin + inner.shape[0], margin:margin + inner.shape[1]] = inner
+    return out
+
+
+def save_plotter(plotter, path, tag=None, margin=None):
     """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer),
     tagged with ``tag`` (a :class:`reflectance.io.images.ColourTag`), by default sRGB: VTK's
-    colours are sRGB values, written to the screen as they are."""
+    colours are sRGB values, written to the screen as they are. With ``margin`` (pixels), the
+    screenshot is trimmed to its content and given that margin (:func:`trim_to_content`)."""
     from reflectance.io.images import SRGB_TAG, write_png
 
     img = plotter.screenshot(return_img=True)
     plotter.close()
+    if margin is not None:
+        img = trim_to_content(img[..., :3], int(margin))
     write_png(path, img[..., :3] / 255.0, bit_depth=8, tag=SRGB_TAG if tag is None else tag)
