@@ -393,7 +393,9 @@ def test_built_table1_against_colour_science(built):
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(colour.SpectralShape(360, 830, 5))
     d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(cmfs.shape)
     for r in t.itertuples():
-        data = pd.read_csv(built / "spectra" / f"{r.material}.csv")
+        spectrum = config["figures"]["cook_torrance_1982"]["fig7"]["table1_spectra"].get(r.material, r.material)
+        assert r.spectrum_material == spectrum  # the spectrum Fig. 7 gives the row
+        data = pd.read_csv(built / "spectra" / f"{r.spectrum_material}.csv")
         if "reflectance" in data:
             F0 = np.interp(wl, data.wavelength_nm, data.reflectance)
         else:

@@ -231,7 +231,10 @@ rule ct82_fig3:
 
 rule ct82_table1:
     input:
-        spectra=[spectrum_csv(row["material"]) for row in CT82["table1"]["rows"]],
+        spectra=[
+            spectrum_csv(CT82["fig7"]["table1_spectra"].get(row["material"], row["material"]))
+            for row in CT82["table1"]["rows"]
+        ],
         sources="spectra/sources.csv",
     output:
         png=report(
@@ -257,6 +260,7 @@ rule ct82_table1:
         runtime=10,  # measured 24 s
     params:
         fig=CT82["table1"],
+        spectra=CT82["fig7"]["table1_spectra"],
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     script:

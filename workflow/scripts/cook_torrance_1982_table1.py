@@ -22,12 +22,16 @@ with script_log(snakemake) as log:
     lo, hi = fig_cfg["average_F0_range_nm"]
     rows = []
     for entry in fig_cfg["rows"]:
-        material = load_material(entry["material"], grid, Path(snakemake.input.sources).parent)
+        # the spectrum Fig. 7 gives this row (fig7.table1_spectra: rust's Munsell-derived
+        # reflectance, not hematite's n, k), so that the table shows the vases' colours
+        spectrum = snakemake.params.spectra.get(entry["material"], entry["material"])
+        material = load_material(spectrum, grid, Path(snakemake.input.sources).parent)
         F0_mean = material.mean_F0((lo, hi))
         XYZ = material.F0 @ W  # the colour of pi R_d = F0 (C&T 1982 Fig. 7: R_d = F0/pi)
         source = sources.loc[material.name]
         rows.append({
-            "material": material.name, "name": paper_name(material.name), "s": entry["s"], "d": entry["d"], "m": entry["m"],
+            "material": entry["material"], "spectrum_material": material.name,
+            "name": paper_name(entry["material"]), "s": entry["s"], "d": entry["d"], "m": entry["m"],
             "spectrum": "measured n, k" if material.kind == "measured" else "derived reflectance",
             "dataset": source["dataset"], "reference": source["reference"],
             f"F0_mean_{lo:g}_{hi:g}nm": F0_mean, "R_d_mean_per_sr": F0_mean / np.pi,
