@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import sys
 
-__all__ = ["Progress"]
+__all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker"]
 
 
 class Progress:
@@ -89,3 +89,40 @@ class Progress:
             self.stream.write("\n")
             self.stream.flush()
             self._drawn = 0
+
+
+#: a worker's progress lines on its standard output start so (:func:`run_worker`)
+WORKER_PROGRESS = "@progress "
+
+
+def worker_progress(phase):
+    """In a worker of :func:`run_worker`: tell the parent that ``phase`` starts."""
+    print(WORKER_PROGRESS + phase, flush=True)
+
+
+def run_worker(module, job, progress=None, failure="worker failed"):
+    """Run ``python -m module --worker JSON(job)`` in a fresh process and return the JSON value of
+    its last line on standard output.
+
+    Its :func:`worker_progress` lines are passed to ``progress(phase)`` as they come; standard
+    error goes to a file, so that a chatty worker cannot block on a full pipe. If it fails,
+    RuntimeError carries ``failure`` and the worker's standard error."""
+    import json
+    import subprocess
+    import tempfile
+
+    with tempfile.TemporaryFile("w+") as errors:
+        proc = subprocess.Popen([sys.executable, "-m", module, "--worker", json.dumps(job)],
+                                stdout=subprocess.PIPE, stderr=errors, text=True)
+        lines = []
+        for line in proc.stdout:
+            if line.startswith(WORKER_PROGRESS):
+                if progress is not None:
+                    progress(line[len(WORKER_PROGRESS):].strip())
+            else:
+                lines.append(line)
+        proc.wait()
+        if proc.returncode != 0:
+            errors.seek(0)
+            raise RuntimeError(f"{failure}:\n{errors.read()}")
+    return json.loads("".join(lines).strip().splitlines()[-1])

@@ -39,11 +39,9 @@ import argparse
 import json
 import resource
 import statistics
-import subprocess
-import sys
-import tempfile
 import time
-from pathlib import Path
+
+from reflectance.io.progress import run_worker, worker_progress
 
 __all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
 
@@ -209,9 +207,6 @@ def crosscheck_status(results=()):
             f"--crosscheck-size, default {CROSSCHECK_SIZE}, when that size is benchmarked)")
 
 
-_PROGRESS = "@progress "  # a worker's progress lines on its standard output start so
-
-
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
               reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
@@ -236,26 +231,15 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                "grids_nm": list(grids_nm) if size == grid_size else [],
                "spectra_dir": spectra_dir, "reference_supersample": reference_supersample,
                "adaptive": adaptive}
-        with tempfile.TemporaryFile("w+") as errors:
-            # stdout is read line by line (progress, then the JSON result); stderr goes to a
-            # file, so that a chatty worker cannot block on a full pipe
-            proc = subprocess.Popen([sys.executable, "-m", "reflectance.render.bench",
-                                     "--worker", json.dumps(job)], stdout=subprocess.PIPE,
-                                    stderr=errors, text=True)
-            lines = []
-            for line in proc.stdout:
-                if line.startswith(_PROGRESS):
-                    if progress is not None:
-                        progress.update(i, f"{where}: {line[len(_PROGRESS):].strip()}")
-                else:
-                    lines.append(line)
-            proc.wait()
-            if proc.returncode != 0:
-                errors.seek(0)
-                if progress is not None:
-                    progress.close(f"size {size} failed", done=i)
-                raise RuntimeError(f"benchmark of size {size} failed:\n{errors.read()}")
-        results.append(json.loads("".join(lines).strip().splitlines()[-1]))
+        try:
+            results.append(run_worker(
+                "reflectance.render.bench", job, failure=f"benchmark of size {size} failed",
+                progress=None if progress is None
+                else (lambda phase: progress.update(i, f"{where}: {phase}"))))
+        except RuntimeError:
+            if progress is not None:
+                progress.close(f"size {size} failed", done=i)
+            raise
         if size == crosscheck_size:  # the path-tracer cross-check (reflectance.render.crosscheck)
             from reflectance.render.crosscheck import (REFERENCE_SPP, mitsuba_available,
                                                        run_crosscheck)
@@ -325,7 +309,7 @@ def _worker(argv):
     result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
                         job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
                         job["reference_supersample"],
-                        progress=lambda phase: print(_PROGRESS + phase, flush=True),
+                        progress=worker_progress,
                         adaptive=job.get("adaptive"))
     print(json.dumps(result))
 

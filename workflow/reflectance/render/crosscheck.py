@@ -50,7 +50,6 @@ References
 
 from __future__ import annotations
 
-import os
 import tempfile
 import time
 from importlib.util import find_spec
@@ -466,49 +465,30 @@ def format_crosscheck(result):
     return lines
 
 
-_PROGRESS = "@progress "  # the worker's progress lines on its standard output start so
-
-
 def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
                    reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
                    progress=None):
     """:func:`bench_crosscheck` in a fresh Python process (Mitsuba's threads and memory stay
     there); ``progress``, if given, is called with each phase. Raises RuntimeError with the
     worker's standard error if it fails."""
-    import json
-    import subprocess
-    import sys
+    from reflectance.io.progress import run_worker
 
     job = {"document": scene if isinstance(scene, dict) else str(scene), "size": int(size),
            "supersample": supersample, "runs": runs,
            "reference_supersample": reference_supersample, "reference_spp": int(reference_spp),
            "ladder_spp": [int(n) for n in ladder_spp],
-           "spectra_dir": None if spectra_dir is None else str(spectra_dir),
-           "progress_prefix": _PROGRESS}
-    with tempfile.TemporaryFile("w+") as errors:
-        proc = subprocess.Popen([sys.executable, "-m", "reflectance.render.crosscheck",
-                                 "--worker", json.dumps(job)], stdout=subprocess.PIPE,
-                                stderr=errors, text=True)
-        lines = []
-        for line in proc.stdout:
-            if line.startswith(_PROGRESS):
-                if progress is not None:
-                    progress(line[len(_PROGRESS):].strip())
-            else:
-                lines.append(line)
-        proc.wait()
-        if proc.returncode != 0:
-            errors.seek(0)
-            raise RuntimeError(f"cross-check at size {size} failed:\n{errors.read()}")
-    return json.loads("".join(lines).strip().splitlines()[-1])
+           "spectra_dir": None if spectra_dir is None else str(spectra_dir)}
+    return run_worker("reflectance.render.crosscheck", job, progress,
+                      failure=f"cross-check at size {size} failed")
 
 
 def _worker(argv):  # pragma: no cover - run by reflectance.render.bench in a subprocess
     import json
 
+    from reflectance.io.progress import worker_progress
+
     job = json.loads(argv[0])
-    progress = job.pop("progress_prefix")
-    result = bench_crosscheck(**job, progress=lambda phase: print(progress + phase, flush=True))
+    result = bench_crosscheck(**job, progress=worker_progress)
     print(json.dumps(result))
 
 
