@@ -8,6 +8,8 @@ read primitive keys and 3 x 3 neighbourhoods out of an ID image.
 
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 import pyvista as pv
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL backend)
@@ -18,7 +20,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 
 from reflectance.render.primitives import Primitives
 
-__all__ = ["MAX_TRIANGLES", "MAX_BUFFER_SIDE", "encode_ids", "decode_ids", "id_buffer"]
+__all__ = ["MAX_TRIANGLES", "MAX_BUFFER_SIDE", "encode_ids", "decode_ids", "id_buffer",
+           "renderer_for"]
 
 MAX_TRIANGLES = 2**24 - 1
 """The ID buffer holds 24 bits per pixel (RGB, 8 bits each); id 0 is the background."""
@@ -123,6 +126,15 @@ class IdRenderer:
         self.close()
 
 
+def renderer_for(scene, renderer=None):
+    """A context giving an :class:`IdRenderer` of ``scene``: ``renderer`` itself (left open) if
+    it draws that very scene, else a new one closed on exit. One window then serves the camera
+    and every light map of a render (the scene is uploaded to it once)."""
+    if renderer is not None and renderer.scene is scene:
+        return contextlib.nullcontext(renderer)
+    return IdRenderer(scene)
+
+
 def id_buffer(meshes, camera):
     """The ID buffer of a camera's fine grid: (rows, cols) int32, 0 background, k triangle k - 1.
 
@@ -156,10 +168,11 @@ def dilate(mask):
     return out
 
 
-def neighbour_keys(image, rows, cols):
-    """(n, 9) values of ``image`` at the 3 x 3 pixels around (rows, cols); -1 off the image."""
+def neighbour_keys(image, rows, cols, fill=-1):
+    """(n, 9) values of ``image`` at the 3 x 3 pixels around (rows, cols); ``fill`` off the
+    image."""
     width = image.shape[1] + 2
-    padded = np.pad(image, 1, constant_values=-1).ravel()
+    padded = np.pad(image, 1, constant_values=fill).ravel()
     offsets = (np.arange(-1, 2)[:, None] * width + np.arange(-1, 2)[None, :]).ravel()
     return np.take(padded, ((rows + 1) * width + cols + 1)[:, None] + offsets)
 

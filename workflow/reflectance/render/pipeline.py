@@ -39,6 +39,7 @@ from reflectance.colour.display import expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
+from reflectance.render.idbuffer import IdRenderer
 from reflectance.render.primitives import Primitives
 from reflectance.render.shading import shade, white_card_luminance
 from reflectance.render.shadows import shadow_masks
@@ -140,24 +141,27 @@ def _silent(phase):
     pass
 
 
-def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None):
+def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None,
+          renderer=None):
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
     (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
 
     ``select`` traces only those samples of the band (``visibility``'s); ``map_size`` sets the
     light maps' side (default: from the band's share of the grid). ``progress``, if given, is
-    called with the name of each phase as it starts."""
+    called with the name of each phase as it starts. ``renderer``, an open
+    :class:`reflectance.render.idbuffer.IdRenderer` of ``primitives``, draws the camera's and the
+    lights' ID buffers (one window, the scene uploaded once); default one per phase."""
     progress = progress or _silent
     t0 = time.perf_counter()
     progress("visibility")
     samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows,
-                         select)
+                         select, renderer)
     t1 = time.perf_counter()
     progress("shadows")
     if scene.shadows and scene.lights:
         shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
-                                map_size or _map_size(scene.camera, rows))
+                                map_size or _map_size(scene.camera, rows), renderer)
     else:
         shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
     t2 = time.perf_counter()
@@ -244,7 +248,6 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     t0 = time.perf_counter()
     camera, n_ss = scene.camera, scene.camera.supersample
     bands = tiles(camera)
-    primitives = None  # built on the first band that is traced (not for a cached trace)
     keep = traced is not None and len(bands) == 1
     image = np.zeros((camera.height, camera.width, 3))
     parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
@@ -258,45 +261,57 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
 
         difference = np.zeros((camera.height, camera.width, 3), np.float32)
         silhouette = np.zeros((camera.height, camera.width), bool)
-    for start, stop in bands:
-        where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
-        key = trace_key(scene, (start, stop)) if keep else None
-        if key is not None and key in traced:
-            samples, shadowed = traced[key]
-            t = {"visibility": 0.0, "shadows": 0.0}
-        else:
-            primitives = Primitives(scene.mesh) if primitives is None else primitives
-            samples, shadowed, t = trace(scene, (start, stop), primitives,
-                                         progress and (lambda phase: progress(where + phase)))
-            if key is not None:
-                traced[key] = (samples, shadowed)
-        t1 = time.perf_counter()
-        (progress or _silent)(where + "shading")
-        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
-        XYZ, got = shaded if components else (shaded, None)
-        rows = slice(start // n_ss, stop // n_ss)
-        image[rows] = samples.to_pixels(XYZ)
-        if components:
-            for name, value in got.items():
-                parts[name][rows] = samples.to_pixels(value)
+    # the scene's primitives and one ID-buffer window for all of them (the camera's and the
+    # light maps of every band), made on the first band that is traced (not for a cached trace)
+    made = {}
+    with contextlib.ExitStack() as stack:
+
+        def tools():
+            if not made:
+                made["primitives"] = Primitives(scene.mesh)
+                made["renderer"] = stack.enter_context(IdRenderer(made["primitives"]))
+            return made["primitives"], made["renderer"]
+
+        for start, stop in bands:
+            where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
+            key = trace_key(scene, (start, stop)) if keep else None
+            if key is not None and key in traced:
+                samples, shadowed = traced[key]
+                t = {"visibility": 0.0, "shadows": 0.0}
+            else:
+                primitives, renderer = tools()
+                samples, shadowed, t = trace(scene, (start, stop), primitives,
+                                             progress and (lambda phase: progress(where + phase)),
+                                             renderer=renderer)
+                if key is not None:
+                    traced[key] = (samples, shadowed)
+            t1 = time.perf_counter()
+            (progress or _silent)(where + "shading")
+            shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
+            XYZ, got = shaded if components else (shaded, None)
+            rows = slice(start // n_ss, stop // n_ss)
+            image[rows] = samples.to_pixels(XYZ)
+            if components:
+                for name, value in got.items():
+                    parts[name][rows] = samples.to_pixels(value)
+            if adaptive:
+                difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
+            count.add(samples, shadowed)
+            del samples, shadowed, shaded, XYZ, got
+            timings["visibility"] += t["visibility"]
+            timings["shadows"] += t["shadows"]
+            timings["shading"] += time.perf_counter() - t1
+        stats = count.stats()
+        refined, mask = 0, None
         if adaptive:
-            difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
-        count.add(samples, shadowed)
-        del samples, shadowed, shaded, XYZ, got
-        timings["visibility"] += t["visibility"]
-        timings["shadows"] += t["shadows"]
-        timings["shading"] += time.perf_counter() - t1
-    stats = count.stats()
-    refined, mask = 0, None
-    if adaptive:
-        t1 = time.perf_counter()
-        white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
-        mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
-                           refinement.threshold, white)
-        del difference, silhouette
-        refined = _refine(scene, primitives, mask, image, parts, spectral, components,
-                          fresnel_table, timings, progress)
-        timings["refinement"] = time.perf_counter() - t1
+            t1 = time.perf_counter()
+            white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
+            mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
+                               refinement.threshold, white)
+            del difference, silhouette
+            refined = _refine(scene, tools, mask, image, parts, spectral, components,
+                              fresnel_table, timings, progress)
+            timings["refinement"] = time.perf_counter() - t1
     pixels = camera.height * camera.width
     # the sample budget: every pixel's n x n, and N x N more in each refined pixel
     stats.update(refined=refined / pixels, samples_per_pixel=n_ss**2 + (
@@ -305,10 +320,11 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     return RenderResult(image, parts, timings, stats, scene, mask)
 
 
-def _refine(scene, primitives, mask, image, parts, spectral, components, fresnel_table,
+def _refine(scene, tools, mask, image, parts, spectral, components, fresnel_table,
             timings, progress):
     """Replace the pixels of ``mask`` in ``image`` (and ``parts``) by the box-filter mean of
-    their N x N samples (:mod:`reflectance.render.adaptive`); return how many were refined."""
+    their N x N samples (:mod:`reflectance.render.adaptive`); return how many were refined.
+    ``tools()`` gives the scene's primitives and their ID-buffer window."""
     import dataclasses
 
     N = scene.refinement.supersample
@@ -318,9 +334,10 @@ def _refine(scene, primitives, mask, image, parts, spectral, components, fresnel
     refined = 0
     for rows, select, pixels in refinement_bands(mask, N):
         where = f"refining rows {rows[0] // N}-{rows[1] // N}: "
+        primitives, renderer = tools()
         samples, shadowed, t = trace(fine, rows, primitives,
                                      progress and (lambda phase: progress(where + phase)),
-                                     select, map_size)
+                                     select, map_size, renderer)
         t1 = time.perf_counter()
         shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
         XYZ, got = shaded if components else (shaded, None)

@@ -19,7 +19,7 @@ import numpy as np
 
 from reflectance.render.camera import View
 from reflectance.render.primitives import Primitives
-from reflectance.render.idbuffer import IdRenderer, distinct_keys, key_image, neighbour_keys
+from reflectance.render.idbuffer import distinct_keys, neighbour_keys, renderer_for
 from reflectance.render.lights import DirectionalLight, as_light, light_vectors
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.samples import SurfaceSamples
@@ -116,14 +116,28 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
     # a missed triangle whose plane the ray crosses within reach: walk across the edge beyond
     # which the crossing lies (point location on the occluder); this finds the triangles hidden
     # in a vertex's fan or thinner than a map pixel
+    neighbours = scene.neighbours.ravel()  # (3 n,): triangle k's edge e at 3 k + e
     for _ in range(_WALK_STEPS):
-        go = np.nonzero(~hit & ~blocked[r] & (k < scene.n) & (t > eps) & (t < tm))[0]
+        walk = ~hit
+        walk &= t > eps
+        walk &= t < tm
+        if k.max(initial=-1) >= scene.n:  # only the first step can hold spheres
+            walk &= k < scene.n
+        if not walk.any():
+            break
+        walk &= ~blocked[r]
+        go = np.nonzero(walk)[0]
         if len(go) == 0:
             break
-        edge = np.argmin(np.stack([1.0 - b1[go] - b2[go], b1[go], b2[go]]), axis=0)
-        nk = scene.neighbours[k[go], edge]
+        b1, b2 = b1[go], b2[go]
+        b0 = 1.0 - b1 - b2
+        # the edge opposite the smallest barycentric weight (the first of equal ones), as
+        # np.argmin over (b0, b1, b2) picks it (no NaN here: t is finite)
+        edge = np.where((b0 <= b1) & (b0 <= b2), 0, np.where(b1 <= b2, 1, 2))
+        nk = np.take(neighbours, 3 * k[go].astype(np.int64) + edge)
         ok = nk >= 0
-        ok[ok] = (np.take(scene.key, nk[ok]) == nk[ok]) & (nk[ok] != own[r[go[ok]]])
+        nk_ok = nk[ok]
+        ok[ok] = (np.take(scene.key, nk_ok) == nk_ok) & (nk_ok != own[r[go[ok]]])
         go, k = go[ok], nk[ok].astype(np.int32)
         r, o = r[go], np.take(o, go, axis=1)
         d = d if d.shape[1] == 1 else np.take(d, go, axis=1)
@@ -132,7 +146,7 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
         blocked[r[hit]] = True
 
 
-def shadow_masks(samples, meshes, lights, map_size=None):
+def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
     """True where a surface sample does not see a light (cast shadow or facing away).
 
     Samples whose shading normal faces away from the light (N.L <= 0) are in shadow without a
@@ -154,6 +168,9 @@ def shadow_masks(samples, meshes, lights, map_size=None):
     map_size : int, optional
         Side of each light's ID map in pixels; default the larger side of the sample grid,
         clipped to [256, 4096].
+    renderer : IdRenderer, optional
+        An open :class:`reflectance.render.idbuffer.IdRenderer` of the samples' primitives to
+        draw the light maps with (left open); default a new window for this call.
 
     Returns
     -------
@@ -187,7 +204,9 @@ def shadow_masks(samples, meshes, lights, map_size=None):
     lifted = _terminator_offset(scene, samples, surface,
                                 np.ascontiguousarray(position.T)) + eps * normal.T
     own = scene.key[samples.triangle[surface]]
-    with IdRenderer(scene) as renderer:
+    # an ID image's value (0 background, k triangle k - 1) -> primitive key (-1 background)
+    id_to_key = np.concatenate([np.int32([-1]), scene.key])
+    with renderer_for(scene, renderer) as maps:
         for i, light in enumerate(lights):
             L, distance = light_vectors(light, position)
             facing = np.nonzero(dot(normal, L) > 0)[0]
@@ -203,11 +222,14 @@ def shadow_masks(samples, meshes, lights, map_size=None):
                 if len(facing) else []
             for view, members in views:
                 members = facing[members]
-                keys = key_image(scene, renderer.render(view))
+                ids = maps.render(view)
                 x, y, _ = view.project(np.take(position, members, axis=0).T)
                 col = np.clip(np.floor(x), 0, view.width - 1).astype(np.int64)
                 row = np.clip(np.floor(y), 0, view.height - 1).astype(np.int64)
-                candidates = distinct_keys(neighbour_keys(keys, row, col), own[members])
+                # the keys of the 3 x 3 ids around each projection (off the map: id 0, -1)
+                near = np.take(id_to_key, neighbour_keys(ids, row, col, fill=0))
+                del ids
+                candidates = distinct_keys(near, own[members])
                 local, j = np.nonzero(candidates >= 0)
                 ray, prim = members[local], candidates[local, j]
                 for start in range(0, len(ray), _CHUNK):

@@ -19,15 +19,15 @@ import numpy as np
 
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.camera import Camera
-from reflectance.render.idbuffer import (IdRenderer, dilate, distinct_keys, key_image,
-                                         neighbour_keys)
+from reflectance.render.idbuffer import (dilate, distinct_keys, key_image, neighbour_keys,
+                                         renderer_for)
 from reflectance.render.primitives import Primitives
 from reflectance.render.samples import SurfaceSamples
 
 __all__ = ["visibility"]
 
 
-def visibility(meshes, camera, rows=None, select=None):
+def visibility(meshes, camera, rows=None, select=None, renderer=None):
     """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
 
     Parameters
@@ -45,6 +45,9 @@ def visibility(meshes, camera, rows=None, select=None):
         in any order) are traced, each exactly as in the whole band (the same ray, the same
         ID buffer and candidates): the adaptive refinement's samples
         (:mod:`reflectance.render.adaptive`).
+    renderer : IdRenderer, optional
+        An open :class:`reflectance.render.idbuffer.IdRenderer` of these primitives to draw
+        with (left open); default a new window for this call.
 
     Returns
     -------
@@ -72,8 +75,8 @@ def visibility(meshes, camera, rows=None, select=None):
                          f"{height}-row sample grid")
     # the ID buffer of the band and one row around it (the 3 x 3 neighbourhoods below)
     top, bottom = max(start - 1, 0), min(stop + 1, height)
-    with IdRenderer(scene) as renderer:
-        keys = key_image(scene, renderer.render(
+    with renderer_for(scene, renderer) as ids:
+        keys = key_image(scene, ids.render(
             view if (top, bottom) == (0, height) else view.band(top, bottom)))
     if select is None:
         N = (stop - start) * cols
