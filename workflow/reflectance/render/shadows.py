@@ -83,13 +83,21 @@ def _terminator_offset(scene, samples, idx, P):
     corner = np.take(scene.T, tri[sub], axis=1)
     b = samples.barycentric[idx[sub]]
     w = (1.0 - b[:, 0] - b[:, 1], b[:, 0], b[:, 1])
-    sign = np.where(samples.flipped[idx[sub]], -1.0, 1.0)
+    flipped = np.nonzero(samples.flipped[idx[sub]])[0]
     Q = P[:, sub]
     lift = np.zeros_like(Q)
-    for j in range(3):
-        V, Nv = np.take(scene.P, corner[j], axis=1), np.take(scene.N, corner[j], axis=1) * sign
-        below = np.minimum(((Q - V) * Nv).sum(axis=0), 0.0)  # Hanika 2021, Listing 1
-        lift -= w[j] * below * Nv
+    for j in range(3):  # in place, the same operations in the same order as written out
+        V, Nv = np.take(scene.P, corner[j], axis=1), np.take(scene.N, corner[j], axis=1)
+        if len(flipped):  # the normal of the side seen
+            Nv[:, flipped] = -Nv[:, flipped]
+        np.subtract(Q, V, out=V)
+        V *= Nv
+        below = V[0] + V[1]
+        below += V[2]  # (Q - V) . Nv
+        np.minimum(below, 0.0, out=below)  # Hanika 2021, Listing 1
+        below *= w[j]
+        Nv *= below
+        lift -= Nv  # lift -= w below Nv
     P = P.copy()
     P[:, sub] += lift
     return P
