@@ -196,14 +196,12 @@ def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, se
         b1, b2 = barycentric[m, 0], barycentric[m, 1]
         w = (1.0 - b1 - b2, b1, b2)
 
-        def blend(A, k):  # component k of the barycentric interpolation of a vertex attribute
-            return sum(w[j] * np.take(A[k], corner[j]) for j in range(3))
+        def blend(A):  # barycentric interpolation of a vertex attribute, components first
+            return sum(w[j] * np.take(A, corner[j], axis=1) for j in range(3))
 
-        for k in range(3):
-            position[m, k] = blend(scene.P, k)
-        for k in range(2):
-            uv[m, k] = blend(scene.UV, k)
-        n = [blend(scene.N, k) for k in range(3)]
+        position[m] = blend(scene.P).T
+        uv[m] = blend(scene.UV).T
+        n = blend(scene.N)
         length = np.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
         good = length > 1e-6
         inv = 1.0 / np.where(good, length, 1.0)
