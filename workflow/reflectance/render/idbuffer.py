@@ -177,9 +177,27 @@ def neighbour_keys(image, rows, cols, fill=-1):
     return np.take(padded, ((rows + 1) * width + cols + 1)[:, None] + offsets)
 
 
+#: a sorting network of 9 inputs (25 compare-exchanges; sorts every 0-1 input, hence every input)
+_SORT9 = ((0, 1), (3, 4), (6, 7), (1, 2), (4, 5), (7, 8), (0, 1), (3, 4), (6, 7), (0, 3), (3, 6),
+          (0, 3), (1, 4), (4, 7), (1, 4), (2, 5), (5, 8), (2, 5), (1, 3), (5, 7), (2, 6), (4, 6),
+          (2, 4), (2, 3), (5, 6))
+
+
 def distinct_keys(keys, exclude):
-    """Rows of candidate keys with repeats and the row's ``exclude`` key set to -1."""
+    """Rows of candidate keys, sorted, with repeats and the row's ``exclude`` key set to -1.
+
+    The (n, 9) rows of :func:`neighbour_keys` are sorted column-wise by a sorting network (whole
+    columns at once rather than row by row); other widths by ``np.sort``."""
     keys = np.where(keys == exclude[:, None], np.int32(-1), keys)
-    keys.sort(axis=1)
-    keys[:, 1:][keys[:, 1:] == keys[:, :-1]] = -1
-    return keys
+    if keys.shape[1] != 9:
+        keys.sort(axis=1)
+        keys[:, 1:][keys[:, 1:] == keys[:, :-1]] = -1
+        return keys
+    columns = np.ascontiguousarray(keys.T)  # (9, n): contiguous columns
+    low = np.empty_like(columns[0])
+    for i, j in _SORT9:
+        np.minimum(columns[i], columns[j], out=low)
+        np.maximum(columns[i], columns[j], out=columns[j])
+        columns[i] = low
+    columns[1:][columns[1:] == columns[:-1]] = -1
+    return columns.T

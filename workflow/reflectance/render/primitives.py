@@ -126,11 +126,13 @@ class Primitives:
         """(4, n) planes (a, b, c, e) of the triangles, signed so that a x + b y + c z + e > 0
         on the light's side. A ray from x to the light can cross a triangle only if the value
         at x is negative; a triangle whose plane holds the light gets (0, 0, 0, 1): never."""
-        offset = -np.einsum("ij,ij->i", self.face_normal, self.table[0:3].T)
+        if getattr(self, "_planes", None) is None:  # (4, n) unsigned planes, made once
+            offset = -np.einsum("ij,ij->i", self.face_normal, self.table[0:3].T)
+            self._planes = np.ascontiguousarray(np.column_stack([self.face_normal, offset]).T)
         if isinstance(light, DirectionalLight):
             side = np.sign(self.face_normal @ np.asarray(light.direction))
         else:
-            side = np.sign(self.face_normal @ np.asarray(light.position) + offset)
-        planes = np.column_stack([self.face_normal, offset]) * side[:, None]
-        planes[side == 0] = (0.0, 0.0, 0.0, 1.0)
-        return np.ascontiguousarray(planes.T)
+            side = np.sign(self.face_normal @ np.asarray(light.position) + self._planes[3])
+        planes = self._planes * side
+        planes[:, side == 0] = ((0.0,), (0.0,), (0.0,), (1.0,))
+        return planes
