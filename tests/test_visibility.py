@@ -7,7 +7,9 @@ from hypothesis import strategies as st
 
 from reflectance.geometry.shapes import VASE_PARTS, compose, plane, sphere, torus, vase
 from reflectance.render.camera import Camera
-from reflectance.render.idbuffer import decode_ids, encode_ids, id_buffer
+from reflectance.render.idbuffer import (IdRenderer, decode_ids, distinct_keys, encode_ids,
+                                         id_buffer)
+from reflectance.render.primitives import Primitives
 from reflectance.render.lights import DirectionalLight, PointLight, as_light, light_vectors
 from reflectance.render.rays import ray_sphere, ray_triangle_MollerTrumbore1997
 from reflectance.render.shadows import shadow_mask, shadow_masks
@@ -290,6 +292,37 @@ def test_reruns_give_identical_arrays(ball_scene, ball_camera, ball_samples):
     light = {"type": "point", "position": [2.0, -1.0, 4.0]}
     assert np.array_equal(shadow_mask(again, ball_scene, light),
                           shadow_mask(ball_samples, ball_scene, light))
+
+
+def test_one_window_for_camera_and_light_maps_gives_the_same_arrays(ball_scene, ball_camera,
+                                                                     ball_samples):
+    # the pipeline draws the camera's ID buffer and every light map in one window, resized
+    # between views; each must be what a fresh window draws
+    lights = [{"type": "point", "position": [2.0, -1.0, 4.0]},
+              {"type": "directional", "direction": [0.35, 0.2, 1.0]}]
+    alone = shadow_masks(ball_samples, ball_scene, lights, 96)
+    scene = Primitives(ball_scene)
+    with IdRenderer(scene) as window:
+        for band in [(0, 64), (16, 40)]:  # the camera's whole grid, then a band (another size)
+            shared = visibility(scene, ball_camera, band, renderer=window)
+            fresh = visibility(scene, ball_camera, band)
+            for f in ("hit", "triangle", "position", "normal", "depth"):
+                assert np.array_equal(getattr(shared, f), getattr(fresh, f), equal_nan=True)
+        np.testing.assert_array_equal(
+            shadow_masks(visibility(scene, ball_camera, renderer=window), ball_scene, lights,
+                         96, renderer=window), alone)
+
+
+def test_distinct_keys_match_a_per_row_set(seed=3):
+    rng = np.random.default_rng(seed)
+    for width, high in [(9, 4), (9, 50), (9, 2**24), (5, 6)]:
+        keys = rng.integers(-1, high, (400, width)).astype(np.int32)
+        exclude = rng.integers(-1, high, 400).astype(np.int32)
+        out = distinct_keys(keys, exclude)
+        assert out.shape == keys.shape
+        for row, k, e in zip(out, keys, exclude):
+            kept = [v for v in row.tolist() if v >= 0]
+            assert kept == sorted(set(k.tolist()) - {e, -1})  # each once, ascending
 
 
 def test_camera_seeing_nothing():
