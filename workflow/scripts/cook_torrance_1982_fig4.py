@@ -3,12 +3,10 @@
 
 from pathlib import Path
 
-import colour
-
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.colorimetry import illuminant_sd
+from reflectance.colour.colorimetry import illuminant_range_nm, illuminant_sd
 from reflectance.io.figures import PRINT_WIDTH_IN, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.fresnel import F0_from_nk
@@ -42,7 +40,7 @@ with script_log(snakemake) as log:
     ax_a.set(xlabel=f"wavelength ({unit})", ylabel="normal reflectance $F_0$", ylim=(0, 1),
              title=f"(a) {name} mirror, normal incidence")
     ax_b.plot(grid * scale, light, color="0.3", label=f"CIE {colour_cfg['illuminant']}")
-    tabulated_end = colour.SDS_ILLUMINANTS[colour_cfg["illuminant"]].shape.end
+    tabulated_end = illuminant_range_nm(colour_cfg["illuminant"])[1]  # colour-science's table
     if grid[-1] > tabulated_end:  # colour-science's table stops here; beyond it, held constant
         ax_b.axvspan(tabulated_end * scale, grid[-1] * scale, color="0.92", zorder=0,
                      label="held constant (past the table)")

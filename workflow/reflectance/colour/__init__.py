@@ -22,6 +22,7 @@ _EXPORTS = {
     "OBSERVER_DEFAULT": "colorimetry",
     "cmfs": "colorimetry",
     "illuminant_sd": "colorimetry",
+    "illuminant_range_nm": "colorimetry",
     "tristimulus_weights": "colorimetry",
     "tristimulus_weights_spd": "colorimetry",
     "white_XYZ": "colorimetry",

