@@ -11,6 +11,7 @@ from reflectance.colour.colorimetry import (
     cmfs,
     dominant_wavelength,
     illuminant_range_nm,
+    cmfs_wavelengths,
     illuminant_sd,
     spectrum_to_XYZ,
     tristimulus_weights,
@@ -81,6 +82,13 @@ def test_weights_match_colour_sd_to_XYZ_integration(start, end, step, illuminant
 def test_illuminant_range_is_colour_sciences_shape(name):
     shape = colour.SDS_ILLUMINANTS[name].shape
     assert illuminant_range_nm(name) == (shape.start, shape.end)
+
+
+@pytest.mark.parametrize("observer", ["CIE 1931 2 Degree Standard Observer",
+                                      "CIE 1964 10 Degree Standard Observer", "cie_2_1931"])
+def test_cmfs_wavelengths_are_colour_sciences_tabulation(observer):
+    key = colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER.get(observer)  # canonical and slug keys
+    np.testing.assert_array_equal(cmfs_wavelengths(observer), colour.MSDS_CMFS[key.name].wavelengths)
 
 
 def test_weights_on_native_grid_match_colour_without_our_alignment():

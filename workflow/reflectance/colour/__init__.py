@@ -23,6 +23,7 @@ _EXPORTS = {
     "cmfs": "colorimetry",
     "illuminant_sd": "colorimetry",
     "illuminant_range_nm": "colorimetry",
+    "cmfs_wavelengths": "colorimetry",
     "tristimulus_weights": "colorimetry",
     "tristimulus_weights_spd": "colorimetry",
     "white_XYZ": "colorimetry",

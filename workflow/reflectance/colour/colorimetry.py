@@ -36,6 +36,7 @@ __all__ = [
     "cmfs",
     "illuminant_sd",
     "illuminant_range_nm",
+    "cmfs_wavelengths",
     "tristimulus_weights",
     "tristimulus_weights_spd",
     "white_XYZ",
@@ -215,6 +216,22 @@ def illuminant_sd(name="D65", wavelengths=None):
     if wavelengths is None:
         return np.array(tables.illuminant_tabulated(_validate_illuminant(name))[1])
     return _illuminant_cached(name, _grid_key(wavelengths)).copy()
+
+
+def cmfs_wavelengths(observer=OBSERVER_DEFAULT):
+    """The wavelengths (nm) of a CIE standard observer's own tabulation in colour-science.
+
+    That is ``colour.MSDS_CMFS[observer].wavelengths``, read from the table cache
+    (:mod:`reflectance.colour.tables`), so a caller that needs no other colour-science function
+    does not import it.
+
+    Examples
+    --------
+    >>> w = cmfs_wavelengths("CIE 1931 2 Degree Standard Observer")
+    >>> float(w[0]), float(w[-1]), len(w)
+    (360.0, 830.0, 471)
+    """
+    return tables.cmfs_tabulated(_validate_observer(observer))[0]
 
 
 def illuminant_range_nm(name="D65"):

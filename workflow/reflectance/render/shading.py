@@ -45,7 +45,8 @@ import numpy as np
 
 from reflectance.optics.brdf import (brdf_BlinnPhong1977, brdf_CookTorrance1982, brdf_Lambert,
                               brdf_Phong1975, brdf_TorranceSparrow_Blinn1977)
-from reflectance.colour.colorimetry import OBSERVER_DEFAULT, cmfs, tristimulus_weights, white_XYZ
+from reflectance.colour.colorimetry import (OBSERVER_DEFAULT, cmfs, cmfs_wavelengths,
+                                            tristimulus_weights, white_XYZ)
 from reflectance.optics.fresnel import fresnel, fresnel_Schlick1994
 from reflectance.optics.microfacet import ROUGHNESS_PARAMETERS, c3_texture_Blinn1977
 from reflectance.geometry.texture import texture
@@ -297,7 +298,7 @@ def emission_XYZ(dominant_wavelength_nm, luminance, purity=1.0, white="D65",
     0.500
     """
     table = cmfs(observer)
-    grid = np.asarray(_cmfs_wavelengths(observer))
+    grid = np.asarray(cmfs_wavelengths(observer))
     if not grid[0] <= dominant_wavelength_nm <= grid[-1]:
         raise ValueError(f"dominant wavelength {dominant_wavelength_nm} nm is outside the "
                          f"observer's {grid[0]:g}-{grid[-1]:g} nm")
@@ -310,13 +311,6 @@ def emission_XYZ(dominant_wavelength_nm, luminance, purity=1.0, white="D65",
     x, y = xy_white + purity * (xy_locus - xy_white)  # CIE 15:2004 §9.1: purity along the line
     Y = float(luminance)
     return np.array([x * Y / y, Y, (1.0 - x - y) * Y / y])
-
-
-def _cmfs_wavelengths(observer=OBSERVER_DEFAULT):
-    """The wavelengths (nm) of an observer's own CMF tabulation."""
-    import colour
-
-    return colour.MSDS_CMFS[observer].wavelengths
 
 
 # --------------------------------------------------------------------------------------------
