@@ -569,11 +569,11 @@ def _cross_field(config):
         try:
             illuminant_sd(light["spectrum"])
         except ValueError:
-            import colour
+            from reflectance.colour import tables
 
+            known = sorted(k for k in tables.illuminant_names() if len(k) <= 4)
             problems.append(f"{key}.spectrum: {light['spectrum']!r} is not an illuminant "
-                            f"colour-science knows; e.g. "
-                            f"{', '.join(sorted(k for k in colour.SDS_ILLUMINANTS if len(k) <= 4))}")
+                            f"colour-science knows; e.g. {', '.join(known)}")
 
     # vectors that must have a direction
     vectors = [(f"{key}.direction", light["direction"]) for key, light in lights]
@@ -610,11 +610,10 @@ def _cameras(config):
 
 
 def _munsell_notations(config):
-    """Munsell notations colour-science can turn into a colour with 0 <= Y <= 1."""
-    import warnings
-
-    import colour
-    from colour.notation.munsell import munsell_colour_to_munsell_specification
+    """Munsell notations colour-science can turn into a colour with 0 <= Y <= 1 (its answers
+    for a notation are cached by reflectance.colour.tables: no import of colour-science once
+    known)."""
+    from reflectance.colour.tables import munsell_value_and_Y
 
     problems = []
     for name, m in config["materials"].items():
@@ -622,13 +621,9 @@ def _munsell_notations(config):
             continue
         key, notation = f"materials.{name}.notation", m["notation"]
         try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                spec = munsell_colour_to_munsell_specification(notation)
-                value = float(spec[1])
-                if not 0.0 <= value <= 10.0:
-                    raise ValueError(f"value {value:g} is outside the Munsell scale 0-10")
-                Y = float(colour.munsell_colour_to_xyY(notation)[2])
+            value, Y = munsell_value_and_Y(notation)
+            if Y is None:
+                raise ValueError(f"value {value:g} is outside the Munsell scale 0-10")
         except (ValueError, AssertionError, KeyError, IndexError) as err:
             problems.append(f"{key}: {notation!r} is not a usable Munsell notation "
                             f"(e.g. '5R 4/14', 'N2'): {str(err).strip()}")
@@ -809,19 +804,22 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
       fits in ``memory`` bytes (default: this machine's physical memory).
     """
-    import colour
+    # colour-science's names, read from the tables it wrote once (reflectance.colour.tables:
+    # its own lookup rules, no import of colour-science); the observer must be one of the
+    # standard observers the colour path uses (colorimetry accepts no other CMFS)
+    from reflectance.colour import tables
 
     problems = []
     c = config.get("colour", {})
-    if c.get("illuminant") not in colour.SDS_ILLUMINANTS:
+    if tables.resolve_illuminant(c.get("illuminant")) is None:
         problems.append(
             f"colour.illuminant: {c.get('illuminant')!r} is not an illuminant colour-science "
-            f"knows; e.g. {', '.join(sorted(k for k in colour.SDS_ILLUMINANTS if len(k) <= 4))}"
+            f"knows; e.g. {', '.join(sorted(k for k in tables.illuminant_names() if len(k) <= 4))}"
         )
-    if c.get("observer") not in colour.MSDS_CMFS:
+    if tables.resolve_observer(c.get("observer")) is None:
         problems.append(
             f"colour.observer: {c.get('observer')!r} is not a colour-science CMFS; known: "
-            + ", ".join(k for k in colour.MSDS_CMFS if "Standard Observer" in k)
+            + ", ".join(k for k in tables.observer_names() if "Standard Observer" in k)
         )
     w = config.get("wavelengths", {})
     if w and not w["start_nm"] < w["end_nm"]:
