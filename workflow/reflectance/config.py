@@ -872,3 +872,143 @@ def load_config(path="config.yaml", check_spectra=True, check_scenes=True):
     check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
                  spectra_dir=path.parent / "spectra")
     return config
+
+
+# --------------------------------------------------------------------------------------------
+# 7. Checks that passed are not repeated on the same inputs (every parse of the workflow)
+# --------------------------------------------------------------------------------------------
+
+#: Version of the layout of the record :func:`check_once` keeps; part of its key.
+CHECKED_FORMAT = 1
+
+#: Environment variables (by prefix) that may change what a check finds; part of the key.
+_ENVIRONMENT_PREFIXES = ("REFLECTANCE_", "COLOUR_SCIENCE__", "PYVISTA_", "VTK_")
+
+_reads = None  # while checking: the files and folders the checks read (see _record)
+
+
+def _record(event, args):
+    """Audit hook: while :func:`check_once` checks, note every file opened for reading and
+    every folder listed (Python's own audit events: open, os.listdir, os.scandir)."""
+    if _reads is None:
+        return
+    if event == "open":
+        path, mode, flags = args
+        if isinstance(mode, str):
+            if any(c in mode for c in "wax+"):
+                return
+        elif flags is not None and flags & (os.O_WRONLY | os.O_RDWR | os.O_CREAT):
+            return
+        if isinstance(path, (str, bytes, os.PathLike)):
+            _reads["files"].add(os.path.abspath(os.fsdecode(path)))
+    elif event in ("os.listdir", "os.scandir") and args:
+        path = args[0]
+        if isinstance(path, (str, bytes, os.PathLike)):
+            _reads["folders"].add(os.path.abspath(os.fsdecode(path)))
+
+
+_hooked = False
+
+
+def _stamp(path):
+    """(mtime_ns, size) of a file, or None if there is none."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return [st.st_mtime_ns, st.st_size]
+
+
+def _listing(path):
+    try:
+        return sorted(os.listdir(path))
+    except OSError:
+        return None
+
+
+def _check_key(config, arguments):
+    """A hash of everything the checks' outcome depends on but the files they read: the config,
+    the arguments, this library's files (content), the schemas (content), the Python and the
+    installed distributions (their dist-info names carry the versions), the environment."""
+    import hashlib
+    import sys
+
+    h = hashlib.sha256()
+
+    def add(*parts):
+        for part in parts:
+            h.update(repr(part).encode())
+            h.update(b"\0")
+
+    add(CHECKED_FORMAT, repr(config), sorted(arguments.items()), os.getcwd())
+    add(sys.version, sys.executable, sys.path)
+    for folder in sorted({Path(__file__).resolve().parent, SCHEMA_PATH.parent}):
+        for path in sorted(folder.rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts:
+                add(str(path), path.read_bytes())
+    for entry in sys.path:
+        names = _listing(entry or ".") or []
+        add(entry, [n for n in names if n.endswith((".dist-info", ".egg-info", ".pth"))])
+    add(sorted((k, v) for k, v in os.environ.items() if k.startswith(_ENVIRONMENT_PREFIXES)))
+    return h.hexdigest()
+
+
+def check_once(config, record, check_spectra=True, check_scenes=True, spectra_dir="spectra",
+               memory=None):
+    """:func:`validate_schema` and :func:`check_config`, skipped when they passed before on the
+    very same inputs.
+
+    The checks take seconds (colour-science, VTK, every figure's scene) and the workflow is
+    parsed by every ``snakemake`` call. When they pass, ``record`` (a JSON file) keeps a hash of
+    their inputs (:func:`_check_key`: config, arguments, this library's and the schemas'
+    content, the Python, installed packages, environment) and the modification time and size of
+    every file they read and the names in every folder they listed (Python's audit events), and
+    of the spectra folder and every module they imported. A later call with the same hash whose
+    files and folders are all unchanged returns at once; anything else checks again, so a
+    problem is reported exactly as by the checks themselves (failures are never recorded).
+    Delete ``record`` to force the checks.
+    """
+    import sys
+
+    global _reads, _hooked
+
+    memory = physical_memory_bytes() if memory is None else memory
+    arguments = {"check_spectra": bool(check_spectra), "check_scenes": bool(check_scenes),
+                 "spectra_dir": str(Path(spectra_dir).resolve()), "memory": memory}
+    key = _check_key(config, arguments)
+    record = Path(record)
+    try:
+        kept = json.loads(record.read_text())
+        if (kept.get("key") == key
+                and all(_stamp(p) == s for p, s in kept["files"].items())
+                and all(_listing(p) == names for p, names in kept["folders"].items())):
+            return
+    except (OSError, ValueError, AttributeError, KeyError, TypeError):
+        pass
+    if not _hooked:
+        sys.addaudithook(_record)
+        _hooked = True
+    modules = set(sys.modules)
+    spectra = str(Path(spectra_dir).resolve())
+    _reads = {"files": set(), "folders": {spectra}}
+    try:
+        validate_schema(config)
+        check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
+                     spectra_dir=spectra_dir, memory=memory)
+    finally:
+        reads, _reads = _reads, None
+    for name in set(sys.modules) - modules:
+        origin = getattr(sys.modules.get(name), "__file__", None)
+        if isinstance(origin, str):
+            reads["files"].add(os.path.abspath(origin))
+    folders = {p: _listing(p) for p in sorted(reads["folders"])}
+    for name in folders[spectra] or []:  # each spectrum, read or not (a pending one: made later)
+        reads["files"].add(os.path.join(spectra, name))
+    files = {p: _stamp(p) for p in sorted(reads["files"])}
+    from reflectance.io.atomic import atomic_write
+
+    try:
+        with atomic_write(record) as tmp:
+            Path(tmp).write_text(json.dumps({"key": key, "files": files, "folders": folders}))
+    except OSError:
+        pass  # an unwritable record: the checks run again next time
