@@ -141,3 +141,27 @@ def test_the_real_checks_name_a_bad_key_with_a_record_of_the_good_config(
             C.check_once(bad, record, check_spectra=False, check_scenes=False)
         assert str(got.value) == str(expected.value)
         assert "colour.spaec" in str(got.value) and "\n" not in str(got.value)
+
+
+def test_checks_without_scenes_import_no_colour_science_nor_vtk(root, tmp_path):
+    """What a job's re-parse (cluster) and a config refused by the schema cost: the schema walk
+    reads the watch's keywords without pyvista, the names and Munsell notations come from the
+    colour-science cache (filled by the first run, checked on the second)."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    import reflectance
+
+    code = ("from reflectance.config import read_config, validate_schema, check_config\n"
+            "c = read_config('config.yaml')\nvalidate_schema(c)\n"
+            "check_config(c, check_spectra=False, check_scenes=False)\n")
+    env = dict(os.environ, PYTHONPATH=str(Path(reflectance.__file__).resolve().parents[1]),
+               REFLECTANCE_CACHE=str(tmp_path))
+    for _ in range(2):
+        result = subprocess.run([sys.executable, "-X", "importtime", "-c", code], cwd=root,
+                                env=env, capture_output=True, text=True)
+        assert result.returncode == 0, result.stderr[-2000:]
+    imported = {line.rsplit("|", 1)[-1].strip().split(".")[0]
+                for line in result.stderr.splitlines() if line.startswith("import time:")}
+    assert not imported & {"colour", "pandas", "matplotlib", "vtk", "vtkmodules", "pyvista"}
