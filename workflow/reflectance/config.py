@@ -17,6 +17,9 @@ structure an earlier one guarantees), and each names the key of every problem it
    vectors, Munsell notations; then every rendered figure's scene is built and validated as the
    figure's job will build it (without rendering), and the memory of every render is estimated
    from its size (:func:`render_memory_bytes`) and refused when it cannot fit on this machine.
+
+The workflow's main process runs 2.-5. through :func:`check_once`, which skips them when they
+passed before on the very same inputs (every ``snakemake`` call parses the workflow).
 """
 
 from __future__ import annotations
