@@ -165,3 +165,17 @@ def test_checks_without_scenes_import_no_colour_science_nor_vtk(root, tmp_path):
     imported = {line.rsplit("|", 1)[-1].strip().split(".")[0]
                 for line in result.stderr.splitlines() if line.startswith("import time:")}
     assert not imported & {"colour", "pandas", "matplotlib", "vtk", "vtkmodules", "pyvista"}
+
+
+def test_read_config_gives_what_the_pure_python_parser_gives(root, tmp_path):
+    """config.yaml is parsed by libyaml; the values are those of PyYAML's own safe loader, and a
+    key given twice is still named with its line (also twice on one line)."""
+    text = (root / "config.yaml").read_text()
+    assert C.read_config(root / "config.yaml") == yaml.load(text, Loader=yaml.SafeLoader)
+    (tmp_path / "config.yaml").write_text("a: 1\nb:\n  c: 2\n  d: {x: 1, x: 2}\n")
+    with pytest.raises(C.ConfigError, match=r"line 4, column 13: .*'x' given twice \(first on "
+                                            r"line 4\)"):
+        C.read_config(tmp_path / "config.yaml")
+    (tmp_path / "config.yaml").write_text("a:\n\tb: 1\n")  # the pure-Python parser's words
+    with pytest.raises(C.ConfigError, match=r"line 2, column 1: .*found character '\\t'"):
+        C.read_config(tmp_path / "config.yaml")

@@ -116,13 +116,13 @@ def read_config(path="config.yaml"):
     except UnicodeDecodeError as err:
         raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
     try:
-        config = _load_unique(text, _FastUniqueKeyLoader)
+        try:
+            config = _load_unique(text, _FastUniqueKeyLoader)
+        except yaml.YAMLError:
+            # the pure-Python parser decides (as before, and as Snakemake reads the file); its
+            # message names what it found ('\t', the alias)
+            config = _load_unique(text, _UniqueKeyLoader)
     except yaml.YAMLError as err:
-        if _FastUniqueKeyLoader is not _UniqueKeyLoader:
-            try:  # the pure-Python parser's message names what it found ('\t', the alias)
-                _load_unique(text, _UniqueKeyLoader)
-            except yaml.YAMLError as slow_err:
-                err = slow_err
         mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
         where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         what = getattr(err, "problem", None) or str(err).replace("\n", " ")
