@@ -888,6 +888,7 @@ CHECKED_FORMAT = 1
 _ENVIRONMENT_PREFIXES = ("REFLECTANCE_", "COLOUR_SCIENCE__", "PYVISTA_", "VTK_")
 
 _reads = None  # while checking: the files and folders the checks read (see _record)
+_hooked = False  # _record is installed (an audit hook stays for the life of the process)
 
 
 def _record(event, args):
@@ -908,9 +909,6 @@ def _record(event, args):
         path = args[0]
         if isinstance(path, (str, bytes, os.PathLike)):
             _reads["folders"].add(os.path.abspath(os.fsdecode(path)))
-
-
-_hooked = False
 
 
 def _stamp(path):
@@ -969,7 +967,9 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
     of the spectra folder and every module they imported. A later call with the same hash whose
     files and folders are all unchanged returns at once; anything else checks again, so a
     problem is reported exactly as by the checks themselves (failures are never recorded).
-    Delete ``record`` to force the checks.
+    Delete ``record`` to force the checks. Meant for one call per process (the workflow's
+    parse): a file an earlier check in the same process already holds in memory is not read,
+    and so not recorded, again.
     """
     import sys
 
