@@ -116,6 +116,31 @@ def test_chromatic_adaptation_matrix_is_colour_sciences(fresh_cache):
             M, colour.adaptation.CHROMATIC_ADAPTATION_TRANSFORMS["CAT02"])
 
 
+@pytest.mark.parametrize("notation", ["5R 4/14", "N2", "2.5YR 3/4", "5BG 5/6", "N9.5"])
+def test_munsell_value_and_Y_are_colour_sciences(fresh_cache, notation):
+    import warnings
+
+    from colour.notation.munsell import munsell_colour_to_munsell_specification
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        V = float(munsell_colour_to_munsell_specification(notation)[1])
+        Y = float(colour.munsell_colour_to_xyY(notation)[2])
+    first, again = written_then_read(lambda: tables.munsell_value_and_Y(notation))
+    assert first == again == (V, Y)  # bit-identical, also when read back from the file
+    assert list(tables.cache_directory().glob("munsell-*.json"))
+
+
+def test_munsell_errors_are_colour_sciences_and_not_cached(fresh_cache):
+    with pytest.raises(ValueError):
+        tables.munsell_value_and_Y("black")
+    assert tables.munsell_value_and_Y("N99") == (99.0, None)  # outside 0-10: no Y asked for
+    tables.forget()
+    with pytest.raises(ValueError):
+        tables.munsell_value_and_Y("black")  # computed again, raising again
+    assert len(list(tables.cache_directory().glob("munsell-*.json"))) == 1
+
+
 def test_an_unwritable_cache_is_ignored(tmp_path, monkeypatch):
     blocker = tmp_path / "a-file"
     blocker.write_text("not a folder")

@@ -17,6 +17,9 @@ structure an earlier one guarantees), and each names the key of every problem it
    vectors, Munsell notations; then every rendered figure's scene is built and validated as the
    figure's job will build it (without rendering), and the memory of every render is estimated
    from its size (:func:`render_memory_bytes`) and refused when it cannot fit on this machine.
+
+The workflow's main process runs 2.-5. through :func:`check_once`, which skips them when they
+passed before on the very same inputs (every ``snakemake`` call parses the workflow).
 """
 
 from __future__ import annotations
@@ -66,22 +69,41 @@ def _raise(problems, source=SOURCE):
 # 1. YAML: syntax errors and duplicated keys with their line numbers
 # --------------------------------------------------------------------------------------------
 
-class _UniqueKeyLoader(yaml.SafeLoader):
-    """PyYAML's safe loader, refusing a key given twice in one mapping (PyYAML keeps the last)."""
+class _UniqueKeys:
+    """A safe loader's mappings, refusing a key given twice in one mapping (PyYAML keeps the
+    last)."""
 
     def construct_mapping(self, node, deep=False):
         seen = {}
         for key_node, _ in node.value:
             key = self.construct_object(key_node, deep=deep)
+            mark = key_node.start_mark
             try:
-                first = seen.setdefault(key, key_node.start_mark.line + 1)
+                first = seen.setdefault(key, (mark.line, mark.column))
             except TypeError:  # an unhashable key: PyYAML's own error follows
                 continue
-            if first != key_node.start_mark.line + 1:
+            if first != (mark.line, mark.column):  # also twice on one line: {x: 1, x: 2}
                 raise yaml.constructor.ConstructorError(
-                    None, None, f"key {key!r} given twice (first on line {first})",
-                    key_node.start_mark)
+                    None, None, f"key {key!r} given twice (first on line {first[0] + 1})", mark)
         return super().construct_mapping(node, deep=deep)
+
+
+class _UniqueKeyLoader(_UniqueKeys, yaml.SafeLoader):
+    """PyYAML's pure-Python safe loader: its syntax errors name the character found."""
+
+
+#: libyaml's parser where PyYAML has it (ten times faster; every parse of the workflow reads
+#: config.yaml), with the same mappings and key lines.
+_FastUniqueKeyLoader = (type("_FastUniqueKeyLoader", (_UniqueKeys, yaml.CSafeLoader), {})
+                        if hasattr(yaml, "CSafeLoader") else _UniqueKeyLoader)
+
+
+def _load_unique(text, loader_class):
+    loader = loader_class(text)  # a safe loader: data only
+    try:
+        return loader.get_single_data()
+    finally:
+        loader.dispose()
 
 
 def read_config(path="config.yaml"):
@@ -90,13 +112,16 @@ def read_config(path="config.yaml"):
     if not path.is_file():
         raise ConfigError(f"no config file at {path}")
     try:
-        loader = _UniqueKeyLoader(path.read_text(encoding="utf-8"))  # a SafeLoader: data only
-        try:
-            config = loader.get_single_data()
-        finally:
-            loader.dispose()
+        text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as err:
         raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
+    try:
+        try:
+            config = _load_unique(text, _FastUniqueKeyLoader)
+        except yaml.YAMLError:
+            # the pure-Python parser decides (as before, and as Snakemake reads the file); its
+            # message names what it found ('\t', the alias)
+            config = _load_unique(text, _UniqueKeyLoader)
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
         where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
@@ -547,11 +572,11 @@ def _cross_field(config):
         try:
             illuminant_sd(light["spectrum"])
         except ValueError:
-            import colour
+            from reflectance.colour import tables
 
+            known = sorted(k for k in tables.illuminant_names() if len(k) <= 4)
             problems.append(f"{key}.spectrum: {light['spectrum']!r} is not an illuminant "
-                            f"colour-science knows; e.g. "
-                            f"{', '.join(sorted(k for k in colour.SDS_ILLUMINANTS if len(k) <= 4))}")
+                            f"colour-science knows; e.g. {', '.join(known)}")
 
     # vectors that must have a direction
     vectors = [(f"{key}.direction", light["direction"]) for key, light in lights]
@@ -588,11 +613,10 @@ def _cameras(config):
 
 
 def _munsell_notations(config):
-    """Munsell notations colour-science can turn into a colour with 0 <= Y <= 1."""
-    import warnings
-
-    import colour
-    from colour.notation.munsell import munsell_colour_to_munsell_specification
+    """Munsell notations colour-science can turn into a colour with 0 <= Y <= 1 (its answers
+    for a notation are cached by reflectance.colour.tables: no import of colour-science once
+    known)."""
+    from reflectance.colour.tables import munsell_value_and_Y
 
     problems = []
     for name, m in config["materials"].items():
@@ -600,13 +624,9 @@ def _munsell_notations(config):
             continue
         key, notation = f"materials.{name}.notation", m["notation"]
         try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                spec = munsell_colour_to_munsell_specification(notation)
-                value = float(spec[1])
-                if not 0.0 <= value <= 10.0:
-                    raise ValueError(f"value {value:g} is outside the Munsell scale 0-10")
-                Y = float(colour.munsell_colour_to_xyY(notation)[2])
+            value, Y = munsell_value_and_Y(notation)
+            if Y is None:
+                raise ValueError(f"value {value:g} is outside the Munsell scale 0-10")
         except (ValueError, AssertionError, KeyError, IndexError) as err:
             problems.append(f"{key}: {notation!r} is not a usable Munsell notation "
                             f"(e.g. '5R 4/14', 'N2'): {str(err).strip()}")
@@ -787,19 +807,22 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
       fits in ``memory`` bytes (default: this machine's physical memory).
     """
-    import colour
+    # colour-science's names, read from the tables it wrote once (reflectance.colour.tables:
+    # its own lookup rules, no import of colour-science); the observer must be one of the
+    # standard observers the colour path uses (colorimetry accepts no other CMFS)
+    from reflectance.colour import tables
 
     problems = []
     c = config.get("colour", {})
-    if c.get("illuminant") not in colour.SDS_ILLUMINANTS:
+    if tables.resolve_illuminant(c.get("illuminant")) is None:
         problems.append(
             f"colour.illuminant: {c.get('illuminant')!r} is not an illuminant colour-science "
-            f"knows; e.g. {', '.join(sorted(k for k in colour.SDS_ILLUMINANTS if len(k) <= 4))}"
+            f"knows; e.g. {', '.join(sorted(k for k in tables.illuminant_names() if len(k) <= 4))}"
         )
-    if c.get("observer") not in colour.MSDS_CMFS:
+    if tables.resolve_observer(c.get("observer")) is None:
         problems.append(
             f"colour.observer: {c.get('observer')!r} is not a colour-science CMFS; known: "
-            + ", ".join(k for k in colour.MSDS_CMFS if "Standard Observer" in k)
+            + ", ".join(k for k in tables.observer_names() if "Standard Observer" in k)
         )
     w = config.get("wavelengths", {})
     if w and not w["start_nm"] < w["end_nm"]:
@@ -852,3 +875,143 @@ def load_config(path="config.yaml", check_spectra=True, check_scenes=True):
     check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
                  spectra_dir=path.parent / "spectra")
     return config
+
+
+# --------------------------------------------------------------------------------------------
+# 7. Checks that passed are not repeated on the same inputs (every parse of the workflow)
+# --------------------------------------------------------------------------------------------
+
+#: Version of the layout of the record :func:`check_once` keeps; part of its key.
+CHECKED_FORMAT = 1
+
+#: Environment variables (by prefix) that may change what a check finds; part of the key.
+_ENVIRONMENT_PREFIXES = ("REFLECTANCE_", "COLOUR_SCIENCE__", "PYVISTA_", "VTK_")
+
+_reads = None  # while checking: the files and folders the checks read (see _record)
+_hooked = False  # _record is installed (an audit hook stays for the life of the process)
+
+
+def _record(event, args):
+    """Audit hook: while :func:`check_once` checks, note every file opened for reading and
+    every folder listed (Python's own audit events: open, os.listdir, os.scandir)."""
+    if _reads is None:
+        return
+    if event == "open":
+        path, mode, flags = args
+        if isinstance(mode, str):
+            if any(c in mode for c in "wax+"):
+                return
+        elif flags is not None and flags & (os.O_WRONLY | os.O_RDWR | os.O_CREAT):
+            return
+        if isinstance(path, (str, bytes, os.PathLike)):
+            _reads["files"].add(os.path.abspath(os.fsdecode(path)))
+    elif event in ("os.listdir", "os.scandir") and args:
+        path = args[0]
+        if isinstance(path, (str, bytes, os.PathLike)):
+            _reads["folders"].add(os.path.abspath(os.fsdecode(path)))
+
+
+def _stamp(path):
+    """(mtime_ns, size) of a file, or None if there is none."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return [st.st_mtime_ns, st.st_size]
+
+
+def _listing(path):
+    try:
+        return sorted(os.listdir(path))
+    except OSError:
+        return None
+
+
+def _check_key(config, arguments):
+    """A hash of everything the checks' outcome depends on but the files they read: the config,
+    the arguments, this library's files (content), the schemas (content), the Python and the
+    installed distributions (their dist-info names carry the versions), the environment."""
+    import hashlib
+    import sys
+
+    h = hashlib.sha256()
+
+    def add(*parts):
+        for part in parts:
+            h.update(repr(part).encode())
+            h.update(b"\0")
+
+    add(CHECKED_FORMAT, repr(config), sorted(arguments.items()), os.getcwd())
+    add(sys.version, sys.executable, sys.path)
+    for folder in sorted({Path(__file__).resolve().parent, SCHEMA_PATH.parent}):
+        for path in sorted(folder.rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts:
+                add(str(path), path.read_bytes())
+    for entry in sys.path:
+        names = _listing(entry or ".") or []
+        add(entry, [n for n in names if n.endswith((".dist-info", ".egg-info", ".pth"))])
+    add(sorted((k, v) for k, v in os.environ.items() if k.startswith(_ENVIRONMENT_PREFIXES)))
+    return h.hexdigest()
+
+
+def check_once(config, record, check_spectra=True, check_scenes=True, spectra_dir="spectra",
+               memory=None):
+    """:func:`validate_schema` and :func:`check_config`, skipped when they passed before on the
+    very same inputs.
+
+    The checks take seconds (colour-science, VTK, every figure's scene) and the workflow is
+    parsed by every ``snakemake`` call. When they pass, ``record`` (a JSON file) keeps a hash of
+    their inputs (:func:`_check_key`: config, arguments, this library's and the schemas'
+    content, the Python, installed packages, environment) and the modification time and size of
+    every file they read and the names in every folder they listed (Python's audit events), and
+    of the spectra folder and every module they imported. A later call with the same hash whose
+    files and folders are all unchanged returns at once; anything else checks again, so a
+    problem is reported exactly as by the checks themselves (failures are never recorded).
+    Delete ``record`` to force the checks. Meant for one call per process (the workflow's
+    parse): a file an earlier check in the same process already holds in memory is not read,
+    and so not recorded, again.
+    """
+    import sys
+
+    global _reads, _hooked
+
+    memory = physical_memory_bytes() if memory is None else memory
+    arguments = {"check_spectra": bool(check_spectra), "check_scenes": bool(check_scenes),
+                 "spectra_dir": str(Path(spectra_dir).resolve()), "memory": memory}
+    key = _check_key(config, arguments)
+    record = Path(record)
+    try:
+        kept = json.loads(record.read_text())
+        if (kept.get("key") == key
+                and all(_stamp(p) == s for p, s in kept["files"].items())
+                and all(_listing(p) == names for p, names in kept["folders"].items())):
+            return
+    except (OSError, ValueError, AttributeError, KeyError, TypeError):
+        pass
+    if not _hooked:
+        sys.addaudithook(_record)
+        _hooked = True
+    modules = set(sys.modules)
+    spectra = str(Path(spectra_dir).resolve())
+    _reads = {"files": set(), "folders": {spectra}}
+    try:
+        validate_schema(config)
+        check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
+                     spectra_dir=spectra_dir, memory=memory)
+    finally:
+        reads, _reads = _reads, None
+    for name in set(sys.modules) - modules:
+        origin = getattr(sys.modules.get(name), "__file__", None)
+        if isinstance(origin, str):
+            reads["files"].add(os.path.abspath(origin))
+    folders = {p: _listing(p) for p in sorted(reads["folders"])}
+    for name in folders[spectra] or []:  # each spectrum, read or not (a pending one: made later)
+        reads["files"].add(os.path.join(spectra, name))
+    files = {p: _stamp(p) for p in sorted(reads["files"])}
+    from reflectance.io.atomic import atomic_write
+
+    try:
+        with atomic_write(record) as tmp:
+            Path(tmp).write_text(json.dumps({"key": key, "files": files, "folders": folders}))
+    except OSError:
+        pass  # an unwritable record: the checks run again next time

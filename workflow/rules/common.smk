@@ -3,15 +3,18 @@
 
 import re
 
-from reflectance.config import ConfigError, check_config, validate_schema
+from reflectance.config import ConfigError, check_config, check_once, validate_schema
 
 # The costly checks (each dataset's range, every figure's scene, memory) run once, in the main
 # process: a job that Snakemake re-parses the workflow for (cluster, subprocess) skips them.
+# The main process skips them too when they passed on the very same inputs (config, library,
+# packages, every file they read: reflectance.config.check_once keeps the record).
 try:
-    validate_schema(config)
-    check_config(
-        config, check_spectra=workflow.is_main_process, check_scenes=workflow.is_main_process
-    )
+    if workflow.is_main_process:
+        check_once(config, ".snakemake/reflectance/config-checked.json")
+    else:
+        validate_schema(config)
+        check_config(config, check_spectra=False, check_scenes=False)
 except ConfigError as err:
     raise WorkflowError(str(err)) from None
 

@@ -3,7 +3,8 @@
 Importing colour-science takes seconds; the colour path needs only a few of its tables: the CIE
 standard observers' colour matching functions, the CIE illuminants' SPDs (both on their own
 tabulation and aligned to a caller's wavelength grid), the names colour-science knows them by, the
-primaries of the display colourspaces and the chromatic adaptation matrices. Each is computed by
+primaries of the display colourspaces, the chromatic adaptation matrices and (for the config
+check) the Munsell value and luminance factor of a notation. Each is computed by
 colour-science itself on first use and stored as a ``.npy`` (or ``.json``) file in a small cache,
 
     ``$REFLECTANCE_CACHE`` or ``${XDG_CACHE_HOME:-~/.cache}/reflectance``,
@@ -44,6 +45,7 @@ __all__ = [
     "illuminant_aligned",
     "rgb_colourspace_matrix",
     "chromatic_adaptation_matrix",
+    "munsell_value_and_Y",
     "forget",
 ]
 
@@ -286,8 +288,40 @@ def chromatic_adaptation_matrix(transform):
     )
 
 
+# -- Munsell notations ---------------------------------------------------------------------------
+
+@functools.lru_cache(maxsize=None)
+def munsell_value_and_Y(notation):
+    """``(V, Y)`` of a Munsell notation by colour-science, cached like the tables.
+
+    ``V = munsell_colour_to_munsell_specification(notation)[1]`` (the Munsell value) and, if
+    ``0 <= V <= 10``, ``Y = munsell_colour_to_xyY(notation)[2]`` (the luminance factor), else
+    ``Y = None``. A notation colour-science cannot read raises colour-science's own error
+    (ValueError, AssertionError, KeyError or IndexError), which is not cached; its warnings are
+    silenced.
+    """
+    path = _path("munsell", [notation], ".json")
+    try:
+        stored = json.loads(path.read_text())
+        V, Y = stored["V"], stored["Y"]
+        if isinstance(V, float) and (Y is None or isinstance(Y, float)):
+            return V, Y
+    except (OSError, ValueError, KeyError, TypeError):
+        pass
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        from colour.notation.munsell import munsell_colour_to_munsell_specification
+
+        V = float(munsell_colour_to_munsell_specification(notation)[1])
+        Y = float(_colour().munsell_colour_to_xyY(notation)[2]) if 0.0 <= V <= 10.0 else None
+    _store(path, lambda file: file.write(json.dumps({"V": V, "Y": Y}).encode()))
+    return V, Y
+
+
 def forget():
     """Forget the tables held in this process's memory (the cache files stay); for tests."""
     for function in (_colour_science_version, _names, cmfs_tabulated, illuminant_tabulated,
-                     rgb_colourspace_matrix, chromatic_adaptation_matrix):
+                     rgb_colourspace_matrix, chromatic_adaptation_matrix, munsell_value_and_Y):
         function.cache_clear()

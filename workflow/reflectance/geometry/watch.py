@@ -38,8 +38,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from reflectance.geometry.shapes import grid_mesh, merge_meshes, triangle_mesh, place
-from reflectance.geometry.shapes import check_positive as _check_positive
+# reflectance.geometry.shapes (pyvista, scipy) is imported by the functions that build meshes:
+# config.py reads watch()'s keywords at every parse of the workflow without loading them.
 
 __all__ = ["WATCH_PARTS", "SEVEN_SEGMENT_DIGITS", "watch"]
 
@@ -139,6 +139,8 @@ def _sweep(path, path_normal, binormal, u, rho, z, n_rho, n_z, part):
     normals are exact wherever the offset does not fold (rho > -path radius of curvature).
     Grid rows follow the profile (v = arc-length fraction), columns the path (u).
     """
+    from reflectance.geometry.shapes import grid_mesh
+
     rho, z = np.asarray(rho, float), np.asarray(z, float)
     n_rho, n_z = np.asarray(n_rho, float), np.asarray(n_z, float)
     points = (path[None] + rho[:, None, None] * path_normal[None]
@@ -156,6 +158,8 @@ def _cap(boundary, normal, e1, e2, n_rings, part):
 
     uv is the planar map onto the outline's extent along e1 and e2.
     """
+    from reflectance.geometry.shapes import grid_mesh
+
     centre = 0.5 * (boundary.min(axis=0) + boundary.max(axis=0))
     s = np.linspace(0.0, 1.0, n_rings + 1)
     points = centre + s[:, None, None] * (boundary - centre)[None]
@@ -188,6 +192,8 @@ def _slab(half_x, half_y, corner_radius, height, edge_radius, inset, border, top
     when ``inset`` > ``edge_radius``, runs inwards over a flat ring of the top; these and the
     flat bottom get part ``border``, the flat top inside the inset outline part ``top``.
     """
+    from reflectance.geometry.shapes import merge_meshes
+
     P2, N2, u = _rounded_rectangle(half_x, half_y, corner_radius, n_quarter, spacing)
     path = np.column_stack([P2, np.zeros(len(P2))])
     normal = np.column_stack([N2, np.zeros(len(N2))])
@@ -209,6 +215,8 @@ def _slab(half_x, half_y, corner_radius, height, edge_radius, inset, border, top
 
 def _polygon(vertices, z, uv_box, part):
     """Flat convex polygon (k, 2) at height z facing +z, fanned from its first vertex."""
+    from reflectance.geometry.shapes import triangle_mesh
+
     k = len(vertices)
     points = np.column_stack([vertices, np.full(k, z)])
     (x0, y0), (x1, y1) = uv_box
@@ -282,6 +290,8 @@ def _display(text, digit_height, thickness, slant_deg, z, box, window, part):
 
 def _positive(name, value):
     """geometry's check, with the message naming the watch's parameter."""
+    from reflectance.geometry.shapes import check_positive as _check_positive
+
     return _check_positive(value, f"watch: {name}")
 
 
@@ -393,6 +403,8 @@ def watch(*, case_size=(3.2, 3.6, 0.7), case_corner_radius=0.8, case_edge_radius
     >>> mesh.is_all_triangles, sorted(set(mesh.cell_data["part"].tolist())) == list(range(7))
     (True, True)
     """
+    from reflectance.geometry.shapes import merge_meshes, place
+
     cx, cy, cz = (_positive(f"case_size[{i}]", v) for i, v in enumerate(_tuple3(case_size)))
     c_corner = _positive("case_corner_radius", case_corner_radius)
     c_edge = _positive("case_edge_radius", case_edge_radius)
@@ -465,6 +477,8 @@ def watch(*, case_size=(3.2, 3.6, 0.7), case_corner_radius=0.8, case_edge_radius
 
 def _case(size, corner_radius, edge_radius, button_radius, button_length, quality):
     """The case (a rounded slab, flat inside its top edge) and its push button on +x."""
+    from reflectance.geometry.shapes import place
+
     cx, cy, cz = size
     case = WATCH_PARTS["case"]
     body = _slab(0.5 * cx, 0.5 * cy, corner_radius, cz, edge_radius, edge_radius, case, case,
@@ -514,6 +528,8 @@ def _bracelet_side(radius, y_enter, height, n_links, link_size, gap, corner, edg
     Its top surface is the cylinder of ``radius`` about the axis through (0, 0, zc), at
     ``height`` where it enters the case (y = ``y_enter``).
     """
+    from reflectance.geometry.shapes import merge_meshes, place
+
     lx, ly, lz = link_size
     sx, sz = strip_size
     phi_enter = np.arcsin(y_enter / radius)
