@@ -698,7 +698,7 @@ def render_sizes(config):
 
 
 def _render_memory(config, memory=None):
-    from reflectance.render.idbuffer import MAX_BUFFER_SIDE
+    from reflectance.render.camera import MAX_BUFFER_SIDE
 
     memory = physical_memory_bytes() if memory is None else memory
     problems = []

@@ -43,7 +43,7 @@ _EXPORTS = {
     "appearance": "composite",
     "part_pixels": "composite",
     "MAX_TRIANGLES": "idbuffer",
-    "MAX_BUFFER_SIDE": "idbuffer",
+    "MAX_BUFFER_SIDE": "camera",
     "encode_ids": "idbuffer",
     "decode_ids": "idbuffer",
     "id_buffer": "idbuffer",

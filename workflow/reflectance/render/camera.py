@@ -12,7 +12,11 @@ import numpy as np
 
 from reflectance.geometry.vectors import unit_vector
 
-__all__ = ["Camera"]
+__all__ = ["Camera", "MAX_BUFFER_SIDE"]
+
+MAX_BUFFER_SIDE = 16384
+"""Largest ID-buffer side in pixels (OpenGL renderbuffers are commonly limited to this); here,
+not in :mod:`reflectance.render.idbuffer`, so the config check reads it without loading VTK."""
 
 
 @dataclass(frozen=True)

@@ -18,16 +18,14 @@ from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
                                          vtkRenderWindow)
 
+from reflectance.render.camera import MAX_BUFFER_SIDE
 from reflectance.render.primitives import Primitives
 
-__all__ = ["MAX_TRIANGLES", "MAX_BUFFER_SIDE", "encode_ids", "decode_ids", "id_buffer",
+__all__ = ["MAX_TRIANGLES", "encode_ids", "decode_ids", "id_buffer",
            "renderer_for"]
 
 MAX_TRIANGLES = 2**24 - 1
 """The ID buffer holds 24 bits per pixel (RGB, 8 bits each); id 0 is the background."""
-
-MAX_BUFFER_SIDE = 16384
-"""Largest ID-buffer side in pixels (OpenGL renderbuffers are commonly limited to this)."""
 
 
 def encode_ids(ids):
