@@ -84,10 +84,11 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
     shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
     for name in KILLED_OUTPUTS:
         (cwd / name).unlink()
+    copied = final_files(cwd)  # the build's own files (test_workflow reads them)
     log = open(tmp_path / "first_run.txt", "w")
     run = subprocess.Popen(SNAKEMAKE + ["--cores", "2"], cwd=cwd, stdout=log,
                            stderr=subprocess.STDOUT, start_new_session=True)
-    checked = dict(final_files(cwd))  # the build's own files (test_workflow reads them)
+    checked = dict(copied)
     killed, started, before = False, None, set()
     try:
         deadline = time.monotonic() + 1800
@@ -119,15 +120,17 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
     assert (cwd / ".snakemake" / "locks").is_dir()  # what a killed run leaves behind
     missing = [name for name in KILLED_OUTPUTS if not (cwd / name).exists()]
     assert missing, "the render had finished when it was killed"
-    for path in final_files(cwd):
-        whole(path)
+    for path, key in final_files(cwd).items():  # what the killed run wrote
+        if checked.get(path) != key:
+            whole(path)
 
     spectra_before = {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")}
     proc = snakemake(cwd, "--cores", "2")  # plain: no --rerun-incomplete, no --unlock
     assert "reflectance: resuming" in proc.stderr
     assert f"rule {KILLED_RULE}:" in proc.stdout + proc.stderr  # rendered again
-    for path in final_files(cwd):
-        whole(path)
+    for path, key in final_files(cwd).items():  # what the rerun wrote (the rest: compared below)
+        if copied.get(path) != key:
+            whole(path)
     assert temporaries(cwd) == []  # the killed writers' temporaries were removed
     assert {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")} == spectra_before
     dry = snakemake(cwd, "-n", "--cores", "2")
