@@ -2,8 +2,8 @@
 
 Every case edits one thing of the project's config.yaml and runs the checks the workflow runs
 when it is parsed (``reflectance.config``: unknown keys, NaN and infinity, the schema, the rules
-between keys, the figures' scenes, the renders' memory), in-process for speed; a handful also go
-through a real ``snakemake -n`` in a temporary copy of the project. Each asserts that the
+between keys, the figures' scenes, the renders' memory), in-process for speed; one case per place where the workflow checks also
+goes through a real ``snakemake`` run in a temporary copy of the project (the end of this file). Each asserts that the
 message names the key (a regular expression over the message), and that nothing in spectra/,
 results/ or logs/ was written or removed.
 """
@@ -131,6 +131,7 @@ CORPUS = [
     ("dark-watch-light", set_(f"{CT}.fig8.light.intensity", 0), r"figures\.cook_torrance_1982\.fig8\.light\.intensity: 0"),
     ("zero-width", set_(f"{CT}.fig6.camera.width", 0), r"fig6\.camera\.width: 0 is less than"),
     ("negative-m", set_(f"{CT}.table1.rows[0].m", -0.1), r"table1\.rows\[0\]\.m: -0\.1"),
+    ("negative-step", set_("wavelengths.step_nm", -5), r"wavelengths\.step_nm: -5 is less than or equal"),
     ("string-number", set_("wavelengths.step_nm", "5"), r"wavelengths\.step_nm: '5' is not of type 'number'"),
     ("missing-section", delete(f"{CT}.fig8"), r"figures\.cook_torrance_1982: 'fig8' is a required property"),
     ("part-both-ways", set_(f"{CT}.fig8.parts.face.s", 0.5),
@@ -148,6 +149,8 @@ CORPUS = [
     ("part-s-plus-d", set_(f"{CT}.fig8.parts.case.d", 0.5), r"fig8\.parts\.case\.s, .*s \+ d = 1"),
     ("spheres-s-plus-d", set_(f"{ART}.spheres.d", 0.4), r"figures\.article\.spheres\.s, .*s \+ d = 1"),
     ("lecture-s-plus-d", set_(f"{LEC}.brdf_lobes.models.cook_torrance.d", 0.5), r"models\.cook_torrance\.s, .*s \+ d = 1"),
+    ("unknown-illuminant", set_("colour.illuminant", "D99"),
+     r"colour\.illuminant: 'D99' is not an illuminant colour-science knows"),
     ("light-illuminant", set_(f"{CT}.fig6.lights[1].spectrum", "D66"), r"fig6\.lights\[1\]\.spectrum: 'D66' is not an illuminant"),
     ("watch-illuminant", set_(f"{CT}.fig8.light.spectrum", "sunlight"), r"fig8\.light\.spectrum: 'sunlight'"),
     ("spheres-illuminant", set_(f"{ART}.spheres.light.spectrum", "X"), r"spheres\.light\.spectrum: 'X'"),
@@ -291,13 +294,35 @@ def test_memory_is_refused_against_the_machine_given(config):
         check_config(bad, check_spectra=False, memory=8 * GiB)
 
 
-# --- through a real `snakemake -n` -----------------------------------------------------------------
+# --- through the workflow itself ------------------------------------------------------------------
 
-SNAKEMAKE_CASES = [
-    ("typo-top", r"unknown key 'wavelenghts' \(did you mean 'wavelengths'\?\)"),
-    ("nan-angle", r"figures\.cook_torrance_1982\.fig5\.angles_deg\[1\]: nan"),
-    ("table1-s-plus-d", r"table1\.rows\[0\]\.s, .*s \+ d = 1"),
-    ("munsell-value", r"materials\.Rubber\.notation: 'N99'"),
+def in_text(old, new):
+    """An edit of config.yaml's text (what a parsed config cannot hold: a syntax error)."""
+    def edit(text):
+        assert old in text
+        return text.replace(old, new, 1)
+    edit.on_text = True
+    return edit
+
+
+# A real `snakemake --cores 1 <target>` in a copy of the project, once per place where the workflow
+# checks config.yaml, so each is shown to stop the run before any job: the Snakefile's own reading
+# of the file (YAML syntax), then workflow/rules/common.smk's validate_schema (unknown keys, NaN and
+# infinity, the schema) and check_config (colour-science's names, Munsell notations, and what only
+# the main process checks: the grid against every spectrum file). The corpus above holds every
+# other case of each kind, in-process. (id, edit of the config or of its text, what the message
+# says: a line of its own, starting with config.yaml)
+WORKFLOW_CASES = [
+    ("yaml-syntax", in_text("step_nm: 5", "step_nm: [5"),
+     r"config\.yaml, line \d+, column \d+: not valid YAML"),
+    ("typo-top", "typo-top", r"unknown key 'wavelenghts' \(did you mean 'wavelengths'\?\)"),
+    ("nan-angle", "nan-angle", r"figures\.cook_torrance_1982\.fig5\.angles_deg\[1\]: nan"),
+    ("unknown-space", "unknown-space", r"colour\.space: 'AdobeRGB' is not one of"),
+    ("unknown-illuminant", "unknown-illuminant",
+     r"colour\.illuminant: 'D99' is not an illuminant colour-science knows"),
+    ("munsell-value", "munsell-value", r"materials\.Rubber\.notation: 'N99'"),
+    ("grid-beyond-spectra", set_("wavelengths.start_nm", 300),
+     r"wavelengths: the grid 300-830 nm leaves the data of materials\.Cu \(360-830 nm\)"),
 ]
 
 
@@ -314,36 +339,30 @@ def project(tmp_path_factory):
     return dest
 
 
-def dry_run(cwd):
-    return subprocess.run([sys.executable, "-m", "snakemake", "-n", "--cores", "1"], cwd=cwd,
-                          capture_output=True, text=True, timeout=300)
-
-
-def write_config(cwd, config):
-    (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-
-
-@pytest.mark.parametrize("case_id, expected", SNAKEMAKE_CASES, ids=[c[0] for c in SNAKEMAKE_CASES])
-def test_dry_run_refuses_naming_the_key(project, config, case_id, expected):
-    edit = {c[0]: c[1] for c in CORPUS}[case_id]
-    bad = copy.deepcopy(config)
-    edit(bad)
-    write_config(project, bad)
+@pytest.mark.parametrize("case_id, edit, expected", WORKFLOW_CASES,
+                         ids=[c[0] for c in WORKFLOW_CASES])
+def test_the_workflow_refuses_before_any_job_naming_the_key(project, config, case_id, edit,
+                                                           expected):
+    """README: bad config stops before any job, with a one-line error naming what is wrong."""
+    text = (ROOT / "config.yaml").read_text()
+    if isinstance(edit, str):
+        edit = {c[0]: c[1] for c in CORPUS}[edit]
+    if getattr(edit, "on_text", False):
+        text = edit(text)
+    else:
+        bad = copy.deepcopy(config)
+        edit(bad)
+        text = yaml.safe_dump(bad, sort_keys=False)
+    (project / "config.yaml").write_text(text)
     before = snapshot(project)
-    proc = dry_run(project)
+    # a real run (not -n) of a figure that needs a spectrum: nothing may start
+    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1",
+                           "results/cook_torrance_1982/fig4.csv"], cwd=project,
+                          capture_output=True, text=True, timeout=300)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0, out
-    assert re.search(expected, out), out
+    lines = [line for line in out.splitlines() if re.search(expected, line)]
+    assert lines and all(line.startswith("config.yaml") for line in lines), out
     assert "Traceback" not in out and "Job stats" not in out, out
-    assert snapshot(project) == before
-
-
-def test_dry_run_names_the_line_of_a_syntax_error(project):
-    text = (ROOT / "config.yaml").read_text()
-    (project / "config.yaml").write_text(text.replace("step_nm: 5", "step_nm: [5", 1))
-    before = snapshot(project)
-    proc = dry_run(project)
-    out = proc.stdout + proc.stderr
-    assert proc.returncode != 0
-    assert re.search(r"config\.yaml, line \d+, column \d+: not valid YAML", out), out
+    assert not re.search(r"^(local)?rule \w+:", out, flags=re.M), out
     assert snapshot(project) == before

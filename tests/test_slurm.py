@@ -185,15 +185,18 @@ def _session_alive(sid):
     return False
 
 
-def _workdir(root, path, removed=()):
+def _workdir(root, built, path, removed=()):
+    """A copy of the project whose spectra are those of the session's build (`built`), so that
+    its outputs are made from the same inputs as that build's; ``removed`` are left out."""
     path.mkdir()
     for name in ("Snakefile", "config.yaml"):
         shutil.copy(root / name, path / name)
     # Fresh modification times, the spectra newest: Snakemake would otherwise rebuild every
-    # spectrum whose script is newer than the committed CSV (as on a fresh checkout).
-    for name in ("workflow", "spectra"):
-        shutil.copytree(root / name, path / name, ignore=shutil.ignore_patterns("__pycache__"),
-                        copy_function=shutil.copy)
+    # spectrum whose script is newer than its CSV (as on a fresh checkout).
+    shutil.copytree(root / "workflow", path / "workflow",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"),
+                    copy_function=shutil.copy)
+    shutil.copytree(built / "spectra", path / "spectra", copy_function=shutil.copy)
     for name in removed:
         (path / name).unlink()
     return path
@@ -236,35 +239,30 @@ def _submitted(out):
             re.findall(r"^Job (\d+) has been submitted with SLURM jobid (\d+)", out, flags=re.M)]
 
 
-def _outputs(cwd):
-    files = [cwd / name for name in REMOVED_SPECTRA] + sorted((cwd / "results").rglob("*"))
-    return {str(f.relative_to(cwd)): f.read_bytes() for f in files if f.is_file()}
+def _outputs(cwd, names=None):
+    """{path: bytes} of the two spectra and of every file under results/ (or of ``names``)."""
+    if names is None:
+        names = REMOVED_SPECTRA + [str(f.relative_to(cwd)) for f in (cwd / "results").rglob("*")]
+    return {name: (cwd / name).read_bytes() for name in sorted(names) if (cwd / name).is_file()}
 
 
 @pytest.fixture(scope="module")
-def runs(slurm, root, tmp_path_factory):
-    """The subset built three ways, the local reference beside the SLURM runs (it waits on nothing):
+def runs(built, slurm, root, tmp_path_factory):
+    """The subset built twice on SLURM, in a copy whose other spectra are the session build's:
 
-    - ``local``: ``snakemake --cores 2``;
     - ``first``: the SLURM profile with the audit's request cut to SMALL_MB and ``--keep-going``
       (everything else completes, SLURM kills the audit);
     - ``second``: the SLURM profile as it is: only the audit runs again, with its own request.
+
+    The local result to compare with is the session's whole build (``built``, ``--cores 2``),
+    which made these files, the two spectra included, from the same inputs.
     """
-    tmp = tmp_path_factory.mktemp("runs")
-    local = _workdir(root, tmp / "local", REMOVED_SPECTRA)
-    cluster = _workdir(root, tmp / "cluster", REMOVED_SPECTRA)
-    local_run = _snakemake(local, "--cores", "2", *TARGETS)
-    try:
-        # (targets first: --set-resources takes every word after it)
-        first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, "--keep-going",
-                                   "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
-        second = _finish(_snakemake(cluster, "--profile", PROFILE, *TARGETS))
-        _finish(local_run)
-    finally:
-        if local_run.poll() is None:  # a cluster run failed: leave nothing running
-            local_run.kill()
-            local_run.wait()
-    return {"local": local, "cluster": cluster, "first": first, "second": second,
+    cluster = _workdir(root, built, tmp_path_factory.mktemp("runs") / "cluster", REMOVED_SPECTRA)
+    # (targets first: --set-resources takes every word after it)
+    first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, "--keep-going",
+                               "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
+    second = _finish(_snakemake(cluster, "--profile", PROFILE, *TARGETS))
+    return {"local": built, "cluster": cluster, "first": first, "second": second,
             "jobcomp": _jobcomp(slurm)}
 
 
@@ -286,10 +284,11 @@ def test_every_job_is_a_slurm_job_with_the_resources_its_rule_declares(runs):
 
 
 def test_the_outputs_are_byte_identical_to_a_local_run(runs):
-    local_files, cluster_files = _outputs(runs["local"]), _outputs(runs["cluster"])
-    assert set(local_files) == set(cluster_files)
+    cluster_files = _outputs(runs["cluster"])
     # two spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
-    assert len(local_files) >= 2 + 3 + 5 + 4, sorted(local_files)
+    assert len(cluster_files) >= 2 + 3 + 5 + 4, sorted(cluster_files)
+    local_files = _outputs(runs["local"], cluster_files)
+    assert set(local_files) == set(cluster_files)
     assert [f for f in local_files if local_files[f] != cluster_files[f]] == []
 
 

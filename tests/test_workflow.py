@@ -223,28 +223,6 @@ def test_fresh_spectra_export_is_identical(root, built):
     assert digests(built, committed) == digests(root, committed)
 
 
-@pytest.mark.parametrize("key, value, expected", [
-    (("colour", "space"), "AdobeRGB", "colour.space"),
-    (("colour", "illuminant"), "D99", "colour.illuminant"),
-    (("wavelengths", "step_nm"), -5, "wavelengths.step_nm"),
-    (("figures", "cook_torrance_1982", "fig4", "material"), "Kryptonite",
-     "figures.cook_torrance_1982.fig4.material"),
-    (("wavelengths", "start_nm"), 300, "wavelengths"),
-])
-def test_bad_config_stops_before_any_job(root, tmp_path, key, value, expected):
-    cwd = copy_project(root, tmp_path)
-    config = yaml.safe_load((cwd / "config.yaml").read_text())
-    node = config
-    for k in key[:-1]:
-        node = node[k]
-    node[key[-1]] = value
-    (cwd / "config.yaml").write_text(yaml.safe_dump(config))
-    proc = snakemake(cwd, "--cores", "2", *FOUNDATION, check=False)
-    assert proc.returncode != 0
-    assert expected in proc.stdout + proc.stderr
-    assert not (cwd / "results").exists()
-
-
 def test_lint_reports_only_missing_environments(root):
     """`snakemake --lint`: the only lint is the absence of per-rule conda/container envs
     (README.md says how the Python environment is made instead)."""

@@ -7,12 +7,10 @@ committed spectrum.
 
 import hashlib
 import os
-import re
+import shutil
 import signal
 import subprocess
-import sys
 import time
-from collections import Counter
 
 import pytest
 import yaml
@@ -21,9 +19,13 @@ from test_workflow import SNAKEMAKE, copy_project, digests, results, snakemake
 
 pytestmark = pytest.mark.workflow
 
-#: the rules that render (reflectance.render.pipeline); the run is killed during one of them
-RENDER_RULES = ("ct82_fig6", "ct82_fig7", "ct82_fig8", "blinn77_fig7", "blinn77_fig7_sweep",
-                "blinn77_fig8", "article_spheres")
+#: The render the run is killed in: Cook & Torrance's Fig. 6 as published, which writes panel a
+#: (scene, EXR, PNG), then panel b, then the figure and its table, each file in one rename; the
+#: gamut-mapping audit, README's strip and the provenance manifest read its files.
+KILLED_RULE = "ct82_fig6_published"
+KILLED_OUTPUTS = [f"results/cook_torrance_1982/{name}" for name in
+                  ["fig6.png", "fig6.csv"] + [f"fig6{panel}.{ext}" for panel in "ab"
+                                              for ext in ("exr", "png", "scene.yaml")]]
 
 
 def whole(path):
@@ -58,40 +60,54 @@ def whole(path):
 
 
 def final_files(cwd):
-    return {p for p in (cwd / "results").rglob("*") if p.is_file() and not p.name.startswith(".")}
+    """{path: its inode and modification time} of every file at an output's path under results/
+    (a writer replaces a file in one rename: a new inode is a new file)."""
+    return {p: (p.stat().st_ino, p.stat().st_mtime_ns) for p in (cwd / "results").rglob("*")
+            if p.is_file() and not p.name.startswith(".")}
 
 
 def temporaries(cwd):
     return sorted(str(p) for p in (cwd / "results").rglob(".*") if p.is_file())
 
 
-def test_kill_9_mid_render_then_a_plain_rerun_completes(root, tmp_path, built):
+def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
     """README: a run killed outright resumes with a plain `snakemake --cores 2`, and what it
-    builds is byte-identical to an uninterrupted build (the session's `built`, in another
-    folder): every CSV, EXR, PNG, PDF and scene file of the archive."""
-    cwd = copy_project(root, tmp_path)
+    builds is byte-identical to an uninterrupted build.
+
+    The session's whole build (`built`) is copied with Snakemake's records, and one render's
+    outputs are removed, as if that render had never run: the run in the copy starts it (and,
+    after it, the jobs that read its files) and is killed with SIGKILL, Snakemake and its jobs,
+    once the render has begun writing. The plain rerun must render again and end with every file
+    of results/ byte-identical to the uninterrupted build's: the CSVs, EXRs, PNGs, PDFs and scene
+    files the render and the jobs after it write anew, and everything else untouched."""
+    cwd = tmp_path / "copy"
+    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    for name in KILLED_OUTPUTS:
+        (cwd / name).unlink()
+    copied = final_files(cwd)  # the build's own files (test_workflow reads them)
     log = open(tmp_path / "first_run.txt", "w")
     run = subprocess.Popen(SNAKEMAKE + ["--cores", "2"], cwd=cwd, stdout=log,
                            stderr=subprocess.STDOUT, start_new_session=True)
-    checked, killed_in, seen_running, before = set(), None, None, set()
+    checked = dict(copied)
+    killed, started, before = False, None, set()
     try:
-        deadline = time.monotonic() + 3600
+        deadline = time.monotonic() + 1800
         while time.monotonic() < deadline and run.poll() is None:
             # Every file that appears at an output's path is whole the moment it is seen.
-            for path in final_files(cwd) - checked:
-                whole(path)
-                checked.add(path)
+            for path, key in final_files(cwd).items():
+                if checked.get(path) != key:
+                    whole(path)
+                    checked[path] = key
             text = (tmp_path / "first_run.txt").read_text()
-            running = (Counter(re.findall(r"rule (\w+):", text))
-                       - Counter(re.findall(r"Finished jobid: \d+ \(Rule: (\w+)\)", text)))
-            rendering = [r for r in RENDER_RULES if running[r]]
+            rendering = (f"rule {KILLED_RULE}:" in text
+                         and f"(Rule: {KILLED_RULE})" not in text)
             written = set((cwd / "results").rglob("*"))
-            if rendering and seen_running is None:
-                seen_running, before = time.monotonic(), written
-            # Mid-render: a render job has begun writing (a scene file or a temporary of its
-            # first image), so some of its outputs exist and others are still to come.
-            if rendering and (written - before or time.monotonic() - seen_running > 120):
-                killed_in = rendering
+            if rendering and started is None:
+                started, before = time.monotonic(), written
+            # Mid-render: the job has begun writing (a scene file or a temporary of its first
+            # image), so some of its outputs exist and others are still to come.
+            if rendering and (written - before or time.monotonic() - started > 120):
+                killed = True
                 break
             time.sleep(0.2)
     finally:
@@ -99,17 +115,22 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(root, tmp_path, built):
             os.killpg(run.pid, signal.SIGKILL)  # the whole group: snakemake and its jobs
         run.wait()
         log.close()
-    assert killed_in, "the run ended before a render job could be killed:\n" + (
-        tmp_path / "first_run.txt").read_text()[-3000:]
+    first_run = (tmp_path / "first_run.txt").read_text()
+    assert killed, "the run ended before the render could be killed:\n" + first_run[-3000:]
     assert (cwd / ".snakemake" / "locks").is_dir()  # what a killed run leaves behind
-    for path in final_files(cwd):
-        whole(path)
+    missing = [name for name in KILLED_OUTPUTS if not (cwd / name).exists()]
+    assert missing, "the render had finished when it was killed"
+    for path, key in final_files(cwd).items():  # what the killed run wrote
+        if checked.get(path) != key:
+            whole(path)
 
     spectra_before = {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")}
     proc = snakemake(cwd, "--cores", "2")  # plain: no --rerun-incomplete, no --unlock
     assert "reflectance: resuming" in proc.stderr
-    for path in final_files(cwd):
-        whole(path)
+    assert f"rule {KILLED_RULE}:" in proc.stdout + proc.stderr  # rendered again
+    for path, key in final_files(cwd).items():  # what the rerun wrote (the rest: compared below)
+        if copied.get(path) != key:
+            whole(path)
     assert temporaries(cwd) == []  # the killed writers' temporaries were removed
     assert {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")} == spectra_before
     dry = snakemake(cwd, "-n", "--cores", "2")
@@ -118,6 +139,9 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(root, tmp_path, built):
     assert results(cwd) == files
     resumed, clean = digests(cwd, files), digests(built, files)
     assert [p for p in files if resumed[p] != clean[p]] == []
+    # the render's files are new ones, not the copies of the build's
+    assert all(os.path.getmtime(cwd / name) > os.path.getmtime(built / name)
+               for name in KILLED_OUTPUTS)
 
 
 @pytest.mark.parametrize("case", ["bad notation", "failing script"])
