@@ -54,8 +54,8 @@ with script_log(snakemake) as log:
     title_in, margin_in = 0.62, 0.04
     width_in = PRINT_WIDTH_IN
     image_h_in = width_in * h_px / w_px
-    fig = new_figure(width_in, image_h_in + title_in + margin_in)
     height_in = image_h_in + title_in + margin_in
+    fig = new_figure(width_in, height_in)
     ax = fig.add_axes((0.0, margin_in / height_in, 1.0, image_h_in / height_in))
     ax.imshow(image, interpolation="nearest")
     ax.set_axis_off()

@@ -99,8 +99,8 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     import numpy as np
 
     from reflectance.colour.colorimetry import tristimulus_weights
-    from reflectance.render.pipeline import (image_difference_CIEDE2000,
-                                             pixel_difference_CIEDE2000, render, shade_samples,
+    from reflectance.render.pipeline import (difference_statistics_CIEDE2000,
+                                             image_difference_CIEDE2000, render, shade_samples,
                                              tiles, trace)
     from reflectance.render.shading import fresnel_XYZ_table
 
@@ -140,12 +140,10 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         reference = render(load_bench_scene(document, spectra_dir=spectra_dir, width=size,
                                             height=size, supersample=reference_supersample,
                                             spectral="table", adaptive=False)).XYZ
-        dE = pixel_difference_CIEDE2000(result.XYZ, reference, scene.display.illuminant,
-                                        scene.observer, scene.wavelengths)
+        mean, p95 = difference_statistics_CIEDE2000(result.XYZ, reference, scene)
         out.update(reference_supersample=reference_supersample,
                    reference_s=time.perf_counter() - t1,
-                   dE_reference_mean=float(dE.mean()) if len(dE) else 0.0,
-                   dE_reference_p95=float(np.percentile(dE, 95)) if len(dE) else 0.0)
+                   dE_reference_mean=mean, dE_reference_p95=p95)
     del result
     if len(tiles(scene.camera)) > 1:  # the sample-level comparisons need the whole image
         brute_force_runs, grids_nm = 0, ()
@@ -218,13 +216,15 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     (True, False; None: the scene's) switches the adaptive supersampling. With Mitsuba
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
-    pixel; default :data:`reflectance.render.crosscheck.REFERENCE_SPP`)."""
+    pixel; default :data:`reflectance.render.crosscheck.REFERENCE_SPP`; ours at
+    ``reference_supersample``, or :data:`REFERENCE_SUPERSAMPLE` where that is 0)."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
     for i, size in enumerate(sizes):
         where = f"size {size} ({i + 1}/{len(sizes)})"
         if progress is not None:
             progress.update(i, where)
+        tell = None if progress is None else (lambda phase: progress.update(i, f"{where}: {phase}"))
         job = {"scene": scene if isinstance(scene, dict) else str(scene),
                "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
@@ -234,8 +234,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
         try:
             results.append(run_worker(
                 "reflectance.render.bench", job, failure=f"benchmark of size {size} failed",
-                progress=None if progress is None
-                else (lambda phase: progress.update(i, f"{where}: {phase}"))))
+                progress=tell))
         except RuntimeError:
             if progress is not None:
                 progress.close(f"size {size} failed", done=i)
@@ -246,10 +245,9 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
 
             if mitsuba_available():
                 results[-1]["crosscheck"] = run_crosscheck(
-                    scene, size, supersample, max(1, min(runs, 3)), reference_supersample or 8,
-                    crosscheck_spp or REFERENCE_SPP, spectra_dir=spectra_dir,
-                    progress=None if progress is None
-                    else (lambda phase: progress.update(i, f"{where}: {phase}")))
+                    scene, size, supersample, max(1, min(runs, 3)),
+                    reference_supersample or REFERENCE_SUPERSAMPLE,
+                    crosscheck_spp or REFERENCE_SPP, spectra_dir=spectra_dir, progress=tell)
     if progress is not None:
         progress.close()
     return results

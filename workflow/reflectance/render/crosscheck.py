@@ -26,8 +26,9 @@ dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it in
   with s + d = 1). Mitsuba's D is Beckmann's with 1/pi (our ``physical`` D, Walter et al. 2007
   eq. 25), its BRDF ``F D G / (4 (N.L)(N.V))``, F the unpolarised exact conductor Fresnel at
   V.H. One difference remains: Mitsuba's Smith G1 of a Beckmann surface is Walter et al.'s
-  rational approximation, ours the exact erf form (they differ by less than 0.35 %, Walter et
-  al. 2007, near grazing only);
+  rational approximation, ours the exact erf form (both are
+  :func:`reflectance.optics.shadowing.G1_Smith_Beckmann_Walter2007`, ``form="rational"`` and
+  ``"exact"``; they differ by less than 0.35 %, near grazing only);
 - film: ``hdrfilm`` with ``pixel_format: xyz`` in a ``*_spectral`` variant: Mitsuba integrates
   the spectrum against its CIE 1931 2-degree colour matching functions (360-830 nm) normalised
   so that a constant spectrum of 1 has Y = 1, as ours;
@@ -300,19 +301,6 @@ GOAL_DE = (0.3, 1.0)
 RETIME_S = 5.0
 
 
-def _errors(XYZ, reference, scene):
-    """CIEDE2000 mean and 95th percentile over the lit pixels, on the reference's exposure
-    (:func:`reflectance.render.pipeline.pixel_difference_CIEDE2000`: both images scaled alike,
-    CIELAB relative to the display illuminant's white)."""
-    from reflectance.render.pipeline import pixel_difference_CIEDE2000
-
-    dE = pixel_difference_CIEDE2000(XYZ, reference, scene.display.illuminant, scene.observer,
-                                    scene.wavelengths)
-    if not len(dE):
-        return 0.0, 0.0
-    return float(dE.mean()), float(np.percentile(dE, 95))
-
-
 def equal_error_seconds(error, ladder, extrapolate=False):
     """Mitsuba's seconds at ``error`` from the ladder's rungs ``[(spp, seconds, error), ...]``.
 
@@ -358,6 +346,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     import statistics
 
     from reflectance.render.bench import load_bench_scene
+    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
     from reflectance.render.pipeline import render
 
     progress = progress or (lambda phase: None)
@@ -389,17 +378,17 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
         if seconds < RETIME_S:  # again with the kernel compiled: the faster of the two
             seconds = min(seconds, render_mitsuba(scene, spp, seed=2)[1])
         rungs.append({"spp": int(spp), "seconds": seconds,
-                      "vs_mitsuba": list(_errors(XYZ, mitsuba_reference, scene)),
-                      "vs_ours": list(_errors(XYZ, our_reference, scene))})
+                      "vs_mitsuba": list(errors(XYZ, mitsuba_reference, scene)),
+                      "vs_ours": list(errors(XYZ, our_reference, scene))})
     ours_s = statistics.median(times)
     out = {
         "size": size, "variant": variant, "supersample": supersample,
         "material": scene.document["objects"][0]["material"],
         "reference_spp": reference_spp, "reference_supersample": reference_supersample,
         "mitsuba_reference_s": reference_s, "ours_s": ours_s,
-        "ours_vs_mitsuba": list(_errors(ours, mitsuba_reference, scene)),
-        "ours_vs_ours": list(_errors(ours, our_reference, scene)),
-        "our_reference_vs_mitsuba": list(_errors(our_reference, mitsuba_reference, scene)),
+        "ours_vs_mitsuba": list(errors(ours, mitsuba_reference, scene)),
+        "ours_vs_ours": list(errors(ours, our_reference, scene)),
+        "our_reference_vs_mitsuba": list(errors(our_reference, mitsuba_reference, scene)),
         "ladder": rungs,
     }
     for against, extrapolate in (("mitsuba", False), ("ours", True)):

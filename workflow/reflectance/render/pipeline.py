@@ -51,6 +51,8 @@ __all__ = [
     "RenderResult",
     "trace",
     "trace_key",
+    "trace_once",
+    "difference_statistics_CIEDE2000",
     "tiles",
     "SINGLE_TILE_SAMPLES",
     "TILE_SAMPLES",
@@ -219,6 +221,23 @@ def trace_key(scene, rows=None):
     return digest.hexdigest()
 
 
+def trace_once(scene, traced, rows=None, tools=None, progress=None):
+    """:func:`trace` of ``scene`` (the band ``rows``), or the one ``traced`` keeps under its
+    :func:`trace_key`: ``traced`` is a dict kept across scenes that differ only in materials (a
+    new trace is stored in it), or None to keep nothing. ``tools``, if given, is called only when
+    a trace is needed and returns ``(primitives, renderer)`` for :func:`trace`. Returns
+    ``(samples, shadowed, timings)``, zero timings for a kept trace."""
+    key = trace_key(scene, rows) if traced is not None else None
+    if key is not None and key in traced:
+        samples, shadowed = traced[key]
+        return samples, shadowed, {"visibility": 0.0, "shadows": 0.0}
+    primitives, renderer = tools() if tools is not None else (None, None)
+    samples, shadowed, timings = trace(scene, rows, primitives, progress, renderer=renderer)
+    if key is not None:
+        traced[key] = (samples, shadowed)
+    return samples, shadowed, timings
+
+
 def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
            traced=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
@@ -274,17 +293,9 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
 
         for start, stop in bands:
             where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
-            key = trace_key(scene, (start, stop)) if keep else None
-            if key is not None and key in traced:
-                samples, shadowed = traced[key]
-                t = {"visibility": 0.0, "shadows": 0.0}
-            else:
-                primitives, renderer = tools()
-                samples, shadowed, t = trace(scene, (start, stop), primitives,
-                                             progress and (lambda phase: progress(where + phase)),
-                                             renderer=renderer)
-                if key is not None:
-                    traced[key] = (samples, shadowed)
+            samples, shadowed, t = trace_once(
+                scene, traced if keep else None, (start, stop), tools,
+                progress and (lambda phase: progress(where + phase)))
             t1 = time.perf_counter()
             (progress or _silent)(where + "shading")
             shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
@@ -600,6 +611,16 @@ def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=No
     dE = delta_E_CIE2000(lab[0], lab[1])
     lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
     return dE[lit]
+
+
+def difference_statistics_CIEDE2000(XYZ, XYZ_reference, scene):
+    """(mean, 95th percentile) of :func:`pixel_difference_CIEDE2000` of two renders of ``scene``
+    (its display illuminant, observer and wavelengths); (0, 0) when no pixel is lit."""
+    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, scene.display.illuminant, scene.observer,
+                                    scene.wavelengths)
+    if not len(dE):
+        return 0.0, 0.0
+    return float(dE.mean()), float(np.percentile(dE, 95))
 
 
 def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,

@@ -37,16 +37,10 @@ def render_spectral_and_rgb(scene, space="sRGB", traced=None):
         A cache of traces kept across scenes that differ only in materials, as in
         :func:`reflectance.render.pipeline.render`.
     """
-    from reflectance.render.pipeline import shade_samples, trace, trace_key
+    from reflectance.render.pipeline import shade_samples, trace_once
     from reflectance.render.shading import fresnel_XYZ_table_rgb
 
-    key = trace_key(scene) if traced is not None else None
-    if key is not None and key in traced:
-        samples, shadowed = traced[key]
-    else:
-        samples, shadowed, _ = trace(scene)
-        if key is not None:
-            traced[key] = (samples, shadowed)
+    samples, shadowed, _ = trace_once(scene, traced)
     images = []
     for table in (None, functools.partial(fresnel_XYZ_table_rgb, space=space)):
         images.append(samples.to_pixels(

@@ -19,7 +19,7 @@ import numpy as np
 
 from reflectance.render.camera import View
 from reflectance.render.primitives import Primitives
-from reflectance.render.idbuffer import distinct_keys, neighbour_keys, renderer_for
+from reflectance.render.idbuffer import distinct_keys, key_image, neighbour_keys, renderer_for
 from reflectance.render.lights import DirectionalLight, as_light, light_vectors
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.samples import SurfaceSamples
@@ -212,8 +212,6 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
     lifted = _terminator_offset(scene, samples, surface,
                                 np.ascontiguousarray(position.T)) + eps * normal.T
     own = scene.key[samples.triangle[surface]]
-    # an ID image's value (0 background, k triangle k - 1) -> primitive key (-1 background)
-    id_to_key = np.concatenate([np.int32([-1]), scene.key])
     with renderer_for(scene, renderer) as maps:
         for i, light in enumerate(lights):
             L, distance = light_vectors(light, position)
@@ -235,7 +233,7 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
                 col = np.clip(np.floor(x), 0, view.width - 1).astype(np.int64)
                 row = np.clip(np.floor(y), 0, view.height - 1).astype(np.int64)
                 # the keys of the 3 x 3 ids around each projection (off the map: id 0, -1)
-                near = np.take(id_to_key, neighbour_keys(ids, row, col, fill=0))
+                near = key_image(scene, neighbour_keys(ids, row, col, fill=0))
                 del ids
                 candidates = distinct_keys(near, own[members])
                 local, j = np.nonzero(candidates >= 0)
