@@ -39,7 +39,14 @@ def counted(monkeypatch, tmp_path):
     return state
 
 
+@pytest.fixture(autouse=True)
+def fresh_process(monkeypatch):
+    """Each test starts as a new process would: no checks run yet (only those are recorded)."""
+    monkeypatch.setattr(C, "_checked", False)
+
+
 def run(config, state, **kwargs):
+    C._checked = False  # each call stands for one `snakemake` process
     C.check_once(config, state["data"].parent / "record.json", **kwargs)
     return state["calls"]
 
@@ -141,6 +148,16 @@ def test_the_real_checks_name_a_bad_key_with_a_record_of_the_good_config(
             C.check_once(bad, record, check_spectra=False, check_scenes=False)
         assert str(got.value) == str(expected.value)
         assert "colour.spaec" in str(got.value) and "\n" not in str(got.value)
+
+
+def test_only_a_process_s_first_checks_are_recorded(counted):
+    """A second check in one process reads from memory what the first loaded, so its record
+    would miss files: it is not written (the first record stays)."""
+    record = counted["data"].parent / "record.json"
+    C.check_once({"a": 1}, record)
+    kept = record.read_text()
+    C.check_once({"a": 2}, record)  # checked (another config), not recorded
+    assert counted["calls"] == 2 and record.read_text() == kept
 
 
 def test_checks_without_scenes_import_no_colour_science_nor_vtk(root, tmp_path):

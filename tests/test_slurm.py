@@ -283,10 +283,20 @@ def test_every_job_is_a_slurm_job_with_the_resources_its_rule_declares(runs):
         assert record["Partition"] == "debug", record  # slurm.conf's default partition
 
 
+def _declared_outputs(out):
+    """Every output of the jobs Snakemake printed in a run's log (update() flags dropped)."""
+    return {name.removesuffix(" (update)") for line in re.findall(r"^    output: (.*)$", out,
+                                                                  flags=re.M)
+            for name in line.split(", ")}
+
+
 def test_the_outputs_are_byte_identical_to_a_local_run(runs):
     cluster_files = _outputs(runs["cluster"])
     # two spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
     assert len(cluster_files) >= 2 + 3 + 5 + 4, sorted(cluster_files)
+    # exactly the files the jobs declare, each one made (the count alone would miss one)
+    expected = _declared_outputs(runs["first"]) | _declared_outputs(runs["second"])
+    assert set(cluster_files) == expected
     local_files = _outputs(runs["local"], cluster_files)
     assert set(local_files) == set(cluster_files)
     assert [f for f in local_files if local_files[f] != cluster_files[f]] == []

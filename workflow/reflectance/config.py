@@ -889,6 +889,7 @@ _ENVIRONMENT_PREFIXES = ("REFLECTANCE_", "COLOUR_SCIENCE__", "PYVISTA_", "VTK_")
 
 _reads = None  # while checking: the files and folders the checks read (see _record)
 _hooked = False  # _record is installed (an audit hook stays for the life of the process)
+_checked = False  # the checks have run in this process (a later run's reads are incomplete)
 
 
 def _record(event, args):
@@ -967,13 +968,13 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
     of the spectra folder and every module they imported. A later call with the same hash whose
     files and folders are all unchanged returns at once; anything else checks again, so a
     problem is reported exactly as by the checks themselves (failures are never recorded).
-    Delete ``record`` to force the checks. Meant for one call per process (the workflow's
-    parse): a file an earlier check in the same process already holds in memory is not read,
-    and so not recorded, again.
+    Delete ``record`` to force the checks. Only the first checks of a process are recorded
+    (the workflow's parse checks once): a later run reads from memory what the first loaded
+    (modules, spectra, tables), so its record would miss those files.
     """
     import sys
 
-    global _reads, _hooked
+    global _reads, _hooked, _checked
 
     memory = physical_memory_bytes() if memory is None else memory
     arguments = {"check_spectra": bool(check_spectra), "check_scenes": bool(check_scenes),
@@ -993,6 +994,7 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
         _hooked = True
     modules = set(sys.modules)
     spectra = str(Path(spectra_dir).resolve())
+    first, _checked = not _checked, True
     _reads = {"files": set(), "folders": {spectra}}
     try:
         validate_schema(config)
@@ -1000,6 +1002,8 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
                      spectra_dir=spectra_dir, memory=memory)
     finally:
         reads, _reads = _reads, None
+    if not first:
+        return
     for name in set(sys.modules) - modules:
         origin = getattr(sys.modules.get(name), "__file__", None)
         if isinstance(origin, str):
