@@ -141,7 +141,7 @@ class View:
         if self.perspective:
             ahead = depth[depth > 0]
             near = max(float(ahead.min()) - 1e-3 * span if len(ahead) else 0.0, 1e-4 * far)
-            if triangles is not None:
+            if triangles is not None and depth.min() <= 0:  # else no triangle reaches behind
                 near = min(near, self._near_behind(points, np.asarray(triangles), depth, far))
         else:
             near = float(depth.min()) - 1e-3 * span

@@ -151,8 +151,9 @@ def id_buffer(meshes, camera):
 
 
 def key_image(scene, ids):
-    """Primitive keys of an ID image (-1 for the background)."""
-    return np.where(ids > 0, np.take(scene.key, np.maximum(ids - 1, 0)), np.int32(-1))
+    """Primitive keys of an ID image (-1 for the background): one gather from the keys of ids
+    0 (background) .. n."""
+    return np.take(scene.key_of_id, ids)
 
 
 def dilate(mask):

@@ -37,14 +37,21 @@ class Primitives:
         self._source = (meshes, meshes.GetMTime()) if isinstance(meshes, pv.DataSet) else None
         self.points = np.asarray(mesh.points, np.float64)
         self.P = np.ascontiguousarray(self.points.T)
-        self.N = np.ascontiguousarray(np.asarray(mesh.point_data["Normals"], np.float64).T)
-        self.UV = np.ascontiguousarray(np.asarray(mesh.point_data["uv"], np.float64).T)
+        # vertex normals and (u, v) both ways: components first for the ray code, vertex rows
+        # for the per-sample interpolation (:mod:`reflectance.render.visibility`)
+        self.normal_rows = np.ascontiguousarray(mesh.point_data["Normals"], np.float64)
+        self.uv_rows = np.ascontiguousarray(mesh.point_data["uv"], np.float64)
+        self.N = np.ascontiguousarray(self.normal_rows.T)
+        self.UV = np.ascontiguousarray(self.uv_rows.T)
         self.tris = np.asarray(mesh.faces, np.int64).reshape(-1, 4)[:, 1:]
         self.T = np.ascontiguousarray(self.tris.T)
-        P0, P1, P2 = (self.points[self.tris[:, j]] for j in range(3))
-        # (9, n): first corner and the two edges from it, gathered with one np.take per test
-        self.table = np.ascontiguousarray(np.concatenate([P0, P1 - P0, P2 - P0], axis=1).T)
+        # (9, n): first corner and the two edges from it, gathered with one np.take per test;
+        # built in place, components first (no transposed copy of an (n, 9) array)
         self.n = len(self.tris)
+        self.table = np.empty((9, self.n))
+        P0 = np.take(self.P, self.T[0], axis=1, out=self.table[0:3])
+        np.subtract(np.take(self.P, self.T[1], axis=1), P0, out=self.table[3:6])
+        np.subtract(np.take(self.P, self.T[2], axis=1), P0, out=self.table[6:9])
         if self.n == 0:
             raise ValueError("the scene has no triangles")
         self.object_id = np.asarray(mesh.cell_data["object_id"], np.int64)
@@ -54,10 +61,12 @@ class Primitives:
         # int32 (n <= 2**24 - 1): halves the memory traffic of the key images
         self.key = np.where(sphere_index >= 0, self.n + sphere_index,
                             np.arange(self.n)).astype(np.int32)
+        # the key of each ID-buffer value: id 0 is the background (-1), id k the triangle k - 1
+        self.key_of_id = np.concatenate([np.array([-1], np.int32), self.key])
         order = np.argsort(self.key, kind="stable")
         self.first_triangle = order[np.searchsorted(self.key[order],
                                                     self.n + np.arange(len(self.radii)))]
-        self.face_normal = normalize(np.cross(P1 - P0, P2 - P0))
+        self.face_normal = normalize(np.cross(self.table[3:6].T, self.table[6:9].T))
         lo, hi = self.points.min(axis=0), self.points.max(axis=0)
         self.center = 0.5 * (lo + hi)
         self.radius = max(float(np.linalg.norm(self.points - self.center, axis=1).max()),

@@ -385,6 +385,13 @@ def _distribution_kwargs(material, uv, shape):
     return {"distribution": name, ROUGHNESS_PARAMETERS[name]: low + (high - low) * t}
 
 
+def _samples_of(dist, idx, n):
+    """The distribution keywords of the samples ``idx`` (per-sample arrays of length n indexed,
+    shared values kept)."""
+    return {key: value[idx] if isinstance(value, np.ndarray) and value.ndim and len(value) == n
+            else value for key, value in dist.items()}
+
+
 def _cosines(N, V, L):
     """NL, NV, NH, VH, RV of unit vectors (n, 3); H = (L + V) / |L + V| (N where L = -V)."""
     Hs = L + V
@@ -550,18 +557,27 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
                                          None if shadowed is None else shadowed[i, sl])
                 c = _cosines(normal[sl], view[sl], L)
                 energy = energy * np.maximum(c["NL"], 0.0)  # E_i = I_i (N.L) d omega_i
+                # a sample the light does not reach (shadowed, or N.L <= 0) adds 0 x the
+                # (finite) BRDF, i.e. nothing: the model is evaluated where the light arrives
+                lit = np.flatnonzero(energy != 0.0)
+                at, c_lit, dist_lit = sl, c, dist
+                if len(lit) < len(energy):
+                    at, energy = lit + sl.start, energy[lit]
+                    c_lit = {key: value[lit] for key, value in c.items()}
+                    dist_lit = _samples_of(dist, lit, len(c["NL"]))
                 if material.s > 0:
-                    g = call(c, 1.0, 1.0, 0.0, 0.0, material, dist)  # the BRDF for F = 1
-                    value = (material.s * energy * g)[:, None] * lookup_table(tables[i], c["VH"])
-                    total[sl] += value
+                    g = call(c_lit, 1.0, 1.0, 0.0, 0.0, material, dist_lit)  # the BRDF for F = 1
+                    value = ((material.s * energy * g)[:, None]
+                             * lookup_table(tables[i], c_lit["VH"]))
+                    total[at] += value
                     if components:
-                        direct["specular"][sl] += value
+                        direct["specular"][at] += value
                 if material.d > 0:
-                    h = call(c, 0.0, 0.0, 1.0, 1.0, material, dist)  # for a unit colour
+                    h = call(c_lit, 0.0, 0.0, 1.0, 1.0, material, dist_lit)  # for a unit colour
                     value = (material.d * energy * h)[:, None] * diffuse_XYZ[i]
-                    total[sl] += value
+                    total[at] += value
                     if components:
-                        direct["diffuse"][sl] += value
+                        direct["diffuse"][at] += value
     else:
         # brute force: the model per wavelength, F(lambda, V.H) from n, k, summed against W
         step = max(1, _SPECTRAL_CHUNK // len(wavelengths))

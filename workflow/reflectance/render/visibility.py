@@ -194,21 +194,21 @@ def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, se
         triangle[m] = tri
         corner = np.take(scene.T, tri, axis=1)
         b1, b2 = barycentric[m, 0], barycentric[m, 1]
-        w = (1.0 - b1 - b2, b1, b2)
+        w = ((1.0 - b1 - b2)[:, None], b1[:, None], b2[:, None])
 
-        def blend(A):  # barycentric interpolation of a vertex attribute, components first
-            return sum(w[j] * np.take(A, corner[j], axis=1) for j in range(3))
+        def blend(A):  # barycentric interpolation of a vertex attribute (rows: vertices)
+            return sum(w[j] * np.take(A, corner[j], axis=0) for j in range(3))
 
-        position[m] = blend(scene.P).T
-        uv[m] = blend(scene.UV).T
-        n = blend(scene.N)
-        length = np.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
+        position[m] = blend(scene.points)
+        uv[m] = blend(scene.uv_rows)
+        n = blend(scene.normal_rows)
+        length = np.sqrt(n[:, 0] ** 2 + n[:, 1] ** 2 + n[:, 2] ** 2)
         good = length > 1e-6
         inv = 1.0 / np.where(good, length, 1.0)
-        g = scene.face_normal[tri]
+        g = np.take(scene.face_normal, tri, axis=0)
         geometric[m] = g
-        for k in range(3):
-            normal[m, k] = np.where(good, n[k] * inv, g[:, k])
+        n *= inv[:, None]
+        normal[m] = np.where(good[:, None], n, g)
     del mesh
 
     s = np.nonzero(hit & (key >= scene.n))[0]  # analytic spheres: exact
