@@ -153,7 +153,7 @@ def id_buffer(meshes, camera):
 def key_image(scene, ids):
     """Primitive keys of an ID image (-1 for the background): one gather from the keys of ids
     0 (background) .. n."""
-    return np.take(scene.key_of_id, ids)
+    return np.take(scene.key_of_id, ids, out=np.empty_like(ids, np.int32))  # ids' layout
 
 
 def dilate(mask):
@@ -169,11 +169,12 @@ def dilate(mask):
 
 def neighbour_keys(image, rows, cols, fill=-1):
     """(n, 9) values of ``image`` at the 3 x 3 pixels around (rows, cols); ``fill`` off the
-    image."""
+    image. Stored column by column (the transpose of a contiguous (9, n) array), the layout
+    :func:`distinct_keys` sorts in."""
     width = image.shape[1] + 2
     padded = np.pad(image, 1, constant_values=fill).ravel()
     offsets = (np.arange(-1, 2)[:, None] * width + np.arange(-1, 2)[None, :]).ravel()
-    return np.take(padded, ((rows + 1) * width + cols + 1)[:, None] + offsets)
+    return np.take(padded, offsets[:, None] + ((rows + 1) * width + cols + 1)[None, :]).T
 
 
 #: a sorting network of 9 inputs (25 compare-exchanges; sorts every 0-1 input, hence every input)
@@ -192,7 +193,8 @@ def distinct_keys(keys, exclude):
         keys.sort(axis=1)
         keys[:, 1:][keys[:, 1:] == keys[:, :-1]] = -1
         return keys
-    columns = np.ascontiguousarray(keys.T)  # (9, n): contiguous columns
+    columns = np.ascontiguousarray(keys.T)  # (9, n): contiguous columns (no copy when the
+    # keys come from neighbour_keys)
     low = np.empty_like(columns[0])
     for i, j in _SORT9:
         np.minimum(columns[i], columns[j], out=low)

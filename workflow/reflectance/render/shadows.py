@@ -113,9 +113,10 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
     o = np.take(lifted, r, axis=1)
     # cheap necessary condition first: origin and light on opposite sides of the triangle's
     # plane (spheres always go on to the exact test)
-    pl = np.take(planes, np.minimum(k, scene.n - 1), axis=1)
-    sel = np.nonzero((pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] + pl[3] < 0)
-                     | (k >= scene.n))[0]
+    spheres = len(scene.radii) > 0
+    pl = np.take(planes, np.minimum(k, scene.n - 1) if spheres else k, axis=1)
+    crosses = pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] + pl[3] < 0
+    sel = np.nonzero(crosses | (k >= scene.n) if spheres else crosses)[0]
     r, k, o = r[sel], k[sel], np.take(o, sel, axis=1)
     d = L if L.shape[1] == 1 else np.take(L, r, axis=1)
     tm = t_max if np.ndim(t_max) == 0 else np.take(t_max, r)
