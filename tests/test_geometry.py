@@ -139,56 +139,6 @@ def test_vase_is_deterministic():
     assert np.array_equal(a.point_data["Normals"], b.point_data["Normals"])
 
 
-@settings(max_examples=200, deadline=None)
-@given(st.lists(st.floats(1e-3, 1.0), min_size=3, max_size=20),
-       st.lists(st.floats(-1e3, 1e3), min_size=21, max_size=21),
-       st.lists(st.floats(-0.2, 1.2), min_size=1, max_size=30))
-def test_vase_cubic_spline_is_scipys_to_the_bit(steps, values, at):
-    # the profile's not-a-knot spline is computed without scipy.interpolate (its import costs
-    # about 1 s), with scipy's operations: values and derivatives must be scipy's, bit for bit
-    from scipy.interpolate import CubicSpline
-
-    x = np.concatenate([[0.0], np.cumsum(steps)])
-    x /= x[-1]
-    y = np.asarray(values[:len(x)])
-    q = np.concatenate([np.asarray(at), x])
-    ours = VASE_INTERPOLATION_METHODS["cubic"](x, y)
-    scipys = CubicSpline(x, y, bc_type="not-a-knot")
-    for nu in (0, 1, 2):
-        a = ours.derivative(nu) if nu else ours
-        b = scipys.derivative(nu) if nu else scipys
-        assert a(q).tobytes() == b(q).tobytes()
-        assert a(q.reshape(-1, 1)).shape == b(q.reshape(-1, 1)).shape
-        assert np.asarray(a(q[0])).tobytes() == np.asarray(b(q[0])).tobytes()
-
-
-@settings(max_examples=200, deadline=None)
-@given(st.lists(st.floats(-5, 5), min_size=2, max_size=6), st.floats(-3, 0), st.floats(0, 3))
-def test_vase_root_finder_is_scipys_brentq_to_the_bit(coefficients, a, b):
-    from scipy.optimize import brentq
-
-    from reflectance.geometry.shapes import _brentq
-
-    def f(t):
-        return np.polyval(coefficients, t) + np.tanh(t - 0.3)
-
-    if a == b or np.sign(f(a)) * np.sign(f(b)) >= 0:
-        return
-    for xtol, rtol in ((1e-15, 4 * np.finfo(float).eps), (1e-6, 1e-9)):
-        assert _brentq(f, a, b, xtol, rtol) == brentq(f, a, b, xtol=xtol, rtol=rtol)
-
-
-def test_vase_is_built_without_scipy():
-    import subprocess
-    import sys
-
-    code = ("import sys; from reflectance.geometry.shapes import vase; "
-            f"vase({VASE_PROFILE!r}, 16, 40, 0.03); "
-            "print(sorted(m for m in sys.modules if m.startswith('scipy')))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "[]"
-
-
 @pytest.mark.parametrize("kwargs, message", [
     (dict(profile=[(0.5, 0), (0.6, 1)]), "at least 3"),
     (dict(profile=[(-0.1, 0), (0.5, 0.5), (0.4, 1)]), "radius must be >= 0"),

@@ -44,155 +44,11 @@ VASE_PARTS = {"outer": 0, "rim": 1, "inner": 2, "floor": 3, "bottom": 4}
 """Codes of ``cell_data["part"]`` for :func:`vase`; other builders use 0 everywhere."""
 
 
-class _PiecewiseCubic:
-    """A piecewise polynomial on breakpoints ``x`` with coefficients ``c`` (k, m), highest power
-    first, evaluated with the operations of scipy's ``PPoly`` in their order (so the values are
-    scipy's to the bit); extrapolated from the end pieces."""
-
-    def __init__(self, c, x):
-        self.c, self.x = c, x
-
-    def __call__(self, s):
-        s = np.asarray(s, np.float64)
-        # scipy's find_interval: x[i] <= s < x[i + 1], the last piece closed on the right
-        i = np.clip(np.searchsorted(self.x, s, side="right") - 1, 0, len(self.x) - 2)
-        z = s - self.x[i]
-        k = len(self.c)
-        value, power = np.zeros_like(z), np.ones_like(z)
-        for j in range(k):  # res = res + c z^j, z^j built by repeated products
-            value = value + self.c[k - j - 1][i] * power
-            if j < k - 1:
-                power = power * z
-        return np.where(np.isnan(s), np.nan, value)
-
-    def derivative(self, nu=1):
-        c = self.c[:-nu].copy()
-        # the rising factorial (j)_nu of each power j (exact in float64 for these degrees)
-        factor = [float(np.prod(np.arange(j, j + nu))) for j in range(len(c), 0, -1)]
-        c *= np.asarray(factor)[:, None]
-        return _PiecewiseCubic(c, self.x)
-
-
-def _tridiagonal_solve(dl, d, du, b):
-    """LAPACK's dgtsv (Gaussian elimination with partial pivoting) for one right-hand side, in
-    its operations and their order; None where it would report a singular matrix."""
-    dl, d, du, b = (list(map(float, v)) for v in (dl, d, du, b))
-    n = len(d)
-    for i in range(n - 1):
-        if abs(d[i]) >= abs(dl[i]):
-            if d[i] == 0.0:
-                return None
-            fact = dl[i] / d[i]
-            d[i + 1] = d[i + 1] - fact * du[i]
-            b[i + 1] = b[i + 1] - fact * b[i]
-            if i < n - 2:
-                dl[i] = 0.0
-        else:  # interchange rows i and i + 1
-            fact = d[i] / dl[i]
-            d[i] = dl[i]
-            temp = d[i + 1]
-            d[i + 1] = du[i] - fact * temp
-            if i < n - 2:
-                dl[i] = du[i + 1]
-                du[i + 1] = -fact * dl[i]
-            du[i] = temp
-            b[i], b[i + 1] = b[i + 1], b[i] - fact * b[i + 1]
-    if d[n - 1] == 0.0:
-        return None
-    b[n - 1] = b[n - 1] / d[n - 1]
-    b[n - 2] = (b[n - 2] - du[n - 2] * b[n - 1]) / d[n - 2]
-    for i in range(n - 3, -1, -1):
-        b[i] = (b[i] - du[i] * b[i + 1] - dl[i] * b[i + 2]) / d[i]
-    return np.array(b)
-
-
 def _cubic(s, y):
-    """Not-a-knot cubic spline of y(s), as scipy's ``CubicSpline(s, y, bc_type="not-a-knot")``
-    computes it (the same operations, to the bit; tests/test_shapes.py compares them), without
-    importing scipy.interpolate (about 1 s): C2, so normals and curvature vary smoothly along the
-    profile. Three knots (a parabola) go to scipy."""
-    x, y = np.asarray(s, np.float64), np.asarray(y, np.float64)
-    n = len(x)
-    solution = None
-    if n >= 4:
-        # scipy.interpolate.CubicSpline: the tridiagonal system for the slopes at the knots
-        dx = np.diff(x)
-        dxr = dx
-        slope = np.diff(y, axis=0) / dxr
-        A = np.zeros((3, n))
-        b = np.empty(n)
-        A[1, 1:-1] = 2 * (dx[:-1] + dx[1:])
-        A[0, 2:] = dx[:-1]
-        A[-1, :-2] = dx[1:]
-        b[1:-1] = 3 * (dxr[1:] * slope[:-1] + dxr[:-1] * slope[1:])
-        A[1, 0] = dx[1]
-        A[0, 1] = x[2] - x[0]
-        d = x[2] - x[0]
-        b[0] = ((dxr[0] + 2*d) * dxr[1] * slope[0] + dxr[0]**2 * slope[1]) / d
-        A[1, -1] = dx[-2]
-        A[-1, -2] = x[-1] - x[-3]
-        d = x[-1] - x[-3]
-        b[-1] = ((dxr[-1]**2*slope[-2] + (2*d + dxr[-1])*dxr[-2]*slope[-1]) / d)
-        solution = _tridiagonal_solve(A[2, :-1], A[1, :], A[0, 1:], b)
-    if solution is None:
-        from scipy.interpolate import CubicSpline
+    from scipy.interpolate import CubicSpline  # here: scipy.interpolate costs ~1.5 s to import
 
-        return CubicSpline(x, y, bc_type="not-a-knot")
-    # scipy.interpolate.CubicHermiteSpline: the cubic of each piece from its end slopes
-    dydx = solution
-    dx = np.diff(x)
-    dxr = dx
-    slope = np.diff(y, axis=0) / dxr
-    t = (dydx[:-1] + dydx[1:] - 2 * slope) / dxr
-    c = np.stack((t / dxr, (slope - dydx[:-1]) / dxr - t, dydx[:-1], y[:-1]))
-    return _PiecewiseCubic(c, x)
-
-
-def _brentq(f, xa, xb, xtol, rtol, maxiter=100):
-    """Brent's root of f in [xa, xb], as scipy.optimize.brentq computes it (scipy's brentq.c:
-    the same steps and operations, so the same root to the bit; tests/test_shapes.py compares
-    them), without importing scipy.optimize (about 1 s)."""
-    xpre, xcur = float(xa), float(xb)
-    xblk = fblk = spre = scur = 0.0
-    fpre, fcur = float(f(xpre)), float(f(xcur))
-    if np.isnan(fpre) or np.isnan(fcur):
-        raise ValueError("the function is NaN at an end of the bracket")
-    if fpre == 0:
-        return xpre
-    if fcur == 0:
-        return xcur
-    if np.signbit(fpre) == np.signbit(fcur):
-        raise ValueError("f(a) and f(b) must have different signs")
-    for _ in range(maxiter):
-        if fpre != 0 and fcur != 0 and np.signbit(fpre) != np.signbit(fcur):
-            xblk, fblk = xpre, fpre
-            spre = scur = xcur - xpre
-        if abs(fblk) < abs(fcur):
-            xpre, xcur, xblk = xcur, xblk, xcur
-            fpre, fcur, fblk = fcur, fblk, fcur
-        delta = (xtol + rtol * abs(xcur)) / 2
-        sbis = (xblk - xcur) / 2
-        if fcur == 0 or abs(sbis) < delta:
-            return xcur
-        if abs(spre) > delta and abs(fcur) < abs(fpre):
-            if xpre == xblk:  # interpolate
-                stry = -fcur * (xcur - xpre) / (fcur - fpre)
-            else:  # extrapolate
-                dpre = (fpre - fcur) / (xpre - xcur)
-                dblk = (fblk - fcur) / (xblk - xcur)
-                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
-            if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta):  # good short step
-                spre, scur = scur, stry
-            else:  # bisect
-                spre = scur = sbis
-        else:  # bisect
-            spre = scur = sbis
-        xpre, fpre = xcur, fcur
-        xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
-        fcur = float(f(xcur))
-        if np.isnan(fcur):
-            raise ValueError("the function is NaN inside the bracket")
-    raise RuntimeError(f"no root found to the tolerance in {maxiter} iterations")
+    # not-a-knot cubic spline: C2, so normals and curvature vary smoothly along the profile
+    return CubicSpline(s, y, bc_type="not-a-knot")
 
 
 def _pchip(s, y):
@@ -526,7 +382,9 @@ def vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples=9,
             raise ValueError("the inner wall never clears the bottom: wall_thickness too large")
         k = above[0]
         fn = (lambda s: inner(s)[1] - z_floor) if r0 > 0 else (lambda s: inner(s)[0])
-        s_start = _brentq(fn, dense[k - 1], dense[k], xtol=1e-15, rtol=4 * np.finfo(float).eps)
+        from scipy.optimize import brentq
+
+        s_start = brentq(fn, dense[k - 1], dense[k], xtol=1e-15, rtol=4 * np.finfo(float).eps)
     if np.any(ri_dense[dense >= s_start] < -1e-12):
         raise ValueError("the inner wall crosses the axis: wall_thickness too large")
     s_inner = np.linspace(s_start, 1.0, n_samples)
