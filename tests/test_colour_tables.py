@@ -12,6 +12,7 @@ from reflectance.colour.display import (
     CHROMATIC_ADAPTATION_TRANSFORM,
     DISPLAY_SPACES,
     XYZ_to_linear_RGB,
+    decode_8bit,
     display_space,
     encode,
 )
@@ -285,6 +286,7 @@ def test_dominant_wavelength_is_colour_sciences(observer):
     assert (wl < 0).any() and (wl > 0).any()  # purples and spectral colours were both drawn
 
 
+
 def test_von_Kries_CAT02_is_colour_sciences():
     rng = np.random.default_rng(5)
     for space in DISPLAY_SPACES:
@@ -304,3 +306,20 @@ def test_transfer_functions_are_colour_sciences():
     np.testing.assert_array_equal(encode(L, "SMPTE-C"),
                                   colour.models.eotf_inverse_BT1886(L, L_B=0, L_W=1))
     assert np.isnan(encode([np.nan], "sRGB")).all() and np.isnan(encode([np.nan], "SMPTE-C")).all()
+
+
+def test_decoding_of_8_bit_codes_is_colour_sciences(fresh_cache):
+    """Every code, as computed and written to the cache and as read back from it, in any shape."""
+    codes = np.random.default_rng(4).integers(0, 256, (40, 30, 3)).astype(np.float64)
+    for _ in range(2):  # computed by colour-science, then read from the file
+        np.testing.assert_array_equal(decode_8bit(codes, "sRGB"),
+                                      colour.cctf_decoding(codes / 255, function="sRGB"))
+        np.testing.assert_array_equal(decode_8bit(codes, "SMPTE-C"),
+                                      colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1))
+        np.testing.assert_array_equal(decode_8bit(np.arange(256), "sRGB"),
+                                      colour.cctf_decoding(np.arange(256) / 255, function="sRGB"))
+        tables.forget()
+    assert list(fresh_cache.rglob("transfer-decoding-8bit-*.npy"))
+    for bad in ([0.5], [-1], [256]):
+        with pytest.raises(ValueError, match="integers 0-255"):
+            decode_8bit(bad)
