@@ -286,6 +286,28 @@ def test_dominant_wavelength_is_colour_sciences(observer):
     assert (wl < 0).any() and (wl > 0).any()  # purples and spectral colours were both drawn
 
 
+@pytest.mark.parametrize("observer", ["CIE 1931 2 Degree Standard Observer",
+                                      "CIE 1964 10 Degree Standard Observer"])
+def test_dominant_wavelength_through_locus_vertices_is_colour_sciences(observer):
+    """Lines from the white through every tabulated locus point, exactly and 1e-13 off it (where
+    the shortlist of segments and of nearest samples is tightest): colour's wavelength and
+    boundary point wherever colour finds one."""
+    rng = np.random.default_rng(8)
+    XYZ_n = white_XYZ("D65", observer)
+    xy_n = XYZ_n[:2] / XYZ_n.sum()
+    locus = XYZ_to_xy(tables.cmfs_tabulated(observer)[1])
+    through = xy_n + (locus - xy_n) * rng.uniform(0.05, 1.0, (len(locus), 1))
+    xy = np.vstack([through, through + rng.normal(0.0, 1e-13, through.shape)])
+    XYZ = np.column_stack([xy, 1 - xy.sum(axis=1)])
+
+    wl, purity = dominant_wavelength(XYZ, "D65", observer)
+    expected_wl, expected_xy_b, _ = colour.dominant_wavelength(xy, xy_n, OBSERVERS[observer])
+    found = ~np.isnan(expected_xy_b[:, 0])
+    assert found.mean() > 0.9
+    np.testing.assert_array_equal(wl[found], expected_wl[found])
+    expected_purity = (np.hypot(*(xy - xy_n).T) / np.hypot(*(expected_xy_b - xy_n).T))[found]
+    np.testing.assert_array_equal(purity[found], expected_purity)
+
 
 def test_von_Kries_CAT02_is_colour_sciences():
     rng = np.random.default_rng(5)
