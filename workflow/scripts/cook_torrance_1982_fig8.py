@@ -12,7 +12,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import watch_scene_CookTorrance1982
 from reflectance.scripting import script_log
@@ -30,7 +30,7 @@ with script_log(snakemake) as log:
     scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
     traced = {}  # the render's camera samples, reused below (pipeline.render)
     result = render_to_files(scene, out.scene, out.exr, out.render_png, traced=traced)
-    rgb, scale = display_image(result)
+    rgb, scale = result.display
     log.info("render %s, exposure scale %.6g", result.timings, scale)
 
     # what each pixel shows: the fraction of its samples on each part; the colour it is shown in
