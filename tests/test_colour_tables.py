@@ -12,6 +12,7 @@ from reflectance.colour.display import (
     CHROMATIC_ADAPTATION_TRANSFORM,
     DISPLAY_SPACES,
     XYZ_to_linear_RGB,
+    decode_8bit,
     display_space,
     encode,
 )
@@ -285,6 +286,29 @@ def test_dominant_wavelength_is_colour_sciences(observer):
     assert (wl < 0).any() and (wl > 0).any()  # purples and spectral colours were both drawn
 
 
+@pytest.mark.parametrize("observer", ["CIE 1931 2 Degree Standard Observer",
+                                      "CIE 1964 10 Degree Standard Observer"])
+def test_dominant_wavelength_through_locus_vertices_is_colour_sciences(observer):
+    """Lines from the white through every tabulated locus point, exactly and 1e-13 off it (where
+    the shortlist of segments and of nearest samples is tightest): colour's wavelength and
+    boundary point wherever colour finds one."""
+    rng = np.random.default_rng(8)
+    XYZ_n = white_XYZ("D65", observer)
+    xy_n = XYZ_n[:2] / XYZ_n.sum()
+    locus = XYZ_to_xy(tables.cmfs_tabulated(observer)[1])
+    through = xy_n + (locus - xy_n) * rng.uniform(0.05, 1.0, (len(locus), 1))
+    xy = np.vstack([through, through + rng.normal(0.0, 1e-13, through.shape)])
+    XYZ = np.column_stack([xy, 1 - xy.sum(axis=1)])
+
+    wl, purity = dominant_wavelength(XYZ, "D65", observer)
+    expected_wl, expected_xy_b, _ = colour.dominant_wavelength(xy, xy_n, OBSERVERS[observer])
+    found = ~np.isnan(expected_xy_b[:, 0])
+    assert found.mean() > 0.9
+    np.testing.assert_array_equal(wl[found], expected_wl[found])
+    expected_purity = (np.hypot(*(xy - xy_n).T) / np.hypot(*(expected_xy_b - xy_n).T))[found]
+    np.testing.assert_array_equal(purity[found], expected_purity)
+
+
 def test_von_Kries_CAT02_is_colour_sciences():
     rng = np.random.default_rng(5)
     for space in DISPLAY_SPACES:
@@ -304,3 +328,20 @@ def test_transfer_functions_are_colour_sciences():
     np.testing.assert_array_equal(encode(L, "SMPTE-C"),
                                   colour.models.eotf_inverse_BT1886(L, L_B=0, L_W=1))
     assert np.isnan(encode([np.nan], "sRGB")).all() and np.isnan(encode([np.nan], "SMPTE-C")).all()
+
+
+def test_decoding_of_8_bit_codes_is_colour_sciences(fresh_cache):
+    """Every code, as computed and written to the cache and as read back from it, in any shape."""
+    codes = np.random.default_rng(4).integers(0, 256, (40, 30, 3)).astype(np.float64)
+    for _ in range(2):  # computed by colour-science, then read from the file
+        np.testing.assert_array_equal(decode_8bit(codes, "sRGB"),
+                                      colour.cctf_decoding(codes / 255, function="sRGB"))
+        np.testing.assert_array_equal(decode_8bit(codes, "SMPTE-C"),
+                                      colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1))
+        np.testing.assert_array_equal(decode_8bit(np.arange(256), "sRGB"),
+                                      colour.cctf_decoding(np.arange(256) / 255, function="sRGB"))
+        tables.forget()
+    assert list(fresh_cache.rglob("transfer-decoding-8bit-*.npy"))
+    for bad in ([0.5], [-1], [256]):
+        with pytest.raises(ValueError, match="integers 0-255"):
+            decode_8bit(bad)

@@ -6,7 +6,8 @@ import pytest
 
 from reflectance.cli import main
 from reflectance.io.images import read_exr
-from reflectance.render.pipeline import image_difference_CIEDE2000, render, write_render
+from reflectance.render.pipeline import (display_image, image_difference_CIEDE2000, render,
+                                         render_to_files, write_render)
 from reflectance.render.scene import load_scene, scene_from_dict
 from reflectance.render.shading import emission_XYZ
 
@@ -222,6 +223,18 @@ def test_write_render_writes_exr_and_png(spectra, tmp_path):
     assert np.allclose(XYZ, result.XYZ.astype(np.float32))
     assert float(header["display_exposure_scale"]) > 0
     assert (tmp_path / "a.png").stat().st_size > 0
+
+
+def test_render_to_files_keeps_the_display_image_it_wrote(spectra, tmp_path):
+    scene, _ = lambert_sphere(spectra, 16, 12)
+    result = render_to_files(scene, tmp_path / "a.scene.yaml", tmp_path / "a.exr",
+                             tmp_path / "a.png")
+    rgb, scale = result.display
+    again, again_scale = display_image(render(scene))
+    np.testing.assert_array_equal(rgb, again)
+    assert scale == again_scale
+    _, header = read_exr(tmp_path / "a.exr")
+    assert float(header["display_exposure_scale"]) == pytest.approx(scale, rel=1e-6)
 
 
 def test_named_parts_are_shaded_with_their_materials(spectra):

@@ -226,6 +226,8 @@ rule audit_illuminant_observer:
 
 
 rule audit_spectral_recovery:
+    input:
+        spectra=[spectrum_csv(name) for name in AUDITS["spectral_recovery"]["materials"]],
     output:
         png=report(
             f"{AUDITS_OUT}/spectral_recovery.png",

@@ -10,7 +10,7 @@ import pandas as pd
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import spheres_scene_article
 from reflectance.scripting import script_log
@@ -26,7 +26,7 @@ with script_log(snakemake) as log:
     metal = cfg["metal_sphere"]  # the article: "on metallic materials such as gold ..."
     scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
     result = render_to_files(scene, out.scene, out.exr, out.render)
-    image, scale = display_image(result)  # Cook & Torrance exposure over all three spheres
+    image, scale = result.display  # Cook & Torrance exposure over all three spheres
     log.info("timings %s; exposure scale %.6g", result.timings, scale)
 
     W = tristimulus_weights(grid, cfg["light"]["spectrum"], colour["observer"])

@@ -1,5 +1,7 @@
 """Audit 7, judgement: how much the colours of Cook & Torrance 1982 Table I's Munsell-derived
-materials depend on the spectral recovery (the configured method against colour-science's others)."""
+materials depend on the spectral recovery (the configured method against colour-science's others).
+The configured method's spectrum is the material's own file (spectra/<name>.csv, which that
+recovery wrote): the spectrum every figure renders, and not recovered a second time."""
 
 from pathlib import Path
 
@@ -11,7 +13,8 @@ from reflectance.audit.colour_shift import reflected_XYZ
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.optics.spectra import material_from_table, reflectance_from_munsell, wavelength_grid
+from reflectance.optics.spectra import (material_from_table, read_spectrum_csv,
+                                        reflectance_from_munsell, wavelength_grid)
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -21,10 +24,12 @@ with script_log(snakemake) as log:
     grid = wavelength_grid(**snakemake.params.wavelengths)
     cos_theta = np.cos(np.radians(cfg["angles_deg"]))
     rows, spectra = [], {}
+    files = dict(zip(cfg["materials"], snakemake.input.spectra))
     for name in cfg["materials"]:
         entry = entries[name]
         own = entry.get("recovery", "Meng 2015")
-        tables = {method: reflectance_from_munsell(entry["notation"], method, grid)
+        tables = {method: read_spectrum_csv(files[name]) if method == own
+                  else reflectance_from_munsell(entry["notation"], method, grid)
                   for method in cfg["methods"]}
         spectra[name] = (own, tables)
         for illuminant in cfg["illuminants"]:

@@ -8,7 +8,7 @@ import pandas as pd
 from reflectance.colour.display import display_tag, encode
 
 from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
-from reflectance.render.pipeline import display_image, render, render_to_files
+from reflectance.render.pipeline import render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
                                        materials_Blinn1977, mirror_highlight_Blinn1977,
@@ -41,7 +41,7 @@ with script_log(snakemake) as log:
                     scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
                     result = render_to_files(scene, f"{stems[key]}.scene.yaml",
                                              f"{stems[key]}.exr", f"{stems[key]}.png", traced=traced)
-                    images[key], Y[key] = display_image(result)[0], result.XYZ[..., 1]
+                    images[key], Y[key] = result.display[0], result.XYZ[..., 1]
                     log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
                     if light == "edge":  # the highlight close up (fig7.rim_closeup), for the inset
                         rims[key] = render(scene_from_dict(blinn_scene_Blinn1977(

@@ -11,7 +11,7 @@ import pandas as pd
 from reflectance.colour.display import display_tag
 from reflectance.optics.microfacet import c3_texture_Blinn1977
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import blinn_scene_Blinn1977
 from reflectance.scripting import script_log
@@ -36,7 +36,7 @@ with script_log(snakemake) as log:
         scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
         result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
                                  out[f"{part}_png"], traced=traced)
-        images[part] = display_image(result)[0]
+        images[part] = result.display[0]
         # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
         maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),
                                           cfg["c_min"])

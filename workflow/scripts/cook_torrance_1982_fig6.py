@@ -61,7 +61,7 @@ with script_log(snakemake) as log:
         result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
                                   out[f"{part}_png"], components=True, traced=traced) if written
                   else render(scene, components=True, traced=traced))
-        rgb, scale = display_image(result)
+        rgb, scale = result.display or display_image(result)  # as written, or not written
         images.append((title, rgb)), covered.append(result.XYZ)
         Y = {name: value[..., 1] for name, value in result.components.items()}
         direct = Y["diffuse"] + Y["specular"]

@@ -20,7 +20,7 @@ from reflectance.io.tables import write_csv
 from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982, fig7_vases_CookTorrance1982,
                                        vase_scene_CookTorrance1982)
 from reflectance.render.composite import appearance, common_exposure, covered_rows, image_grid
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.scripting import script_log
 
@@ -56,7 +56,7 @@ with script_log(snakemake) as log:
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
         result = render_to_files(scene, out.scenes[k], out.exrs[k],
                                  out.pngs[k] if published else None, traced=traced)
-        rgb, scale = display_image(result)  # the vase alone, as its scene file shows it
+        rgb, scale = result.display  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
         albedo = scene.objects[0].material.albedo @ W  # pi R_d (Cook & Torrance 1982: R_d = F0/pi)

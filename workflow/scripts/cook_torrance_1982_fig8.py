@@ -12,12 +12,11 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import display_image, render_to_files
+from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import watch_scene_CookTorrance1982
 from reflectance.scripting import script_log
 from reflectance.optics.spectra import load_material
-from reflectance.render.visibility import visibility
 from reflectance.geometry.watch import WATCH_PARTS
 from reflectance.io.tables import write_csv
 
@@ -29,14 +28,16 @@ with script_log(snakemake) as log:
     document = watch_scene_CookTorrance1982(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg,
                                             spectra_dir)
     scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
-    result = render_to_files(scene, out.scene, out.exr, out.render_png)
-    rgb, scale = display_image(result)
+    traced = {}  # the render's camera samples, reused below (pipeline.render)
+    result = render_to_files(scene, out.scene, out.exr, out.render_png, traced=traced)
+    rgb, scale = result.display
     log.info("render %s, exposure scale %.6g", result.timings, scale)
 
     # what each pixel shows: the fraction of its samples on each part; the colour it is shown in
     display = dict(illuminant=colour_cfg["illuminant"], observer=scene.observer,
                    wavelengths=scene.wavelengths)
-    stats = part_pixels(visibility(scene.mesh, scene.camera), scene.mesh.cell_data["part"],
+    (samples, _), = traced.values()  # the one trace: every camera sample of the image
+    stats = part_pixels(samples, scene.mesh.cell_data["part"],
                         result.XYZ, scale, colour_cfg["space"], colour_cfg["gamut_clip"], display)
     W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
     rows = []

@@ -544,6 +544,12 @@ def _intersect_line_segments(l_1, l_2):
     return xy, intersect
 
 
+_LOCUS_MARGIN = 1e-12
+"""Rounding allowance of the shortlists of :func:`_closest_locus_sample`: a cross product or a
+squared distance computed in another order is within ~1e-15 of the exact formula's (xy below 1),
+so a margin of 1e-12 leaves out nothing the exact test or the exact nearest sample would pick."""
+
+
 def _closest_locus_sample(xy, xy_n, locus_xy, inverse):
     """Index of the locus sample nearest to where the ray from the white meets the closed locus.
 
@@ -552,15 +558,66 @@ def _closest_locus_sample(xy, xy_n, locus_xy, inverse):
     ``closest_spectral_locus_wavelength``, including its choice among several intersections (the
     smallest x and the smallest y, sorted separately) and its nearest sample by Euclidean
     distance (first on ties; a ray that meets nothing gives index 0 and a NaN point).
+
+    colour-science tests every ray against every locus segment and measures the distance to every
+    locus sample. Here both are first shortlisted with one matrix product each (a segment whose
+    ends lie strictly on one side of the ray's line cannot meet it; a sample farther than the
+    nearest by more than the rounding allowance :data:`_LOCUS_MARGIN` cannot be the nearest), and
+    only the shortlisted pairs, a few per ray, are computed with colour-science's formulas (the same
+    operations on the same numbers): the same intersections and the same index, to the bit.
     """
     xy_e = _extend_line_segment(xy, xy_n) if inverse else _extend_line_segment(xy_n, xy)
     closed = np.vstack([locus_xy, locus_xy[0]])
     segments = np.hstack([closed, np.roll(closed, 1, axis=0)])
-    xy_wl, _ = _intersect_line_segments(np.concatenate([xy_n, xy_e], axis=-1), segments)
-    xy_wl = np.sort(xy_wl, axis=1)[:, 0, :]
-    d = xy_wl[:, None, :] - closed[None, :, :]
-    distance = np.sqrt(d[..., 0] * d[..., 0] + d[..., 1] * d[..., 1])
-    return np.argmin(distance, axis=-1), xy_wl
+    rays = np.concatenate([xy_n, xy_e], axis=-1)
+    # the side of each vertex P of the ray's line: (x_2 - x_1)(y_1 - P_y) - (y_2 - y_1)(x_1 - P_x)
+    dx, dy = rays[:, 2] - rays[:, 0], rays[:, 3] - rays[:, 1]
+    line = np.stack([dy, -dx, dx * rays[:, 1] - dy * rays[:, 0]], axis=-1)
+    side = line @ np.column_stack([closed, np.ones(len(closed))]).T
+    above, below = side > _LOCUS_MARGIN, side < -_LOCUS_MARGIN
+    # segment k runs from vertex k to vertex k - 1
+    apart = ~((above & np.roll(above, 1, axis=1)) | (below & np.roll(below, 1, axis=1)))
+    ray, segment = np.nonzero(apart)
+    points, hit = _intersect_line_segments_pairs(rays[ray], segments[segment])
+    # colour sorts x and y of the intersections separately and keeps the first (NaN sort last)
+    xy_wl = np.full((len(xy), 2), np.inf)
+    np.minimum.at(xy_wl, ray[hit], points[hit])
+    xy_wl[np.isinf(xy_wl[:, 0])] = np.nan
+    index = np.zeros(len(xy), dtype=np.intp)  # colour's argmin over NaN distances: 0
+    found = np.flatnonzero(~np.isnan(xy_wl[:, 0]))
+    if found.size:
+        p = xy_wl[found]
+        squared = (np.sum(p * p, axis=1)[:, None] - 2.0 * p @ closed.T
+                   + np.sum(closed * closed, axis=1)[None, :])
+        row, sample = np.nonzero(squared <= squared.min(axis=1, keepdims=True) + _LOCUS_MARGIN)
+        d = p[row] - closed[sample]
+        distance = np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])  # colour's, per pair
+        order = np.lexsort((sample, distance, row))  # per ray: nearest first, then first index
+        first = order[np.r_[True, row[order][1:] != row[order][:-1]]]
+        index[found[row[first]]] = sample[first]
+    return index, xy_wl
+
+
+def _intersect_line_segments_pairs(l_1, l_2):
+    """:func:`_intersect_line_segments` of the pairs ``l_1[i]``, ``l_2[i]`` (both (n, 4)):
+    ``(xy (n, 2), intersect (n,))``, the same operations in the same order."""
+    x_1, y_1, x_2, y_2 = l_1.T
+    x_3, y_3, x_4, y_4 = l_2.T
+    x_4_x_3 = x_4 - x_3
+    y_1_y_3 = y_1 - y_3
+    y_4_y_3 = y_4 - y_3
+    x_1_x_3 = x_1 - x_3
+    x_2_x_1 = x_2 - x_1
+    y_2_y_1 = y_2 - y_1
+    numerator_a = x_4_x_3 * y_1_y_3 - y_4_y_3 * x_1_x_3
+    numerator_b = x_2_x_1 * y_1_y_3 - y_2_y_1 * x_1_x_3
+    denominator = y_4_y_3 * x_2_x_1 - x_4_x_3 * y_2_y_1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u_a = numerator_a / denominator
+        u_b = numerator_b / denominator
+    intersect = (u_a >= 0) & (u_a <= 1) & (u_b >= 0) & (u_b <= 1)
+    xy = np.stack([x_1 + x_2_x_1 * u_a, y_1 + y_2_y_1 * u_a], axis=-1)
+    return xy, intersect
 
 
 def _dominant_wavelength_locus(xy, xy_n, locus_wavelengths, locus_xy):

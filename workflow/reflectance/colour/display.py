@@ -62,6 +62,7 @@ __all__ = [
     "GAMUT_CLIP_METHODS",
     "gamut_clip",
     "encode",
+    "decode_8bit",
     "XYZ_to_display",
     "fresnel_XYZ_rgb",
     "display_tag",
@@ -608,6 +609,27 @@ def encode(RGB_linear, space="sRGB"):
     if space == "sRGB":
         return _eotf_inverse_sRGB(RGB)
     return _eotf_inverse_BT1886(RGB, L_B=0.0, L_W=1.0)
+
+
+def decode_8bit(codes, space="sRGB"):
+    """The linear light of 8-bit display codes (integers 0-255, any shape): the display's EOTF,
+    the inverse of :func:`encode`, read from colour-science's values for the 256 codes
+    (:func:`reflectance.colour.tables.transfer_decoding_8bit`: ``colour.cctf_decoding(codes / 255,
+    function="sRGB")``, or ``colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1)`` for
+    'SMPTE-C'), so without importing colour-science.
+
+    Examples
+    --------
+    >>> decode_8bit([0, 255], "sRGB").tolist()
+    [0.0, 1.0]
+    """
+    display_space(space)
+    table = tables.transfer_decoding_8bit("sRGB" if space == "sRGB" else "BT.1886")
+    codes = np.asarray(codes)
+    index = codes.astype(np.intp)
+    if np.any(index != codes) or np.any((index < 0) | (index > 255)):
+        raise ValueError("codes: expected integers 0-255")
+    return table[index]
 
 
 def _spow(a, p):

@@ -3,8 +3,8 @@
 Importing colour-science takes seconds; the colour path needs only a few of its tables: the CIE
 standard observers' colour matching functions, the CIE illuminants' SPDs (both on their own
 tabulation and aligned to a caller's wavelength grid), the names colour-science knows them by, the
-primaries of the display colourspaces, the chromatic adaptation matrices and (for the config
-check) the Munsell value and luminance factor of a notation. Each is computed by
+primaries of the display colourspaces, the chromatic adaptation matrices, the display transfer
+functions' decoding of the 256 8-bit codes and (for the config check) the Munsell value and luminance factor of a notation. Each is computed by
 colour-science itself on first use and stored as a ``.npy`` (or ``.json``) file in a small cache,
 
     ``$REFLECTANCE_CACHE`` or ``${XDG_CACHE_HOME:-~/.cache}/reflectance``,
@@ -46,6 +46,7 @@ __all__ = [
     "rgb_colourspace_matrix",
     "chromatic_adaptation_matrix",
     "munsell_value_and_Y",
+    "transfer_decoding_8bit",
     "forget",
 ]
 
@@ -288,6 +289,24 @@ def chromatic_adaptation_matrix(transform):
     )
 
 
+@functools.lru_cache(maxsize=None)
+def transfer_decoding_8bit(function):
+    """The 256 linear values of the 8-bit codes ``0..255`` decoded by colour-science:
+    ``colour.cctf_decoding(codes / 255, function="sRGB")`` for ``"sRGB"`` (IEC 61966-2-1 EOTF),
+    ``colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1)`` for ``"BT.1886"``. Indexing it
+    with a code gives the very float colour-science gives for that code."""
+    def compute():
+        colour = _colour()
+        V = np.arange(256) / 255
+        if function == "sRGB":
+            return colour.cctf_decoding(V, function="sRGB")
+        return colour.models.eotf_BT1886(V, L_B=0, L_W=1)
+
+    if function not in ("sRGB", "BT.1886"):
+        raise ValueError(f"transfer function {function!r}: known are 'sRGB', 'BT.1886'")
+    return _array("transfer-decoding-8bit", [function], compute, 1)
+
+
 # -- Munsell notations ---------------------------------------------------------------------------
 
 @functools.lru_cache(maxsize=None)
@@ -323,5 +342,6 @@ def munsell_value_and_Y(notation):
 def forget():
     """Forget the tables held in this process's memory (the cache files stay); for tests."""
     for function in (_colour_science_version, _names, cmfs_tabulated, illuminant_tabulated,
-                     rgb_colourspace_matrix, chromatic_adaptation_matrix, munsell_value_and_Y):
+                     rgb_colourspace_matrix, chromatic_adaptation_matrix, munsell_value_and_Y,
+                     transfer_decoding_8bit):
         function.cache_clear()

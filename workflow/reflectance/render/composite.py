@@ -138,6 +138,21 @@ def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, displ
     return stats
 
 
+def _erode(mask):
+    """A 2-D boolean mask less its rim: a pixel stays if it and its four neighbours are set, with
+    nothing set outside the image (``scipy.ndimage.binary_erosion`` with its default cross and
+    ``border_value=0``)."""
+    mask = np.asarray(mask, dtype=bool)
+    out = mask.copy()
+    out[1:] &= mask[:-1]
+    out[:-1] &= mask[1:]
+    out[:, 1:] &= mask[:, :-1]
+    out[:, :-1] &= mask[:, 1:]
+    out[[0, -1]] = False
+    out[:, [0, -1]] = False
+    return out
+
+
 def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
     """How an object reads in its display image: visibility, lightness range, highlight colour.
 
@@ -154,20 +169,17 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
         ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
         channel at 255 (NaN if none); ``clipped``: fraction of object pixels with a channel at 255.
     """
-    import colour
-    from scipy import ndimage
-
-    from reflectance.colour.display import display_space
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy
+    from reflectance.colour.display import decode_8bit, display_space
 
     ds = display_space(space)
-    on = ndimage.binary_erosion(np.asarray(XYZ)[..., 1] > 0)
+    on = _erode(np.asarray(XYZ)[..., 1] > 0)
     codes = np.round(np.asarray(encoded)[on] * 255)
-    if space == "sRGB":
-        linear = colour.cctf_decoding(codes / 255, function="sRGB")
-    else:
-        linear = colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1)
-    white = colour.XYZ_to_xy(ds.whitepoint_XYZ)
-    Lab = colour.XYZ_to_Lab(linear @ ds.matrix_RGB_to_XYZ.T, white)
+    # the display's EOTF and CIELAB as colour-science computes them, to the bit (colour's values
+    # for the 256 codes; colorimetry's XYZ_to_xy and XYZ_to_Lab), without importing it
+    linear = decode_8bit(codes, space)
+    white = XYZ_to_xy(ds.whitepoint_XYZ)
+    Lab = XYZ_to_Lab(linear @ ds.matrix_RGB_to_XYZ.T, white)
     L, C = Lab[:, 0], np.hypot(Lab[:, 1], Lab[:, 2])
     highlight = L >= np.percentile(L, highlight_percentile)
     unclipped = codes.max(axis=-1) < 255

@@ -95,6 +95,10 @@ class RenderResult:
     refined : ndarray of bool, shape (height, width), or None
         The pixels sampled again at N x N (:mod:`reflectance.render.adaptive`); None when the
         scene's adaptive supersampling is off.
+    display : tuple or None
+        ``(encoded RGB, exposure scale)`` as :func:`render_to_files` wrote them (what
+        :func:`display_image` gives for the result), so that a figure need not compute them
+        again; None for a result not written by it.
     """
 
     XYZ: np.ndarray
@@ -103,6 +107,7 @@ class RenderResult:
     stats: dict
     scene: object = field(repr=False)
     refined: np.ndarray | None = field(default=None, repr=False)
+    display: tuple | None = field(default=None, repr=False)
 
 
 #: images of at most this many samples are traced in one pass (every figure of the workflow is)
@@ -540,7 +545,8 @@ def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposu
     the sRGB chunk, or an ICC profile for SMPTE-C). The RGB EXR holds
     :func:`display_linear_RGB` with channels R, G, B and the display's ``chromaticities`` (the
     same header attributes). ``exposure`` overrides the automatic exposure (a factor on XYZ).
-    Every image is computed before any file is written.
+    Every image is computed before any file is written. Returns the display image and its
+    exposure scale (:func:`display_image`).
     """
     from reflectance.colour.display import display_tag
     from reflectance.io.images import write_exr_RGB
@@ -570,6 +576,7 @@ def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposu
             write_exr_RGB(tmp["rgb"], linear, tag, attributes)
         if "png" in tmp:
             write_png(tmp["png"], rgb, bit_depth=scene.display.png_bit_depth, tag=tag)
+    return rgb, scale
 
 
 def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=None):
@@ -643,11 +650,12 @@ def render_to_files(scene, scene_path, exr_path, png_path=None, components=False
     the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
-    rendered again alone with ``reflectance render``. ``traced``: as in :func:`render`.
+    rendered again alone with ``reflectance render``. ``traced``: as in :func:`render`. The
+    result keeps the display image written (:attr:`RenderResult.display`).
     """
     from reflectance.render.scene import write_scene_file
 
     write_scene_file(scene, scene_path)
     result = render(scene, components=components, traced=traced)
-    write_render(result, exr_path, png_path, rgb_exr_path)
+    result.display = write_render(result, exr_path, png_path, rgb_exr_path)
     return result
