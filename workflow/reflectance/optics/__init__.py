@@ -73,6 +73,8 @@ _EXPORTS = {
     "reflectance_from_munsell": "spectra",
     "format_spectrum_csv": "spectra",
     "write_spectrum_csv": "spectra",
+    "write_spectrum_csvs": "spectra",
+    "spectra_by_material": "spectra",
     "read_spectrum_csv": "spectra",
     "sources_table": "spectra",
     "write_sources_csv": "spectra",

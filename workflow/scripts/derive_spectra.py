@@ -1,0 +1,26 @@
+"""Rule derive_spectra: every Munsell material's notation -> reflectance spectra/<material>.csv.
+
+One job for all of them imports colour-science once, not once per material. Every spectrum is
+made before any is written, so a material that fails (named in the log) leaves every committed
+file as it was.
+"""
+
+from pathlib import Path
+
+from reflectance.scripting import script_log
+from reflectance.optics.spectra import (reflectance_from_munsell, spectra_by_material,
+                                        write_spectrum_csvs)
+
+
+def derive(entry):
+    return reflectance_from_munsell(entry["notation"], method=entry.get("recovery", "Meng 2015"))
+
+
+with script_log(snakemake) as log:
+    entries = snakemake.params.entries
+    tables = spectra_by_material(entries, derive)
+    write_spectrum_csvs({path: tables[Path(path).stem] for path in snakemake.output})
+    for material, entry in entries.items():
+        reflectance = tables[material]["reflectance"]
+        log.info("%s: Munsell %s, %s, reflectance %.4f-%.4f", material, entry["notation"],
+                 entry.get("recovery", "Meng 2015"), reflectance.min(), reflectance.max())
