@@ -91,6 +91,27 @@ def test_copper_sphere_matches_mitsuba_per_pixel(root):
     assert dE.mean() < 0.15 and np.percentile(dE, 95) < 0.6
 
 
+@needs_mitsuba
+def test_a_scene_loaded_once_renders_what_a_fresh_load_renders(root, monkeypatch):
+    """mitsuba_renderer loads the scene once for all its renders (the bench's ladder), and each
+    render is the image of the scene loaded anew at its spp and seed, bit for bit (Mitsuba's
+    sampler fixes its base seed at load: a render that ignored it would differ)."""
+    import mitsuba as mi
+
+    from reflectance.render.crosscheck import mitsuba_renderer
+
+    scene = sphere_scene(root, COPPER)
+    fresh = {(spp, seed): render_mitsuba(scene, spp, seed, variant="scalar_spectral")[0]
+             for spp, seed in ((4, 1), (16, 2))}
+    loads, load_dict = [], mi.load_dict
+    monkeypatch.setattr(mi, "load_dict", lambda d: loads.append(d["type"]) or load_dict(d))
+    once = mitsuba_renderer(scene, "scalar_spectral")
+    for (spp, seed), image in fresh.items():
+        assert np.array_equal(once(spp, seed)[0], image)
+    assert loads.count("scene") == 1
+    assert not np.array_equal(*fresh.values())  # the two renders are not one image
+
+
 @pytest.mark.parametrize("change, named", [
     ({"convention": "paper"}, "convention 'paper'"),
     ({"shadowing": "v-cavity"}, "shadowing 'v-cavity'"),

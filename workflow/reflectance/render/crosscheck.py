@@ -4,7 +4,8 @@ Mitsuba 3 (Jakob et al. 2022) is an optional extra (``pip install .[crosscheck]`
 inside the functions that need it, and :func:`mitsuba_available` says whether it is installed.
 
 :func:`scene_to_mitsuba` translates a loaded :class:`reflectance.render.scene.Scene` into the
-dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it into CIE XYZ:
+dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it into CIE XYZ
+(:func:`mitsuba_renderer` loads it once for several renders):
 
 - geometry: the composed triangles with the same vertex normals (a binary PLY in a temporary
   folder, Mitsuba interpolates them as we do), and analytic spheres as Mitsuba ``sphere`` shapes;
@@ -59,7 +60,7 @@ from pathlib import Path
 import numpy as np
 
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
-           "render_mitsuba", "equal_error_seconds", "bench_crosscheck", "run_crosscheck",
+           "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "bench_crosscheck", "run_crosscheck",
            "format_crosscheck"]
 
 #: Mitsuba variants tried in order: the LLVM one is much faster, the scalar one needs no LLVM
@@ -264,12 +265,15 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
     return doc
 
 
-def render_mitsuba(scene, spp, seed=0, variant=None):
-    """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
+def mitsuba_renderer(scene, variant=None):
+    """Load a loaded scene into Mitsuba once; return ``render(spp, seed=0)``.
 
-    Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
-    wall seconds of ``mitsuba.render`` alone (the scene's loading and the LLVM compilation of
-    the first render of a scene are not counted; see :func:`mitsuba_variant`).
+    ``render`` gives what :func:`render_mitsuba` gives, ``(XYZ, seconds)``, for any number of
+    renders of the one loaded scene (its meshes, acceleration structure and BSDFs are built
+    once). Mitsuba's sampler takes its base seed (``seed``) and sample count when it is
+    loaded and adds the seed of ``mitsuba.render`` to that base, so each render loads a
+    sensor of its own (camera, film and sampler only) with both: the images are those of a
+    scene loaded anew with :func:`scene_to_mitsuba` at that ``spp`` and ``seed``.
     """
     import mitsuba as mi
 
@@ -278,13 +282,30 @@ def render_mitsuba(scene, spp, seed=0, variant=None):
     elif not mi.variant() or not mi.variant().endswith("spectral"):
         mitsuba_variant()
     with tempfile.TemporaryDirectory(prefix="reflectance-mitsuba-") as folder:
-        doc = scene_to_mitsuba(scene, folder, spp=spp, seed=seed)
+        doc = scene_to_mitsuba(scene, folder)
         loaded = mi.load_dict(doc)
-    t0 = time.perf_counter()
-    image = mi.render(loaded, spp=int(spp), seed=int(seed))
-    XYZ = np.array(image, dtype=np.float64)
-    seconds = time.perf_counter() - t0
-    return XYZ[..., :3], seconds
+
+    def render(spp, seed=0):
+        sensor = mi.load_dict({**doc["sensor"], "sampler": {
+            **doc["sensor"]["sampler"], "sample_count": int(spp), "seed": int(seed)}})
+        t0 = time.perf_counter()
+        image = mi.render(loaded, sensor=sensor, spp=int(spp), seed=int(seed))
+        XYZ = np.array(image, dtype=np.float64)
+        seconds = time.perf_counter() - t0
+        return XYZ[..., :3], seconds
+
+    return render
+
+
+def render_mitsuba(scene, spp, seed=0, variant=None):
+    """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
+
+    Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
+    wall seconds of ``mitsuba.render`` alone (the scene's loading and the LLVM compilation of
+    the first render of a scene are not counted; see :func:`mitsuba_variant`). Several renders
+    of one scene: :func:`mitsuba_renderer`, which loads it once.
+    """
+    return mitsuba_renderer(scene, variant)(spp, seed)
 
 
 # --------------------------------------------------------------------------------------------
@@ -369,14 +390,15 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     our_reference = render(load(reference_supersample)).XYZ
     variant = mitsuba_variant(variants)
     progress(f"cross-check: Mitsuba {variant} reference at {reference_spp} spp")
-    render_mitsuba(scene, 1, seed=0)  # compiles the kernels (LLVM) once, not timed
-    mitsuba_reference, reference_s = render_mitsuba(scene, reference_spp, seed=1)
+    mitsuba = mitsuba_renderer(scene, variant)  # the scene loaded once for every render
+    mitsuba(1, seed=0)  # compiles the kernels (LLVM) once, not timed
+    mitsuba_reference, reference_s = mitsuba(reference_spp, seed=1)
     rungs = []
     for spp in ladder_spp:
         progress(f"cross-check: Mitsuba at {spp} spp")
-        XYZ, seconds = render_mitsuba(scene, spp, seed=2)
+        XYZ, seconds = mitsuba(spp, seed=2)
         if seconds < RETIME_S:  # again with the kernel compiled: the faster of the two
-            seconds = min(seconds, render_mitsuba(scene, spp, seed=2)[1])
+            seconds = min(seconds, mitsuba(spp, seed=2)[1])
         rungs.append({"spp": int(spp), "seconds": seconds,
                       "vs_mitsuba": list(errors(XYZ, mitsuba_reference, scene)),
                       "vs_ours": list(errors(XYZ, our_reference, scene))})
