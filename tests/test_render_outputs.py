@@ -59,6 +59,35 @@ def test_progress_plain_lines_terminal_bar_and_silence():
     assert quiet.getvalue() == ""
 
 
+def test_a_worker_main_answers_run_worker(tmp_path, monkeypatch):
+    """The subprocess protocol of the bench and the cross-check: worker_main calls its function
+    with the job's keywords and a progress that run_worker passes on, and prints the value."""
+    import os
+    import textwrap
+
+    from reflectance.io.progress import run_worker
+
+    (tmp_path / "toy_worker.py").write_text(textwrap.dedent("""\
+        from reflectance.io.progress import worker_main
+
+        def job(size, name, progress):
+            progress(f"phase of {name}")
+            print("chatter that is not the answer")
+            return {"area": size * size, "name": name}
+
+        if __name__ == "__main__":
+            worker_main(job)
+        """))
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(tmp_path),
+                                                      os.environ.get("PYTHONPATH", "")]))
+    seen = []
+    assert run_worker("toy_worker", {"size": 3, "name": "x"}, seen.append) == {"area": 9,
+                                                                                "name": "x"}
+    assert seen == ["phase of x"]
+    with pytest.raises(RuntimeError, match="toy failed:(.|\n)*unexpected keyword"):
+        run_worker("toy_worker", {"size": 3, "name": "x", "colour": 1}, failure="toy failed")
+
+
 def test_render_png_alone_reports_each_phase_on_stderr(render, tmp_path, capsys):
     assert render("--png", tmp_path / "a.png") == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png"]

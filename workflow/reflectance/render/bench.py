@@ -35,13 +35,11 @@ Speed targets are measured here, never asserted in tests.
 
 from __future__ import annotations
 
-import argparse
-import json
 import resource
 import statistics
 import time
 
-from reflectance.io.progress import run_worker, worker_progress
+from reflectance.io.progress import run_worker, worker_main
 
 __all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
 
@@ -302,17 +300,5 @@ def format_report(results):
     return "\n".join(lines)
 
 
-def _worker(argv):
-    job = json.loads(argv[0])
-    result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
-                        job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
-                        job["reference_supersample"],
-                        progress=worker_progress,
-                        adaptive=job.get("adaptive"))
-    print(json.dumps(result))
-
-
 if __name__ == "__main__":  # pragma: no cover - run by run_bench in a subprocess
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--worker", nargs=1, required=True)
-    _worker(parser.parse_args().worker)
+    worker_main(bench_size)

@@ -493,19 +493,7 @@ def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
                       failure=f"cross-check at size {size} failed")
 
 
-def _worker(argv):  # pragma: no cover - run by reflectance.render.bench in a subprocess
-    import json
+if __name__ == "__main__":  # pragma: no cover - run by run_crosscheck in a subprocess
+    from reflectance.io.progress import worker_main
 
-    from reflectance.io.progress import worker_progress
-
-    job = json.loads(argv[0])
-    result = bench_crosscheck(**job, progress=worker_progress)
-    print(json.dumps(result))
-
-
-if __name__ == "__main__":  # pragma: no cover
-    import argparse
-
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--worker", nargs=1, required=True)
-    _worker(parser.parse_args().worker)
+    worker_main(bench_crosscheck)
