@@ -182,6 +182,22 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
     assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
 
 
+def test_bench_command_defaults_are_the_librarys(monkeypatch):
+    """`reflectance bench` without options passes run_bench its own defaults for the references
+    and the cross-check (the parser reads them from reflectance.render.bench)."""
+    import inspect
+
+    import reflectance.render.bench as bench
+
+    real = inspect.signature(bench.run_bench)
+    passed = {}
+    monkeypatch.setattr(bench, "run_bench", lambda *a, **k: passed.update(
+        real.bind(*a, **k).arguments) or [])
+    assert main(["bench", "--scene", "x.yaml", "--quiet"]) == 0
+    for name in ("reference_supersample", "crosscheck_size", "crosscheck_spp"):
+        assert passed[name] == real.parameters[name].default, name
+
+
 def test_linear_rgb_exr_from_a_rendered_xyz_exr_matches_the_direct_one(root, tmp_path):
     """The workflow's rule (colour.linear_rgb_exr) converts a render's XYZ EXR with its scene
     file; the result is the RGB EXR the render writes itself, to float32 rounding."""

@@ -59,9 +59,11 @@ from pathlib import Path
 
 import numpy as np
 
+from reflectance.render.bench import CROSSCHECK_SPP
+
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
-           "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "bench_crosscheck", "run_crosscheck",
-           "format_crosscheck"]
+           "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "bench_crosscheck",
+           "run_crosscheck", "format_crosscheck"]
 
 #: Mitsuba variants tried in order: the LLVM one is much faster, the scalar one needs no LLVM
 VARIANTS = ("llvm_ad_spectral", "scalar_spectral")
@@ -312,8 +314,6 @@ def render_mitsuba(scene, spp, seed=0, variant=None):
 # The cross-check of ``reflectance bench``
 # --------------------------------------------------------------------------------------------
 
-#: samples per pixel of Mitsuba's converged reference in the bench (stratified)
-REFERENCE_SPP = 1024
 #: Mitsuba's sample counts whose time and error the bench measures
 LADDER_SPP = (4, 16, 64, 256)
 #: issue 9's accuracy goal: CIEDE2000 mean and 95th percentile against a converged reference
@@ -350,7 +350,7 @@ def equal_error_seconds(error, ladder, extrapolate=False):
 
 
 def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
-                     reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                     reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
                      progress=None, variants=VARIANTS):
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
@@ -477,7 +477,7 @@ def format_crosscheck(result):
 
 
 def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
-                   reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                   reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
                    progress=None):
     """:func:`bench_crosscheck` in a fresh Python process (Mitsuba's threads and memory stay
     there); ``progress``, if given, is called with each phase. Raises RuntimeError with the
