@@ -3,7 +3,9 @@
 Mitsuba is an independent implementation (its own ray tracing, BSDFs, spectral sampling and CIE
 1931 colour matching functions), so agreement checks our geometry, light normalisation, BRDF
 and colorimetry at once. The tests with Mitsuba use its ``scalar_spectral`` variant (no LLVM
-needed) and are skipped where it is not installed; ``pip install .[test]`` brings it.
+needed) and are skipped where it is not installed; ``pip install .[test]`` brings it, so in CI
+(the environment variable CI set, as by ``.ci/run``) a missing Mitsuba fails them instead: the
+cross-check cannot silently stop running.
 
 Tolerances come from Mitsuba's noise, measured (2 December 2026) at the sample counts used: on
 the white sphere at 64 spp the image-summed chromaticity agreed to 3e-5 and the luminance to
@@ -11,6 +13,11 @@ the white sphere at 64 spp the image-summed chromaticity agreed to 3e-5 and the 
 mean / 0.52 p95 at 64 spp and 0.056 / 0.25 at 256 spp (falling as 1/sqrt(spp): Mitsuba's noise,
 not a bias); the test, at 256 spp, allows 0.15 / 0.6.
 """
+
+import os
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -20,8 +27,19 @@ from reflectance.render.crosscheck import (equal_error_seconds, mitsuba_availabl
 from reflectance.render.pipeline import pixel_difference_CIEDE2000, render
 from reflectance.render.scene import scene_from_dict
 
-needs_mitsuba = pytest.mark.skipif(not mitsuba_available(),
-                                   reason="Mitsuba 3 is not installed (pip install .[crosscheck])")
+
+
+@pytest.fixture
+def mitsuba_installed():
+    """Skip without Mitsuba, but fail in CI, whose test extra installs it (pyproject.toml)."""
+    if not mitsuba_available():
+        if os.environ.get("CI"):  # as tests/conftest.py reads it
+            pytest.fail("Mitsuba 3 is not installed, yet CI installs the test extra that brings "
+                        "it (pyproject.toml): the cross-check would silently stop running")
+        pytest.skip("Mitsuba 3 is not installed (pip install .[crosscheck])")
+
+
+needs_mitsuba = pytest.mark.usefixtures("mitsuba_installed")
 
 SUN = (np.array([0.3, -0.6, 0.7]) / np.linalg.norm([0.3, -0.6, 0.7])).tolist()
 COPPER = {"model": "CookTorrance1982", "convention": "physical", "shadowing": "smith",
@@ -91,6 +109,27 @@ def test_copper_sphere_matches_mitsuba_per_pixel(root):
     assert dE.mean() < 0.15 and np.percentile(dE, 95) < 0.6
 
 
+@needs_mitsuba
+def test_a_scene_loaded_once_renders_what_a_fresh_load_renders(root, monkeypatch):
+    """mitsuba_renderer loads the scene once for all its renders (the bench's ladder), and each
+    render is the image of the scene loaded anew at its spp and seed, bit for bit (Mitsuba's
+    sampler fixes its base seed at load: a render that ignored it would differ)."""
+    import mitsuba as mi
+
+    from reflectance.render.crosscheck import mitsuba_renderer
+
+    scene = sphere_scene(root, COPPER)
+    fresh = {(spp, seed): render_mitsuba(scene, spp, seed, variant="scalar_spectral")[0]
+             for spp, seed in ((4, 1), (16, 2))}
+    loads, load_dict = [], mi.load_dict
+    monkeypatch.setattr(mi, "load_dict", lambda d: loads.append(d["type"]) or load_dict(d))
+    once = mitsuba_renderer(scene, "scalar_spectral")
+    for (spp, seed), image in fresh.items():
+        assert np.array_equal(once(spp, seed)[0], image)
+    assert loads.count("scene") == 1
+    assert not np.array_equal(*fresh.values())  # the two renders are not one image
+
+
 @pytest.mark.parametrize("change, named", [
     ({"convention": "paper"}, "convention 'paper'"),
     ({"shadowing": "v-cavity"}, "shadowing 'v-cavity'"),
@@ -119,6 +158,21 @@ def test_equal_error_seconds_interpolates_a_power_law_exactly():
     # along the power law through the two slowest rungs: exact for a power law
     assert equal_error_seconds(0.01, ladder, extrapolate=True) == pytest.approx(1e4, rel=1e-9)
     assert equal_error_seconds(10.0, ladder, extrapolate=True) is None
+
+
+def test_without_mitsuba_its_tests_skip_outside_ci_and_fail_in_ci():
+    """One Mitsuba test run by pytest in a fresh process where ``import mitsuba`` finds nothing
+    (``sys.modules["mitsuba"] = None``), with and without CI in the environment."""
+    hide = "import sys; sys.modules['mitsuba'] = None; import pytest; sys.exit(pytest.main())"
+    node = (f"{Path(__file__).name}::"
+            "test_white_lambertian_sphere_matches_mitsuba_in_chromaticity_and_luminance")
+    for ci, status, outcome in (("", 0, "1 skipped"), ("true", 1, "1 error")):
+        env = {k: v for k, v in os.environ.items() if k != "CI"} | ({"CI": ci} if ci else {})
+        run = subprocess.run([sys.executable, "-c", hide, node, "-q", "-rs",
+                              "-p", "no:cacheprovider"], cwd=Path(__file__).parent, env=env,
+                             capture_output=True, text=True)
+        assert run.returncode == status and outcome in run.stdout, run.stdout[-2000:]
+        assert "Mitsuba 3 is not installed" in run.stdout, run.stdout[-2000:]
 
 
 def test_bench_without_mitsuba_prints_one_skip_line(root, capsys, monkeypatch):

@@ -327,25 +327,38 @@ def fig7_published(tmp_path_factory):
     return run_fig7(tmp_path_factory.mktemp("ct82_fig7_published"), "published", (96, 128, 2))
 
 
-def shown_lab(png, exr):
-    """(8-bit codes, CIELAB) of the object's pixels: Y > 0 in the EXR less a one-pixel rim."""
-    from PIL import Image
+def object_lab(codes, XYZ):
+    """(8-bit codes, CIELAB) of the object's pixels of an image of 8-bit sRGB ``codes``
+    (H, W, 3): Y > 0 in the rendered ``XYZ`` less a one-pixel rim."""
     from scipy import ndimage
+
+    mask = ndimage.binary_erosion(np.asarray(XYZ)[..., 1] > 0)
+    codes = np.asarray(codes, dtype=float)[mask]
+    sRGB = colour.RGB_COLOURSPACES["sRGB"]
+    shown = colour.RGB_to_XYZ(colour.cctf_decoding(codes / 255, function="sRGB"), sRGB,
+                              illuminant=sRGB.whitepoint)
+    return codes, colour.XYZ_to_Lab(shown, sRGB.whitepoint)
+
+
+def shown_lab(png, exr):
+    """:func:`object_lab` of a written PNG and its EXR."""
+    from PIL import Image
 
     from reflectance.io.images import read_exr
 
-    mask = ndimage.binary_erosion(read_exr(exr)[0][..., 1] > 0)
-    codes = np.asarray(Image.open(png).convert("RGB"), dtype=float)[mask]
-    sRGB = colour.RGB_COLOURSPACES["sRGB"]
-    XYZ = colour.RGB_to_XYZ(colour.cctf_decoding(codes / 255, function="sRGB"), sRGB,
-                            illuminant=sRGB.whitepoint)
-    return codes, colour.XYZ_to_Lab(XYZ, sRGB.whitepoint)
+    return object_lab(np.asarray(Image.open(png).convert("RGB")), read_exr(exr)[0])
+
+
+def form_and_highlight(codes, Lab):
+    """Issue 13's acceptance numbers: the share of the object at or above 20/255 in some
+    channel, and the L* span between its 10th and 99th percentile (to pass: 0.9 and 25)."""
+    visible = (codes.max(axis=-1) >= 20).mean()
+    return visible, np.percentile(Lab[:, 0], 99) - np.percentile(Lab[:, 0], 10)
 
 
 def assert_form_and_highlight_read(png, exr):
     codes, Lab = shown_lab(png, exr)
-    visible = (codes.max(axis=-1) >= 20).mean()
-    span = np.percentile(Lab[:, 0], 99) - np.percentile(Lab[:, 0], 10)
+    visible, span = form_and_highlight(codes, Lab)
     assert visible >= 0.9, f"{png}: only {visible:.1%} of the object at or above 20/255"
     assert span >= 25, f"{png}: L* spans only {span:.1f} between its 10th and 99th percentile"
     return codes, Lab
@@ -396,27 +409,28 @@ def test_fig7_default_every_vase_reads(fig7_published, vase):
 
 
 def test_fig7_default_vase_factors_are_needed(fig7_published):
-    """The per-vase factors are departures the acceptance needs: shown at their row's exposure
-    (the factor divided out), obsidian and lunar dust fail it as issue 13 measured."""
+    """The per-vase factors are departures the acceptance needs: each factored vase passes it
+    as shown (its PNG) and fails it at its row's exposure (the factor divided out, the same
+    render encoded again), both measured by one routine (as issue 13 measured: obsidian below
+    90 % at or above 20/255, lunar dust below an L* span of 25)."""
     from types import SimpleNamespace as Result
 
     from reflectance.io.images import read_exr
-    from reflectance.render.composite import appearance
     from reflectance.render.pipeline import display_image
     from reflectance.render.scene import load_scene
 
     table = pd.read_csv(fig7_published.csv).set_index("vase")
     factors = CT82["fig7"]["vase_exposure"]
-    assert set(factors) == {"Obsidian", "LunarDust"}
-    k = {v: VASES.index(v) for v in factors}
-    for vase, i in k.items():
-        result = Result(XYZ=read_exr(fig7_published.exrs[i])[0].astype(float),
-                        scene=load_scene(fig7_published.scenes[i]))
-        row = table.loc[vase, "vase_exposure_scale"] / factors[vase]
-        shown = appearance(display_image(result, row)[0], result.XYZ)
-        k[vase] = shown
-    assert k["Obsidian"]["visible"] < 0.9, k["Obsidian"]
-    assert k["LunarDust"]["L99"] - k["LunarDust"]["L10"] < 25, k["LunarDust"]
+    assert factors, "no per-vase factor: nothing to show needed"
+    for vase, factor in factors.items():
+        i = VASES.index(vase)
+        XYZ = read_exr(fig7_published.exrs[i])[0].astype(float)
+        at_row = display_image(Result(XYZ=XYZ, scene=load_scene(fig7_published.scenes[i])),
+                               table.loc[vase, "vase_exposure_scale"] / factor)[0]
+        shown = form_and_highlight(*shown_lab(fig7_published.pngs[i], fig7_published.exrs[i]))
+        without = form_and_highlight(*object_lab(np.round(at_row * 255), XYZ))
+        assert shown[0] >= 0.9 and shown[1] >= 25, (vase, shown)
+        assert without[0] < 0.9 or without[1] < 25, (vase, without)
 
 
 def test_fig7_default_rows_keep_their_materials_lightness_order(fig7_published):
@@ -431,7 +445,6 @@ def test_fig7_default_rows_keep_their_materials_lightness_order(fig7_published):
         rows = table[table.group == group]
         row_scale = rows.vase_exposure_scale / [factors.get(v, 1.0) for v in rows.index]
         assert np.allclose(row_scale, row_scale.iloc[0], rtol=1e-5), group  # CSV: 6 digits
-    assert table.loc["Obsidian", "vase_exposure_scale"] > table.loc["Rubber", "vase_exposure_scale"]
     medians = {v: np.median(shown_lab(fig7_published.pngs[VASES.index(v)],
                                       fig7_published.exrs[VASES.index(v)])[1][:, 0])
                for v in ("Obsidian", "Rubber", "LunarDust")}

@@ -59,6 +59,35 @@ def test_progress_plain_lines_terminal_bar_and_silence():
     assert quiet.getvalue() == ""
 
 
+def test_a_worker_main_answers_run_worker(tmp_path, monkeypatch):
+    """The subprocess protocol of the bench and the cross-check: worker_main calls its function
+    with the job's keywords and a progress that run_worker passes on, and prints the value."""
+    import os
+    import textwrap
+
+    from reflectance.io.progress import run_worker
+
+    (tmp_path / "toy_worker.py").write_text(textwrap.dedent("""\
+        from reflectance.io.progress import worker_main
+
+        def job(size, name, progress):
+            progress(f"phase of {name}")
+            print("chatter that is not the answer")
+            return {"area": size * size, "name": name}
+
+        if __name__ == "__main__":
+            worker_main(job)
+        """))
+    monkeypatch.setenv("PYTHONPATH", os.pathsep.join([str(tmp_path),
+                                                      os.environ.get("PYTHONPATH", "")]))
+    seen = []
+    assert run_worker("toy_worker", {"size": 3, "name": "x"}, seen.append) == {"area": 9,
+                                                                                "name": "x"}
+    assert seen == ["phase of x"]
+    with pytest.raises(RuntimeError, match="toy failed:(.|\n)*unexpected keyword"):
+        run_worker("toy_worker", {"size": 3, "name": "x", "colour": 1}, failure="toy failed")
+
+
 def test_render_png_alone_reports_each_phase_on_stderr(render, tmp_path, capsys):
     assert render("--png", tmp_path / "a.png") == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png"]
@@ -151,6 +180,22 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
     assert capsys.readouterr().err == ""
     assert main(["bench", "--sizes", "8", "--scene", "x.yaml"]) == 0
     assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
+
+
+def test_bench_command_defaults_are_the_librarys(monkeypatch):
+    """`reflectance bench` without options passes run_bench its own defaults for the references
+    and the cross-check (the parser reads them from reflectance.render.bench)."""
+    import inspect
+
+    import reflectance.render.bench as bench
+
+    real = inspect.signature(bench.run_bench)
+    passed = {}
+    monkeypatch.setattr(bench, "run_bench", lambda *a, **k: passed.update(
+        real.bind(*a, **k).arguments) or [])
+    assert main(["bench", "--scene", "x.yaml", "--quiet"]) == 0
+    for name in ("reference_supersample", "crosscheck_size", "crosscheck_spp"):
+        assert passed[name] == real.parameters[name].default, name
 
 
 def test_linear_rgb_exr_from_a_rendered_xyz_exr_matches_the_direct_one(root, tmp_path):

@@ -575,6 +575,10 @@ def _run_render(args):
 # -- reflectance bench --------------------------------------------------------------------------
 
 def _add_bench(sub):
+    # the bench's defaults (reflectance.render.bench imports nothing heavy at import)
+    from reflectance.render.bench import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
+                                          REFERENCE_MAX_SAMPLES, REFERENCE_SUPERSAMPLE)
+
     p = sub.add_parser(
         "bench", help=COMMAND_HELP["bench"],
         description="Render a scene (default: the copper vase of Cook & Torrance 1982 Fig. 6b) "
@@ -601,17 +605,23 @@ def _add_bench(sub):
                    help="wavelength steps compared at --grid-size, 0 < NM <= 100 (default 5 1)")
     p.add_argument("--grid-size", type=PIXELS, default=512,
                    help="size of the grid comparison (1 to 16384)")
-    p.add_argument("--reference-supersample", type=_whole(0, 64), default=16,
+    p.add_argument("--reference-supersample", type=_whole(0, 64), default=REFERENCE_SUPERSAMPLE,
                    help="n x n samples per pixel of the converged reference, no adaptive "
-                        "refinement (0: skip; skipped where it would exceed 2**26 samples)")
+                        f"refinement (0: skip; skipped where it would exceed "
+                        f"2**{REFERENCE_MAX_SAMPLES.bit_length() - 1} samples; default "
+                        f"{REFERENCE_SUPERSAMPLE})")
     p.add_argument("--adaptive", choices=("scene", "on", "off"), default="scene",
                    help="adaptive supersampling: as the scene's camera.adaptive says (default), "
                         "or switched on or off")
-    p.add_argument("--crosscheck-size", type=_whole(0, 16384), default=512, metavar="N",
+    p.add_argument("--crosscheck-size", type=_whole(0, 16384), default=CROSSCHECK_SIZE,
+                   metavar="N",
                    help="with Mitsuba 3 installed (pip install .[crosscheck]), the size of the "
-                        "path-tracer cross-check, if among --sizes (0: skip; default 512)")
-    p.add_argument("--crosscheck-spp", type=_whole(1, 65536), default=1024, metavar="N",
-                   help="samples per pixel of Mitsuba's converged reference (default 1024)")
+                        f"path-tracer cross-check, if among --sizes (0: skip; default "
+                        f"{CROSSCHECK_SIZE})")
+    p.add_argument("--crosscheck-spp", type=_whole(1, 65536), default=CROSSCHECK_SPP,
+                   metavar="N",
+                   help=f"samples per pixel of Mitsuba's converged reference (default "
+                        f"{CROSSCHECK_SPP})")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",

@@ -38,8 +38,11 @@ from __future__ import annotations
 
 import numpy as np
 
-# reflectance.geometry.shapes (pyvista, scipy) is imported by the functions that build meshes:
-# config.py reads watch()'s keywords at every parse of the workflow without loading them.
+import reflectance.geometry as geometry
+
+# geometry.shapes (pyvista, scipy) is loaded on first use by the package's lazy attach
+# (reflectance.lazy), when a function builds a mesh: config.py reads watch()'s keywords at every
+# parse of the workflow without loading it.
 
 __all__ = ["WATCH_PARTS", "SEVEN_SEGMENT_DIGITS", "watch"]
 
@@ -139,8 +142,6 @@ def _sweep(path, path_normal, binormal, u, rho, z, n_rho, n_z, part):
     normals are exact wherever the offset does not fold (rho > -path radius of curvature).
     Grid rows follow the profile (v = arc-length fraction), columns the path (u).
     """
-    from reflectance.geometry.shapes import grid_mesh
-
     rho, z = np.asarray(rho, float), np.asarray(z, float)
     n_rho, n_z = np.asarray(n_rho, float), np.asarray(n_z, float)
     points = (path[None] + rho[:, None, None] * path_normal[None]
@@ -150,7 +151,7 @@ def _sweep(path, path_normal, binormal, u, rho, z, n_rho, n_z, part):
     v = np.concatenate([[0.0], np.cumsum(step)])
     v = v / v[-1] if v[-1] > 0 else np.linspace(0.0, 1.0, len(rho))
     uv = np.stack(np.broadcast_arrays(u[None, :], v[:, None]), -1)
-    return grid_mesh(points, normals, uv, part)
+    return geometry.shapes.grid_mesh(points, normals, uv, part)
 
 
 def _cap(boundary, normal, e1, e2, n_rings, part):
@@ -158,8 +159,6 @@ def _cap(boundary, normal, e1, e2, n_rings, part):
 
     uv is the planar map onto the outline's extent along e1 and e2.
     """
-    from reflectance.geometry.shapes import grid_mesh
-
     centre = 0.5 * (boundary.min(axis=0) + boundary.max(axis=0))
     s = np.linspace(0.0, 1.0, n_rings + 1)
     points = centre + s[:, None, None] * (boundary - centre)[None]
@@ -168,7 +167,7 @@ def _cap(boundary, normal, e1, e2, n_rings, part):
     uv = np.stack([0.5 + 0.5 * (d @ e1) / np.abs(a).max(), 0.5 + 0.5 * (d @ e2) / np.abs(b).max()],
                   -1)
     normals = np.broadcast_to(normal, points.shape)
-    return grid_mesh(points, normals, np.clip(uv, 0.0, 1.0), part)
+    return geometry.shapes.grid_mesh(points, normals, np.clip(uv, 0.0, 1.0), part)
 
 
 def _arc(centre, radius, start, stop, n):
@@ -192,8 +191,6 @@ def _slab(half_x, half_y, corner_radius, height, edge_radius, inset, border, top
     when ``inset`` > ``edge_radius``, runs inwards over a flat ring of the top; these and the
     flat bottom get part ``border``, the flat top inside the inset outline part ``top``.
     """
-    from reflectance.geometry.shapes import merge_meshes
-
     P2, N2, u = _rounded_rectangle(half_x, half_y, corner_radius, n_quarter, spacing)
     path = np.column_stack([P2, np.zeros(len(P2))])
     normal = np.column_stack([N2, np.zeros(len(N2))])
@@ -210,19 +207,18 @@ def _slab(half_x, half_y, corner_radius, height, edge_radius, inset, border, top
     top_outline = path - max(inset, r) * normal + height * _UP
     pieces.append(_cap(top_outline, _UP, np.eye(3)[0], np.eye(3)[1], n_rings, top))
     pieces.append(_cap(path, -_UP, np.eye(3)[0], np.eye(3)[1], n_rings, border))
-    return merge_meshes(pieces)
+    return geometry.shapes.merge_meshes(pieces)
 
 
 def _polygon(vertices, z, uv_box, part):
     """Flat convex polygon (k, 2) at height z facing +z, fanned from its first vertex."""
-    from reflectance.geometry.shapes import triangle_mesh
-
     k = len(vertices)
     points = np.column_stack([vertices, np.full(k, z)])
     (x0, y0), (x1, y1) = uv_box
     uv = np.column_stack([(vertices[:, 0] - x0) / (x1 - x0), (vertices[:, 1] - y0) / (y1 - y0)])
     tris = np.column_stack([np.zeros(k - 2, np.int64), np.arange(1, k - 1), np.arange(2, k)])
-    return triangle_mesh(points, np.tile(_UP, (k, 1)), np.clip(uv, 0.0, 1.0), tris, part)
+    return geometry.shapes.triangle_mesh(points, np.tile(_UP, (k, 1)), np.clip(uv, 0.0, 1.0),
+                                         tris, part)
 
 
 # --------------------------------------------------------------------------------------------
@@ -290,9 +286,7 @@ def _display(text, digit_height, thickness, slant_deg, z, box, window, part):
 
 def _positive(name, value):
     """geometry's check, with the message naming the watch's parameter."""
-    from reflectance.geometry.shapes import check_positive as _check_positive
-
-    return _check_positive(value, f"watch: {name}")
+    return geometry.shapes.check_positive(value, f"watch: {name}")
 
 
 def _pair(name, value):
@@ -403,8 +397,6 @@ def watch(*, case_size=(3.2, 3.6, 0.7), case_corner_radius=0.8, case_edge_radius
     >>> mesh.is_all_triangles, sorted(set(mesh.cell_data["part"].tolist())) == list(range(7))
     (True, True)
     """
-    from reflectance.geometry.shapes import merge_meshes, place
-
     cx, cy, cz = (_positive(f"case_size[{i}]", v) for i, v in enumerate(_tuple3(case_size)))
     c_corner = _positive("case_corner_radius", case_corner_radius)
     c_edge = _positive("case_edge_radius", case_edge_radius)
@@ -471,14 +463,12 @@ def watch(*, case_size=(3.2, 3.6, 0.7), case_corner_radius=0.8, case_edge_radius
     side = _bracelet_side(R, 0.8 * 0.5 * cy, band_height, links_per_side, (lx, ly, lz), gap,
                           l_corner, l_edge, border, (sx, sz), depth, col_gap, quality)
     turn = np.diag([-1.0, -1.0, 1.0])  # the -y side: the same band turned half about z
-    parts += [side, place(side, rotation=turn)]
-    return merge_meshes(parts)
+    parts += [side, geometry.shapes.place(side, rotation=turn)]
+    return geometry.shapes.merge_meshes(parts)
 
 
 def _case(size, corner_radius, edge_radius, button_radius, button_length, quality):
     """The case (a rounded slab, flat inside its top edge) and its push button on +x."""
-    from reflectance.geometry.shapes import place
-
     cx, cy, cz = size
     case = WATCH_PARTS["case"]
     body = _slab(0.5 * cx, 0.5 * cy, corner_radius, cz, edge_radius, edge_radius, case, case,
@@ -488,8 +478,8 @@ def _case(size, corner_radius, edge_radius, button_radius, button_length, qualit
                    button_length + 0.5 * button_radius,
                    min(0.5 * button_radius, 0.5 * button_length), 0.0, case, case, **quality)
     to_x = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])  # local z -> +x
-    return [body, place(button, (0.5 * cx - 0.5 * button_radius, 0.0, 0.5 * cz),
-                        rotation=to_x)]
+    return [body, geometry.shapes.place(button, (0.5 * cx - 0.5 * button_radius, 0.0, 0.5 * cz),
+                                        rotation=to_x)]
 
 
 def _dial(case_top, window, window_corner, bezel_width, bezel_height, display, digit_height,
@@ -528,8 +518,6 @@ def _bracelet_side(radius, y_enter, height, n_links, link_size, gap, corner, edg
     Its top surface is the cylinder of ``radius`` about the axis through (0, 0, zc), at
     ``height`` where it enters the case (y = ``y_enter``).
     """
-    from reflectance.geometry.shapes import merge_meshes, place
-
     lx, ly, lz = link_size
     sx, sz = strip_size
     phi_enter = np.arcsin(y_enter / radius)
@@ -545,8 +533,8 @@ def _bracelet_side(radius, y_enter, height, n_links, link_size, gap, corner, edg
     for k in range(n_links):
         rot = _rotation_x(phi_enter + (k + 0.5) * dphi)
         for x in (-x_link, x_link):
-            parts.append(place(link, centre + (radius - lz) * (rot @ _UP) + x * ex,
-                               rotation=rot))
+            at = centre + (radius - lz) * (rot @ _UP) + x * ex
+            parts.append(geometry.shapes.place(link, at, rotation=rot))
     # the steel strip: a rounded-rectangle cross-section revolved about the wrist axis, from
     # inside the case to the end of the last link
     phi_start = np.arcsin(0.5 * y_enter / radius)
@@ -565,4 +553,4 @@ def _bracelet_side(radius, y_enter, height, n_links, link_size, gap, corner, edg
         outline = centre + (r_mid + Q2[:, :1]) * er + Q2[:, 1:] * ex
         parts.append(_cap(outline, sign * ephi, ex, er, _samples(0.5 * sx, quality["spacing"]),
                           inner))
-    return merge_meshes(parts)
+    return geometry.shapes.merge_meshes(parts)

@@ -33,6 +33,7 @@ _EXPORTS = {
     "icc_profile_v2": "images",
     "read_exr": "images",
     "Progress": "progress",
+    "worker_main": "progress",
     "write_provenance": "provenance",
     "project_file": "paths",
     "check_name": "paths",

@@ -241,15 +241,15 @@ def trim_to_content(img, margin):
     return out
 
 
-def save_plotter(plotter, path, tag=None, margin=None):
+def save_plotter(plotter, path, margin=None):
     """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer),
-    tagged with ``tag`` (a :class:`reflectance.io.images.ColourTag`), by default sRGB: VTK's
-    colours are sRGB values, written to the screen as they are. With ``margin`` (pixels), the
-    screenshot is trimmed to its content and given that margin (:func:`trim_to_content`)."""
+    tagged sRGB: VTK's colours are sRGB values, written to the screen as they are. With
+    ``margin`` (pixels), the screenshot is trimmed to its content and given that margin
+    (:func:`trim_to_content`)."""
     from reflectance.io.images import SRGB_TAG, write_png
 
     img = plotter.screenshot(return_img=True)
     plotter.close()
     if margin is not None:
         img = trim_to_content(img[..., :3], int(margin))
-    write_png(path, img[..., :3] / 255.0, bit_depth=8, tag=SRGB_TAG if tag is None else tag)
+    write_png(path, img[..., :3] / 255.0, bit_depth=8, tag=SRGB_TAG)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import sys
 
-__all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker"]
+__all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker", "worker_main"]
 
 
 class Progress:
@@ -126,3 +126,17 @@ def run_worker(module, job, progress=None, failure="worker failed"):
             errors.seek(0)
             raise RuntimeError(f"{failure}:\n{errors.read()}")
     return json.loads("".join(lines).strip().splitlines()[-1])
+
+
+def worker_main(function, argv=None):
+    """The main of a module that :func:`run_worker` runs: ``function(**job,
+    progress=worker_progress)`` for the job given as ``--worker JSON``, its value printed as
+    JSON on the last line of standard output. ``argv``: the arguments (default: the process's).
+    """
+    import argparse
+    import json
+
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--worker", required=True, metavar="JSON")
+    job = json.loads(parser.parse_args(argv).worker)
+    print(json.dumps(function(**job, progress=worker_progress)))

@@ -36,6 +36,7 @@ _EXPORTS = {
     "mitsuba_available": "crosscheck",
     "crosscheck_scene": "crosscheck",
     "scene_to_mitsuba": "crosscheck",
+    "mitsuba_renderer": "crosscheck",
     "render_mitsuba": "crosscheck",
     "common_exposure": "composite",
     "covered_rows": "composite",

@@ -35,13 +35,10 @@ Speed targets are measured here, never asserted in tests.
 
 from __future__ import annotations
 
-import argparse
-import json
 import resource
-import statistics
 import time
 
-from reflectance.io.progress import run_worker, worker_progress
+from reflectance.io.progress import run_worker, worker_main
 
 __all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
 
@@ -52,6 +49,8 @@ REFERENCE_SUPERSAMPLE = 16
 REFERENCE_MAX_SAMPLES = 1 << 26
 #: the size of the path-tracer cross-check (the issue's 512-px vase)
 CROSSCHECK_SIZE = 512
+#: samples per pixel of Mitsuba's converged reference in the cross-check (stratified)
+CROSSCHECK_SPP = 1024
 
 
 def _peak_MiB():
@@ -96,6 +95,8 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     """Measurements for one image size, in this process (see :func:`run_bench`); ``progress``, if
     given, is called with the name of each phase as it starts; ``adaptive`` as for
     :func:`load_bench_scene`."""
+    import statistics  # here, not at the top: the CLI reads this module's defaults at parse
+
     import numpy as np
 
     from reflectance.colour.colorimetry import tristimulus_weights
@@ -208,7 +209,7 @@ def crosscheck_status(results=()):
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
               reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
-              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=None):
+              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=CROSSCHECK_SPP):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
@@ -216,8 +217,8 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     (True, False; None: the scene's) switches the adaptive supersampling. With Mitsuba
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
-    pixel; default :data:`reflectance.render.crosscheck.REFERENCE_SPP`; ours at
-    ``reference_supersample``, or :data:`REFERENCE_SUPERSAMPLE` where that is 0)."""
+    pixel; ours at ``reference_supersample``, or :data:`REFERENCE_SUPERSAMPLE` where that is
+    0)."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
     for i, size in enumerate(sizes):
@@ -240,14 +241,13 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                 progress.close(f"size {size} failed", done=i)
             raise
         if size == crosscheck_size:  # the path-tracer cross-check (reflectance.render.crosscheck)
-            from reflectance.render.crosscheck import (REFERENCE_SPP, mitsuba_available,
-                                                       run_crosscheck)
+            from reflectance.render.crosscheck import mitsuba_available, run_crosscheck
 
             if mitsuba_available():
                 results[-1]["crosscheck"] = run_crosscheck(
                     scene, size, supersample, max(1, min(runs, 3)),
                     reference_supersample or REFERENCE_SUPERSAMPLE,
-                    crosscheck_spp or REFERENCE_SPP, spectra_dir=spectra_dir, progress=tell)
+                    crosscheck_spp, spectra_dir=spectra_dir, progress=tell)
     if progress is not None:
         progress.close()
     return results
@@ -302,17 +302,5 @@ def format_report(results):
     return "\n".join(lines)
 
 
-def _worker(argv):
-    job = json.loads(argv[0])
-    result = bench_size(job["scene"], job["size"], job["supersample"], job["runs"],
-                        job["brute_force_runs"], tuple(job["grids_nm"]), job["spectra_dir"],
-                        job["reference_supersample"],
-                        progress=worker_progress,
-                        adaptive=job.get("adaptive"))
-    print(json.dumps(result))
-
-
 if __name__ == "__main__":  # pragma: no cover - run by run_bench in a subprocess
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--worker", nargs=1, required=True)
-    _worker(parser.parse_args().worker)
+    worker_main(bench_size)

@@ -4,7 +4,8 @@ Mitsuba 3 (Jakob et al. 2022) is an optional extra (``pip install .[crosscheck]`
 inside the functions that need it, and :func:`mitsuba_available` says whether it is installed.
 
 :func:`scene_to_mitsuba` translates a loaded :class:`reflectance.render.scene.Scene` into the
-dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it into CIE XYZ:
+dictionary ``mitsuba.load_dict`` takes, and :func:`render_mitsuba` renders it into CIE XYZ
+(:func:`mitsuba_renderer` loads it once for several renders):
 
 - geometry: the composed triangles with the same vertex normals (a binary PLY in a temporary
   folder, Mitsuba interpolates them as we do), and analytic spheres as Mitsuba ``sphere`` shapes;
@@ -58,9 +59,11 @@ from pathlib import Path
 
 import numpy as np
 
+from reflectance.render.bench import CROSSCHECK_SPP
+
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
-           "render_mitsuba", "equal_error_seconds", "bench_crosscheck", "run_crosscheck",
-           "format_crosscheck"]
+           "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "bench_crosscheck",
+           "run_crosscheck", "format_crosscheck"]
 
 #: Mitsuba variants tried in order: the LLVM one is much faster, the scalar one needs no LLVM
 VARIANTS = ("llvm_ad_spectral", "scalar_spectral")
@@ -264,12 +267,15 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
     return doc
 
 
-def render_mitsuba(scene, spp, seed=0, variant=None):
-    """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
+def mitsuba_renderer(scene, variant=None):
+    """Load a loaded scene into Mitsuba once; return ``render(spp, seed=0)``.
 
-    Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
-    wall seconds of ``mitsuba.render`` alone (the scene's loading and the LLVM compilation of
-    the first render of a scene are not counted; see :func:`mitsuba_variant`).
+    ``render`` gives what :func:`render_mitsuba` gives, ``(XYZ, seconds)``, for any number of
+    renders of the one loaded scene (its meshes, acceleration structure and BSDFs are built
+    once). Mitsuba's sampler takes its base seed (``seed``) and sample count when it is
+    loaded and adds the seed of ``mitsuba.render`` to that base, so each render loads a
+    sensor of its own (camera, film and sampler only) with both: the images are those of a
+    scene loaded anew with :func:`scene_to_mitsuba` at that ``spp`` and ``seed``.
     """
     import mitsuba as mi
 
@@ -278,21 +284,36 @@ def render_mitsuba(scene, spp, seed=0, variant=None):
     elif not mi.variant() or not mi.variant().endswith("spectral"):
         mitsuba_variant()
     with tempfile.TemporaryDirectory(prefix="reflectance-mitsuba-") as folder:
-        doc = scene_to_mitsuba(scene, folder, spp=spp, seed=seed)
+        doc = scene_to_mitsuba(scene, folder)
         loaded = mi.load_dict(doc)
-    t0 = time.perf_counter()
-    image = mi.render(loaded, spp=int(spp), seed=int(seed))
-    XYZ = np.array(image, dtype=np.float64)
-    seconds = time.perf_counter() - t0
-    return XYZ[..., :3], seconds
+
+    def render(spp, seed=0):
+        sensor = mi.load_dict({**doc["sensor"], "sampler": {
+            **doc["sensor"]["sampler"], "sample_count": int(spp), "seed": int(seed)}})
+        t0 = time.perf_counter()
+        image = mi.render(loaded, sensor=sensor, spp=int(spp), seed=int(seed))
+        XYZ = np.array(image, dtype=np.float64)
+        seconds = time.perf_counter() - t0
+        return XYZ[..., :3], seconds
+
+    return render
+
+
+def render_mitsuba(scene, spp, seed=0, variant=None):
+    """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
+
+    Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
+    wall seconds of ``mitsuba.render`` alone (the scene's loading and the LLVM compilation of
+    the first render of a scene are not counted; see :func:`mitsuba_variant`). Several renders
+    of one scene: :func:`mitsuba_renderer`, which loads it once.
+    """
+    return mitsuba_renderer(scene, variant)(spp, seed)
 
 
 # --------------------------------------------------------------------------------------------
 # The cross-check of ``reflectance bench``
 # --------------------------------------------------------------------------------------------
 
-#: samples per pixel of Mitsuba's converged reference in the bench (stratified)
-REFERENCE_SPP = 1024
 #: Mitsuba's sample counts whose time and error the bench measures
 LADDER_SPP = (4, 16, 64, 256)
 #: issue 9's accuracy goal: CIEDE2000 mean and 95th percentile against a converged reference
@@ -329,7 +350,7 @@ def equal_error_seconds(error, ladder, extrapolate=False):
 
 
 def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
-                     reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                     reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
                      progress=None, variants=VARIANTS):
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
@@ -369,14 +390,15 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     our_reference = render(load(reference_supersample)).XYZ
     variant = mitsuba_variant(variants)
     progress(f"cross-check: Mitsuba {variant} reference at {reference_spp} spp")
-    render_mitsuba(scene, 1, seed=0)  # compiles the kernels (LLVM) once, not timed
-    mitsuba_reference, reference_s = render_mitsuba(scene, reference_spp, seed=1)
+    mitsuba = mitsuba_renderer(scene, variant)  # the scene loaded once for every render
+    mitsuba(1, seed=0)  # compiles the kernels (LLVM) once, not timed
+    mitsuba_reference, reference_s = mitsuba(reference_spp, seed=1)
     rungs = []
     for spp in ladder_spp:
         progress(f"cross-check: Mitsuba at {spp} spp")
-        XYZ, seconds = render_mitsuba(scene, spp, seed=2)
+        XYZ, seconds = mitsuba(spp, seed=2)
         if seconds < RETIME_S:  # again with the kernel compiled: the faster of the two
-            seconds = min(seconds, render_mitsuba(scene, spp, seed=2)[1])
+            seconds = min(seconds, mitsuba(spp, seed=2)[1])
         rungs.append({"spp": int(spp), "seconds": seconds,
                       "vs_mitsuba": list(errors(XYZ, mitsuba_reference, scene)),
                       "vs_ours": list(errors(XYZ, our_reference, scene))})
@@ -455,7 +477,7 @@ def format_crosscheck(result):
 
 
 def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
-                   reference_spp=REFERENCE_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
+                   reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
                    progress=None):
     """:func:`bench_crosscheck` in a fresh Python process (Mitsuba's threads and memory stay
     there); ``progress``, if given, is called with each phase. Raises RuntimeError with the
@@ -471,19 +493,7 @@ def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
                       failure=f"cross-check at size {size} failed")
 
 
-def _worker(argv):  # pragma: no cover - run by reflectance.render.bench in a subprocess
-    import json
+if __name__ == "__main__":  # pragma: no cover - run by run_crosscheck in a subprocess
+    from reflectance.io.progress import worker_main
 
-    from reflectance.io.progress import worker_progress
-
-    job = json.loads(argv[0])
-    result = bench_crosscheck(**job, progress=worker_progress)
-    print(json.dumps(result))
-
-
-if __name__ == "__main__":  # pragma: no cover
-    import argparse
-
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--worker", nargs=1, required=True)
-    _worker(parser.parse_args().worker)
+    worker_main(bench_crosscheck)
