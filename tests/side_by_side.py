@@ -33,6 +33,11 @@ class SideBySide:
         assert key not in self._runs, key
         self._runs[key] = self._pool.submit(function, *args, **kwargs)
 
+    def start_once(self, key, function, *args, **kwargs):
+        """``start`` unless ``key`` was started already."""
+        if key not in self._runs:
+            self.start(key, function, *args, **kwargs)
+
     def result(self, key):
         return self._runs[key].result()
 

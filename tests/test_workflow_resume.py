@@ -144,22 +144,44 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
                for name in KILLED_OUTPUTS)
 
 
-@pytest.mark.parametrize("case", ["bad notation", "failing script"])
-def test_a_failing_spectrum_job_keeps_the_committed_file(root, tmp_path, case):
+FAILING_CASES = ["bad notation", "failing script"]
+
+
+def _spectra_digests(cwd):
+    return {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in (cwd / "spectra").glob("*.csv")}
+
+
+@pytest.fixture(scope="module")
+def failing_runs(root, tmp_path_factory):
+    """Both cases' runs, each in its own copy of the project, side by side
+    (tests/side_by_side.py): {case: (copy, digests of its spectra before, finished process)}."""
+    from side_by_side import SideBySide
+
+    def run(cwd):
+        committed = _spectra_digests(cwd)
+        return cwd, committed, snakemake(cwd, "--cores", "1", "--force", "spectra/Rubber.csv",
+                                         check=False)
+
+    with SideBySide() as runs:
+        for case in FAILING_CASES:
+            cwd = copy_project(root, tmp_path_factory.mktemp("failing"))
+            if case == "bad notation":  # not a Munsell colour: the recovery fails inside the job
+                config = yaml.safe_load((cwd / "config.yaml").read_text())
+                config["materials"]["Rubber"]["notation"] = "N99"
+                (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+            else:  # whatever the reason, a derive job that fails after it started
+                script = cwd / "workflow" / "scripts" / "derive_spectrum.py"
+                script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
+            runs.start(case, run, cwd)
+        yield runs
+
+
+@pytest.mark.parametrize("case", FAILING_CASES)
+def test_a_failing_spectrum_job_keeps_the_committed_file(failing_runs, case):
     """Snakemake deletes a job's outputs before it runs and after it fails; the committed spectra
     are flagged update(), so the previous file stays (and is restored after a failure)."""
-    cwd = copy_project(root, tmp_path)
-    if case == "bad notation":  # not a Munsell colour: the recovery fails inside the job
-        config = yaml.safe_load((cwd / "config.yaml").read_text())
-        config["materials"]["Rubber"]["notation"] = "N99"
-        (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    else:  # whatever the reason, a derive job that fails after it started
-        script = cwd / "workflow" / "scripts" / "derive_spectrum.py"
-        script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
-    committed = {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
-                 for p in (cwd / "spectra").glob("*.csv")}
-    proc = snakemake(cwd, "--cores", "1", "--force", "spectra/Rubber.csv", check=False)
+    cwd, committed, proc = failing_runs.result(case)
     assert proc.returncode != 0
-    assert {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
-            for p in (cwd / "spectra").glob("*.csv")} == committed
+    assert _spectra_digests(cwd) == committed
     assert not [p for p in (cwd / "spectra").iterdir() if p.name.startswith(".")]
