@@ -326,9 +326,8 @@ WORKFLOW_CASES = [
 ]
 
 
-@pytest.fixture(scope="module")
-def project(tmp_path_factory):
-    dest = tmp_path_factory.mktemp("project")
+def _project(dest):
+    """A copy of the project with empty results/ and logs/."""
     for name in ("Snakefile", "config.yaml"):
         shutil.copy(ROOT / name, dest / name)
     for name in ("workflow", "spectra"):
@@ -339,26 +338,45 @@ def project(tmp_path_factory):
     return dest
 
 
-@pytest.mark.parametrize("case_id, edit, expected", WORKFLOW_CASES,
-                         ids=[c[0] for c in WORKFLOW_CASES])
-def test_the_workflow_refuses_before_any_job_naming_the_key(project, config, case_id, edit,
-                                                           expected):
-    """README: bad config stops before any job, with a one-line error naming what is wrong."""
+def _config_text(config, edit):
     text = (ROOT / "config.yaml").read_text()
     if isinstance(edit, str):
         edit = {c[0]: c[1] for c in CORPUS}[edit]
     if getattr(edit, "on_text", False):
-        text = edit(text)
-    else:
-        bad = copy.deepcopy(config)
-        edit(bad)
-        text = yaml.safe_dump(bad, sort_keys=False)
-    (project / "config.yaml").write_text(text)
-    before = snapshot(project)
-    # a real run (not -n) of a figure that needs a spectrum: nothing may start
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1",
-                           "results/cook_torrance_1982/fig4.csv"], cwd=project,
-                          capture_output=True, text=True, timeout=300)
+        return edit(text)
+    bad = copy.deepcopy(config)
+    edit(bad)
+    return yaml.safe_dump(bad, sort_keys=False)
+
+
+@pytest.fixture(scope="module")
+def workflow_runs(config, tmp_path_factory):
+    """Every case's run, each in its own copy of the project, side by side (tests/side_by_side.py):
+    {case id: (copy, snapshot before the run, the finished process)}. Each test below makes its
+    own assertions on its case."""
+    from side_by_side import SideBySide
+
+    def run(project, before):
+        # a real run (not -n) of a figure that needs a spectrum: nothing may start
+        proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1",
+                               "results/cook_torrance_1982/fig4.csv"], cwd=project,
+                              capture_output=True, text=True, timeout=300)
+        return project, before, proc
+
+    with SideBySide() as runs:
+        for case_id, edit, _ in WORKFLOW_CASES:
+            project = _project(tmp_path_factory.mktemp(case_id))
+            (project / "config.yaml").write_text(_config_text(config, edit))
+            runs.start(case_id, run, project, snapshot(project))
+        yield runs
+
+
+@pytest.mark.parametrize("case_id, edit, expected", WORKFLOW_CASES,
+                         ids=[c[0] for c in WORKFLOW_CASES])
+def test_the_workflow_refuses_before_any_job_naming_the_key(workflow_runs, case_id, edit,
+                                                           expected):
+    """README: bad config stops before any job, with a one-line error naming what is wrong."""
+    project, before, proc = workflow_runs.result(case_id)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0, out
     lines = [line for line in out.splitlines() if re.search(expected, line)]

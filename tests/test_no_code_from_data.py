@@ -131,44 +131,72 @@ def test_a_material_is_a_name(name, root, grid):
         load_material(name, grid, spectra_dir=root / "spectra")
 
 
-@pytest.mark.workflow  # a Snakemake dry run each (about a minute)
-@pytest.mark.parametrize("key, value, message", [
+# Through the workflow: each config key that names a file, refused at parse time. The kinds of
+# path refused (leaving the folder, absolute, empty, a link out) are checked on project_file
+# itself above; one run per key shows the workflow applies it to that key.
+PATH_CASES = [
     ("rows", "../errata.yaml", "figures.errata.rows: '../errata.yaml' leaves the project folder"),
-    ("rows", "/tmp/errata.yaml", "figures.errata.rows: '/tmp/errata.yaml' is absolute"),
     ("symbols", "../symbols.csv", "figures.cook_torrance_1982.fig1.symbols: '../symbols.csv' leaves"),
-])
-def test_dry_run_refuses_paths_leaving_the_project(key, value, message, root, tmp_path):
+]
+
+
+def _dry_run(root, configfile):
+    return subprocess.run([sys.executable, "-m", "snakemake", "-n", "--configfile",
+                           str(configfile)], cwd=root, capture_output=True, text=True)
+
+
+@pytest.fixture(scope="module")
+def dry_runs(root, tmp_path_factory):
+    """The three `snakemake -n` runs below (a few seconds each, most of it the configuration's
+    checks), side by side (tests/side_by_side.py); each test makes its own assertions on its
+    run. {case: the finished process}, and "erratum" -> (process, the rows file's path)."""
+    from side_by_side import SideBySide
+
+    base = yaml.safe_load((root / "config.yaml").read_text())
+    with SideBySide() as runs:
+        for key, value, _ in PATH_CASES:
+            config = yaml.safe_load(yaml.safe_dump(base))
+            if key == "rows":
+                config["figures"]["errata"]["rows"] = value
+            else:
+                config["figures"]["cook_torrance_1982"]["fig1"]["symbols"] = value
+            override = tmp_path_factory.mktemp("path") / "config.yaml"
+            override.write_text(yaml.safe_dump(config))
+            runs.start((key, value), _dry_run, root, override)
+
+        # an unknown erratum id in a rows file inside the project (removed when its run ends)
+        tmp = tmp_path_factory.mktemp("erratum")
+        doc = yaml.safe_load((root / "workflow" / "report" / "errata.yaml").read_text())
+        doc["rows"][0]["id"] = SHELL
+        inside = root / "workflow" / "report" / f"test_rows_{tmp.name}.yaml"
+        config = yaml.safe_load(yaml.safe_dump(base))
+        config["figures"]["errata"]["rows"] = str(inside.relative_to(root))
+        (tmp / "config.yaml").write_text(yaml.safe_dump(config))
+
+        def erratum():
+            inside.write_text(yaml.safe_dump(doc))
+            try:
+                return _dry_run(root, tmp / "config.yaml"), inside
+            finally:
+                inside.unlink()
+
+        runs.start("erratum", erratum)
+        yield runs
+
+
+@pytest.mark.workflow  # a Snakemake dry run each (several seconds; side by side)
+@pytest.mark.parametrize("key, value, message", PATH_CASES)
+def test_dry_run_refuses_paths_leaving_the_project(key, value, message, dry_runs):
     """At parse time, before any job: one message naming the key; exit status 1."""
-    config = yaml.safe_load((root / "config.yaml").read_text())
-    if key == "rows":
-        config["figures"]["errata"]["rows"] = value
-    else:
-        config["figures"]["cook_torrance_1982"]["fig1"]["symbols"] = value
-    override = tmp_path / "config.yaml"
-    override.write_text(yaml.safe_dump(config))
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "-n", "--configfile", str(override)],
-                          cwd=root, capture_output=True, text=True)
+    proc = dry_runs.result((key, value))
     assert proc.returncode == 1
     assert message in proc.stdout + proc.stderr
 
 
 @pytest.mark.workflow
-def test_dry_run_refuses_an_unknown_erratum_id(root, tmp_path):
-    rows = tmp_path / "rows.yaml"
-    doc = yaml.safe_load((root / "workflow" / "report" / "errata.yaml").read_text())
-    doc["rows"][0]["id"] = SHELL
-    rows.write_text(yaml.safe_dump(doc))
-    inside = root / "workflow" / "report" / f"test_rows_{tmp_path.name}.yaml"
-    inside.write_text(rows.read_text())
-    try:
-        config = yaml.safe_load((root / "config.yaml").read_text())
-        config["figures"]["errata"]["rows"] = str(inside.relative_to(root))
-        (tmp_path / "config.yaml").write_text(yaml.safe_dump(config))
-        proc = subprocess.run([sys.executable, "-m", "snakemake", "-n", "--configfile",
-                               str(tmp_path / "config.yaml")], cwd=root, capture_output=True,
-                              text=True)
-    finally:
-        inside.unlink()
+def test_dry_run_refuses_an_unknown_erratum_id(root, dry_runs):
+    proc, inside = dry_runs.result("erratum")
+    assert not inside.exists()
     assert proc.returncode == 1
     assert f"{inside.relative_to(root)}: row 1" in proc.stdout + proc.stderr
     assert "unknown erratum id" in proc.stdout + proc.stderr

@@ -36,24 +36,47 @@ def run(args, cache, cwd):
     return result.stdout, imported
 
 
-def test_help_imports_no_heavy_library(root, tmp_path):
-    out, imported = run(["--help"], tmp_path, root)
+COLOUR_OPTIONS = [
+    [],
+    ["--fresnel", "approximation"],
+    ["--space", "SMPTE-C", "--clip", "clip"],
+    ["--illuminant", "A", "--observer", "CIE 1964 10 Degree Standard Observer"],
+]
+
+
+def _colour_args(root, options):
+    return ["colour", "Cu", "--angle", "0", "60", "89", "--spectra-dir", str(root / "spectra"),
+            *options]
+
+
+@pytest.fixture(scope="module")
+def starts(root, tmp_path_factory):
+    """Every command below, side by side (tests/side_by_side.py): `--help`, and for each set of
+    colour options its two runs in order (the first fills that case's own empty cache, the second
+    reads it). The tests make their assertions on the results."""
+    from side_by_side import SideBySide
+
+    def twice(args, cache):
+        return run(args, cache, root), run(args, cache, root)
+
+    with SideBySide() as runs:
+        runs.start("help", run, ["--help"], tmp_path_factory.mktemp("help"), root)
+        for i, options in enumerate(COLOUR_OPTIONS):
+            runs.start(i, twice, _colour_args(root, options), tmp_path_factory.mktemp("cache"))
+        yield runs
+
+
+def test_help_imports_no_heavy_library(starts):
+    out, imported = starts.result("help")
     assert "colour" in out and "render" in out
     assert not imported & HEAVY
     assert "numpy" not in imported
 
 
-@pytest.mark.parametrize("options", [
-    [],
-    ["--fresnel", "approximation"],
-    ["--space", "SMPTE-C", "--clip", "clip"],
-    ["--illuminant", "A", "--observer", "CIE 1964 10 Degree Standard Observer"],
-])
-def test_colour_command_imports_no_heavy_library(root, tmp_path, options):
-    args = ["colour", "Cu", "--angle", "0", "60", "89", "--spectra-dir", str(root / "spectra"),
-            *options]
-    first, imported_first = run(args, tmp_path, root)
+@pytest.mark.parametrize("case", range(len(COLOUR_OPTIONS)),
+                         ids=[" ".join(o) or "defaults" for o in COLOUR_OPTIONS])
+def test_colour_command_imports_no_heavy_library(starts, case):
+    (first, imported_first), (second, imported) = starts.result(case)
     assert "colour" in imported_first  # the empty cache was filled by colour-science
-    second, imported = run(args, tmp_path, root)
     assert second == first
     assert not imported & HEAVY, sorted(imported & HEAVY)

@@ -207,8 +207,8 @@ def test_provenance_lists_every_output_with_its_sha256(built):
     assert manifest["git"] == {"commit": None, "dirty": None}
 
 
-def test_nothing_left_to_do(built):
-    proc = snakemake(built, "-n", "--cores", "2")
+def test_nothing_left_to_do(dry_runs):
+    proc = dry_runs.result("built")
     assert "Nothing to be done" in proc.stdout + proc.stderr
 
 
@@ -229,10 +229,11 @@ def test_fresh_spectra_export_is_identical(root, built):
     assert digests(built, committed) == digests(root, committed)
 
 
-def test_lint_reports_only_missing_environments(root):
+def test_lint_reports_only_missing_environments(root, runs):
     """`snakemake --lint`: the only lint is the absence of per-rule conda/container envs
     (README.md says how the Python environment is made instead)."""
-    proc = snakemake(root, "--lint", check=False)
+    _start_lint(runs, root)  # unless the dry runs started it already
+    proc = runs.result("lint")
     text = proc.stdout + proc.stderr
     lints = [line.strip() for line in text.splitlines() if line.strip().startswith("* ")]
     assert lints, text  # the environment lint is expected: the linter did run
@@ -253,7 +254,8 @@ def _planned_jobs(text):
     raise AssertionError(text)
 
 
-@pytest.mark.parametrize("key, value, dependents", [
+#: (key, value, the jobs a dry run must plan after that one edit of config.yaml)
+ONE_KEY_EDITS = [
     # a key of one figure: only that figure's job (and the provenance manifest, which hashes
     # every output)
     (("figures", "cook_torrance_1982", "fig4", "wavelength_unit"), "nm",
@@ -269,12 +271,10 @@ def _planned_jobs(text):
      {"derive_spectra", "article_spheres", "audit_illuminant_observer", "audit_spectral_sampling",
       "ct82_fig8", "sources_table", "ct82_fig7", "ct82_fig7_published", "ct82_table1",
       "audit_gamut_mapping", "readme_strip", "provenance"}),
-])
-def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(built, tmp_path, key, value,
-                                                                  dependents):
-    """README: an output whose parameters changed is rebuilt, and nothing else."""
-    cwd = tmp_path / "copy"
-    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+]
+
+
+def _edit_one_key(cwd, key, value):
     config = yaml.safe_load((cwd / "config.yaml").read_text())
     node = config
     for k in key[:-1]:
@@ -282,7 +282,54 @@ def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(built, tmp_path,
     assert node[key[-1]] != value
     node[key[-1]] = value
     (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    proc = snakemake(cwd, "-n", "--cores", "2")
+
+
+@pytest.fixture(scope="module")
+def runs():
+    """This module's Snakemake runs that read but never change their folder, side by side
+    (tests/side_by_side.py): several seconds each, most of it parsing the workflow. Each test
+    makes its own assertions on its own run."""
+    from side_by_side import SideBySide
+
+    with SideBySide() as pool:
+        yield pool
+
+
+def _report(built, path):
+    snakemake(built, "--report", str(path))
+    return path
+
+
+def _start_lint(runs, root):
+    runs.start_once("lint", snakemake, root, "--lint", check=False)
+
+
+@pytest.fixture(scope="module")
+def dry_runs(runs, built, root, tmp_path_factory):
+    """`snakemake -n --cores 2` in the session's build ("built") and in a copy of it with each
+    one-key edit of ONE_KEY_EDITS (by its index), the report of the build ("report") and the
+    lint of the project ("lint"), all started at once. The copies are made before any run
+    starts."""
+    copies = []
+    for key, value, _ in ONE_KEY_EDITS:
+        cwd = tmp_path_factory.mktemp("edit") / "copy"
+        shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+        _edit_one_key(cwd, key, value)
+        copies.append(cwd)
+    runs.start("built", snakemake, built, "-n", "--cores", "2")
+    for i, cwd in enumerate(copies):
+        runs.start(i, snakemake, cwd, "-n", "--cores", "2")
+    runs.start("report", _report, built, tmp_path_factory.mktemp("report") / "report.html")
+    _start_lint(runs, root)
+    return runs
+
+
+@pytest.mark.parametrize("edit", range(len(ONE_KEY_EDITS)),
+                         ids=[".".join(key) for key, _, _ in ONE_KEY_EDITS])
+def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(dry_runs, edit):
+    """README: an output whose parameters changed is rebuilt, and nothing else."""
+    dependents = ONE_KEY_EDITS[edit][2]
+    proc = dry_runs.result(edit)
     text = proc.stdout + proc.stderr
     assert set(_planned_jobs(text)) == dependents | {"all"}, text
 
@@ -303,15 +350,13 @@ def _rules_text(root):
     return "\n".join(p.read_text() for p in sorted((root / "workflow" / "rules").glob("*.smk")))
 
 
-def test_report_reads_in_a_browser(built, root, tmp_path):
+def test_report_reads_in_a_browser(dry_runs, root, tmp_path):
     import html
     import json
     import re
 
     chromium = _chromium()
-    report = tmp_path / "report.html"
-    snakemake(built, "--report", str(report))
-    page = report.read_text()
+    page = dry_runs.result("report").read_text()
     driver = (Path(__file__).parent / "report_driver.js").read_text()
     end = page.rindex("</body>")
     driven = tmp_path / "driven.html"

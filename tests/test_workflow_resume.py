@@ -144,38 +144,63 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
                for name in KILLED_OUTPUTS)
 
 
-@pytest.mark.parametrize("case", ["bad notation", "failing script", "one material fails"])
-def test_a_failing_spectrum_job_keeps_the_committed_file(root, tmp_path, case):
+FAILING_CASES = ["bad notation", "failing script", "one material fails"]
+
+
+def _spectra_digests(cwd):
+    return {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in (cwd / "spectra").glob("*.csv")}
+
+
+def _spectra_inodes(cwd):
+    return {p.name: p.stat().st_ino for p in (cwd / "spectra").glob("*.csv")}
+
+
+@pytest.fixture(scope="module")
+def failing_runs(root, tmp_path_factory):
+    """The cases' runs, each in its own copy of the project, side by side (tests/side_by_side.py):
+    {case: (copy, digests and inodes of its spectra before, finished process)}."""
+    from side_by_side import SideBySide
+
+    def run(cwd):
+        committed, inodes = _spectra_digests(cwd), _spectra_inodes(cwd)
+        return cwd, committed, inodes, snakemake(cwd, "--cores", "1", "--force",
+                                                 "spectra/Rubber.csv", check=False)
+
+    with SideBySide() as runs:
+        for case in FAILING_CASES:
+            cwd = copy_project(root, tmp_path_factory.mktemp("failing"))
+            script = cwd / "workflow" / "scripts" / "derive_spectra.py"
+            if case == "bad notation":  # not a Munsell colour: refused before any job starts
+                config = yaml.safe_load((cwd / "config.yaml").read_text())
+                config["materials"]["Rubber"]["notation"] = "N99"
+                (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+            elif case == "failing script":  # whatever the reason, a derive job that fails after it wrote
+                script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
+            else:  # one material fails: Rubber; the others (a stand-in) do not
+                text = script.read_text()
+                assert "def derive(entry):\n" in text
+                script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
+    if entry["notation"] == "N2.5":
+        raise ValueError("stand-in failure")
+    return {"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}
+"""))
+            runs.start(case, run, cwd)
+        yield runs
+
+
+@pytest.mark.parametrize("case", FAILING_CASES)
+def test_a_failing_spectrum_job_keeps_the_committed_file(failing_runs, case):
     """Snakemake deletes a job's outputs before it runs and after it fails; the committed spectra
     are flagged update(), so the previous file stays (and is restored after a failure). The job
     that derives every Munsell spectrum makes them all before it writes any: one material that
     fails is named in its log, and no file is replaced (each keeps its inode; Snakemake's
     restore copies into the file at the path, an atomic write would have left a new one)."""
-    cwd = copy_project(root, tmp_path)
-    if case == "bad notation":  # not a Munsell colour: refused before any job starts
-        config = yaml.safe_load((cwd / "config.yaml").read_text())
-        config["materials"]["Rubber"]["notation"] = "N99"
-        (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-    script = cwd / "workflow" / "scripts" / "derive_spectra.py"
-    if case == "failing script":  # whatever the reason, a derive job that fails after it wrote
-        script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
-    elif case == "one material fails":  # Rubber fails; the five before it (a stand-in) do not
-        text = script.read_text()
-        assert "def derive(entry):\n" in text
-        script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
-    if entry["notation"] == "N2.5":
-        raise ValueError("stand-in failure")
-    return {"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}
-"""))
-    spectra = sorted((cwd / "spectra").glob("*.csv"))
-    committed = {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in spectra}
-    inodes = {p.name: p.stat().st_ino for p in spectra}
-    proc = snakemake(cwd, "--cores", "1", "--force", "spectra/Rubber.csv", check=False)
+    cwd, committed, inodes, proc = failing_runs.result(case)
     assert proc.returncode != 0
-    assert {p.name: hashlib.sha256(p.read_bytes()).hexdigest()
-            for p in (cwd / "spectra").glob("*.csv")} == committed
+    assert _spectra_digests(cwd) == committed
     assert not [p for p in (cwd / "spectra").iterdir() if p.name.startswith(".")]
-    after = {p.name: p.stat().st_ino for p in spectra}
+    after = _spectra_inodes(cwd)
     if case == "failing script":  # written, then restored: the inode check below can tell
         assert after["Rubber.csv"] != inodes["Rubber.csv"]
     if case == "one material fails":
