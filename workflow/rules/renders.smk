@@ -57,7 +57,7 @@ def ct82_caption(fig, reading):
     return f"../report/ct82_{fig}_{CT82_FIG6['ambient_readings'][reading]}.rst"
 
 
-def ct82_reported(outputs, fig, reading):
+def ct82_reported(outputs, fig, reading, subcategory):
     """outputs, the figure and its table marked for the report, with the variant's caption."""
     prefix = "" if reading is None else f"{reading}_"
     marked = dict(outputs)
@@ -69,7 +69,7 @@ def ct82_reported(outputs, fig, reading):
             outputs[prefix + key],
             caption=caption,
             category="Cook & Torrance 1982",
-            subcategory=f"Fig. {fig[3:]}",
+            subcategory=subcategory,
             labels={
                 "variant": reading or "published",
                 "file": {"png": "figure", "csv": "table"}[key],
@@ -85,7 +85,9 @@ rule ct82_fig6:
         **{
             key: path
             for reading in [None] + CT82_FIG6_READINGS
-            for key, path in ct82_reported(ct82_fig6_outputs(reading), "fig6", reading).items()
+            for key, path in ct82_reported(
+                ct82_fig6_outputs(reading), "fig6", reading, subcategory="Fig. 6"
+            ).items()
         },
     log:
         "logs/cook_torrance_1982/fig6.log",
@@ -258,7 +260,9 @@ rule ct82_fig7:
         **{
             key: path
             for reading in [None] + CT82_FIG6_READINGS
-            for key, path in ct82_reported(ct82_fig7_outputs(reading), "fig7", reading).items()
+            for key, path in ct82_reported(
+                ct82_fig7_outputs(reading), "fig7", reading, subcategory="Fig. 7"
+            ).items()
         },
     log:
         "logs/cook_torrance_1982/fig7.log",

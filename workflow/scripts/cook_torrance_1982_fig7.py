@@ -134,7 +134,9 @@ def variant(log, out, reference, published, traced):
 
 with script_log(snakemake) as log:
     traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
-    variants = [("", snakemake.params.reference, snakemake.params.published)] + [
+    # the default figure (if params.published; unprefixed outputs), then each reading
+    variants = ([("", snakemake.params.reference, snakemake.params.published)]
+                if snakemake.params.published else []) + [
         (f"{reading}_", reference, None) for reading, reference in snakemake.params.readings.items()]
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
