@@ -28,10 +28,17 @@ PUBLISHED = CT82["fig6"]["published"]
 
 
 def reading_params(reading):
-    """(ambient reference, published) of a reading; "published": the default figures."""
+    """(ambient reference, published, readings) of the rule's params that make one variant alone:
+    "published", the default figure; else that reading of fig6.ambient_readings."""
     if reading == "published":
-        return PUBLISHED["ambient_reference"], PUBLISHED
-    return CT82["fig6"]["ambient_readings"][reading], None
+        return PUBLISHED["ambient_reference"], PUBLISHED, {}
+    return None, None, {reading: CT82["fig6"]["ambient_readings"][reading]}
+
+
+def prefixed(files, reading):
+    """The rule's output names of one variant: a reading's are prefixed by it (as_printed_png)."""
+    prefix = "" if reading == "published" else f"{reading}_"
+    return {prefix + key: value for key, value in files.items()}
 
 
 def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
@@ -41,12 +48,13 @@ def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
                           exrs=[str(tmp / f"{v}.exr") for v in VASES],
                           scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES],
                           pngs=[str(tmp / f"{v}.png") for v in VASES])
-    reference, published = reading_params(reading)
+    reference, published, readings = reading_params(reading)
     snakemake = SimpleNamespace(
-        input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")), output=out,
+        input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")),
+        output=SimpleNamespace(**prefixed(vars(out), reading)),
         params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1, reference=reference,
-                               published=published, wavelengths=CONFIG["wavelengths"],
-                               colour=CONFIG["colour"]),
+                               published=published, readings=readings,
+                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
         log=[str(tmp / "fig7.log")], rule="ct82_fig7")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig7.py"),
                    init_globals={"snakemake": snakemake})
@@ -66,11 +74,13 @@ def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
     out = Output(png=str(tmp / "fig6.png"), csv=str(tmp / "fig6.csv"), **{
         f"{p}_{key}": str(tmp / f"fig6{p}.{ext}") for p in "ab"
         for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
-    reference, published = reading_params(reading)
+    reference, published, readings = reading_params(reading)
     snakemake = SimpleNamespace(
-        input=SimpleNamespace(spectra=[str(SPECTRA / "Cu.csv")]), output=out,
+        input=SimpleNamespace(spectra=[str(SPECTRA / "Cu.csv")]),
+        output=Output(**prefixed(vars(out), reading)),
         params=SimpleNamespace(fig=fig, reference=reference, published=published,
-                               wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
+                               readings=readings, wavelengths=CONFIG["wavelengths"],
+                               colour=CONFIG["colour"]),
         log=[str(tmp / "fig6.log")], rule="ct82_fig6")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig6.py"),
                    init_globals={"snakemake": snakemake})

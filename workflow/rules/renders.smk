@@ -27,82 +27,81 @@ TARGETS += [
 ]
 
 
-rule ct82_fig6_published:
-    input:
-        spectra=CT82_FIG6_SPECTRA,
-    output:
-        png=report(
-            f"{CT82_OUT}/fig6.png",
-            caption="../report/ct82_fig6_published.rst",
+# One job for the whole family (the default figure, then each reading): the variants share one
+# process's imports and, where their geometry, camera and lights agree (pipeline.trace_key), one
+# trace. The trade-off: editing one variant's parameter (a reading, fig6.published) reruns them all.
+CT82_FIG6_FILES = {
+    "png": "fig6{}.png",
+    "csv": "fig6{}.csv",
+    **{
+        f"{panel}_{ext.split('.')[0]}": f"fig6{panel}{{}}.{ext}"
+        for panel in "ab"
+        for ext in ("exr", "png", "scene.yaml")
+    },
+}
+
+
+def ct82_fig6_outputs(reading):
+    """{name: path} of one variant (None: the default figure), its names prefixed by the reading."""
+    suffix, prefix = ("", "") if reading is None else (f"_{reading}", f"{reading}_")
+    return {
+        f"{prefix}{key}": f"{CT82_OUT}/{name.format(suffix)}"
+        for key, name in CT82_FIG6_FILES.items()
+    }
+
+
+def ct82_caption(fig, reading):
+    """The caption of one variant: a reading's caption is its ambient reference's."""
+    if reading is None:
+        return f"../report/ct82_{fig}_published.rst"
+    return f"../report/ct82_{fig}_{CT82_FIG6['ambient_readings'][reading]}.rst"
+
+
+def ct82_reported(outputs, fig, reading, subcategory):
+    """outputs, the figure and its table marked for the report, with the variant's caption."""
+    prefix = "" if reading is None else f"{reading}_"
+    marked = dict(outputs)
+    for key, caption in (
+        ("png", ct82_caption(fig, reading)),
+        ("csv", f"../report/ct82_{fig}_table.rst"),
+    ):
+        marked[prefix + key] = report(
+            outputs[prefix + key],
+            caption=caption,
             category="Cook & Torrance 1982",
-            subcategory="Fig. 6",
-        ),
-        csv=report(
-            f"{CT82_OUT}/fig6.csv",
-            caption="../report/ct82_fig6_table.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 6",
-        ),
-        a_exr=f"{CT82_OUT}/fig6a.exr",
-        a_png=f"{CT82_OUT}/fig6a.png",
-        a_scene=f"{CT82_OUT}/fig6a.scene.yaml",
-        b_exr=f"{CT82_OUT}/fig6b.exr",
-        b_png=f"{CT82_OUT}/fig6b.png",
-        b_scene=f"{CT82_OUT}/fig6b.scene.yaml",
-    log:
-        "logs/cook_torrance_1982/fig6.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig6.tsv"
-    threads: 1
-    resources:
-        mem_mb=1800,  # script peak 891 MB
-        runtime=10,  # measured 99 s
-    params:
-        fig=CT82_FIG6,
-        reference=CT82_PUBLISHED["ambient_reference"],
-        published=CT82_PUBLISHED,
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
-    script:
-        "../scripts/cook_torrance_1982_fig6.py"
+            subcategory=subcategory,
+            labels={
+                "variant": reading or "published",
+                "file": {"png": "figure", "csv": "table"}[key],
+            },
+        )
+    return marked
 
 
 rule ct82_fig6:
     input:
         spectra=CT82_FIG6_SPECTRA,
     output:
-        png=report(
-            f"{CT82_OUT}/fig6_{{reading}}.png",
-            caption="../report/ct82_fig6.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 6",
-        ),
-        csv=report(
-            f"{CT82_OUT}/fig6_{{reading}}.csv",
-            caption="../report/ct82_fig6_table.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 6",
-        ),
-        a_exr=f"{CT82_OUT}/fig6a_{{reading}}.exr",
-        a_png=f"{CT82_OUT}/fig6a_{{reading}}.png",
-        a_scene=f"{CT82_OUT}/fig6a_{{reading}}.scene.yaml",
-        b_exr=f"{CT82_OUT}/fig6b_{{reading}}.exr",
-        b_png=f"{CT82_OUT}/fig6b_{{reading}}.png",
-        b_scene=f"{CT82_OUT}/fig6b_{{reading}}.scene.yaml",
+        **{
+            key: path
+            for reading in [None] + CT82_FIG6_READINGS
+            for key, path in ct82_reported(
+                ct82_fig6_outputs(reading), "fig6", reading, subcategory="Fig. 6"
+            ).items()
+        },
     log:
-        "logs/cook_torrance_1982/fig6_{reading}.log",
+        "logs/cook_torrance_1982/fig6.log",
     benchmark:
-        "benchmarks/cook_torrance_1982/fig6_{reading}.tsv"
-    wildcard_constraints:
-        reading=_one_of(CT82_FIG6_READINGS),
+        "benchmarks/cook_torrance_1982/fig6.tsv"
     threads: 1
     resources:
-        mem_mb=1800,  # script peak 873 MB
-        runtime=10,  # measured 152 s
+        mem_mb=1800,  # script peak 872 MB (3 variants, one trace)
+        runtime=10,  # measured 8 s (2026-12-02; the 3 jobs it replaces: 21 s)
     params:
         fig=CT82_FIG6,
-        reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
-        published=None,
+        reference=CT82_PUBLISHED["ambient_reference"],
+        published=CT82_PUBLISHED,
+        readings=CT82_FIG6["ambient_readings"],
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     script:
@@ -236,81 +235,50 @@ TARGETS += [
 ] + [f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES]
 
 
-rule ct82_fig7_published:
+def ct82_fig7_outputs(reading):
+    """{name: path or paths} of one variant of Fig. 7 (None: the default figure, which alone
+    writes each vase's PNG), its names prefixed by the reading."""
+    stem, prefix = ("fig7", "") if reading is None else (f"fig7_{reading}", f"{reading}_")
+    files = {
+        "png": f"{CT82_OUT}/{stem}.png",
+        "csv": f"{CT82_OUT}/{stem}.csv",
+        "exrs": [f"{CT82_OUT}/{stem}/{vase}.exr" for vase in CT82_FIG7_VASES],
+        "scenes": [f"{CT82_OUT}/{stem}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
+    }
+    if reading is None:
+        files["pngs"] = [f"{CT82_OUT}/{stem}/{vase}.png" for vase in CT82_FIG7_VASES]
+    return {prefix + key: value for key, value in files.items()}
+
+
+# One job for the family, as Fig. 6: the default figure and each reading share imports and the
+# vases' one trace; editing one variant's parameter reruns them all.
+rule ct82_fig7:
     input:
         spectra=CT82_FIG7_SPECTRA,
         sources="spectra/sources.csv",
     output:
-        png=report(
-            f"{CT82_OUT}/fig7.png",
-            caption="../report/ct82_fig7_published.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 7",
-        ),
-        csv=report(
-            f"{CT82_OUT}/fig7.csv",
-            caption="../report/ct82_fig7_table.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 7",
-        ),
-        exrs=[f"{CT82_OUT}/fig7/{vase}.exr" for vase in CT82_FIG7_VASES],
-        scenes=[f"{CT82_OUT}/fig7/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
-        pngs=[f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES],
+        **{
+            key: path
+            for reading in [None] + CT82_FIG6_READINGS
+            for key, path in ct82_reported(
+                ct82_fig7_outputs(reading), "fig7", reading, subcategory="Fig. 7"
+            ).items()
+        },
     log:
         "logs/cook_torrance_1982/fig7.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig7.tsv"
     threads: 1
     resources:
-        mem_mb=1600,  # script peak 692 MB
-        runtime=10,  # measured 183 s
+        mem_mb=1500,  # script peak 639 MB (3 variants, one trace)
+        runtime=10,  # measured 10 s (2026-12-02; the 3 jobs it replaces: 24 s)
     params:
         fig=CT82_FIG7,
         fig6=CT82_FIG6,
         table1=CT82["table1"]["rows"],
         reference=CT82_PUBLISHED["ambient_reference"],
         published=CT82_PUBLISHED,
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
-    script:
-        "../scripts/cook_torrance_1982_fig7.py"
-
-
-rule ct82_fig7:
-    input:
-        spectra=CT82_FIG7_SPECTRA,
-        sources="spectra/sources.csv",
-    output:
-        png=report(
-            f"{CT82_OUT}/fig7_{{reading}}.png",
-            caption="../report/ct82_fig7.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 7",
-        ),
-        csv=report(
-            f"{CT82_OUT}/fig7_{{reading}}.csv",
-            caption="../report/ct82_fig7_table.rst",
-            category="Cook & Torrance 1982",
-            subcategory="Fig. 7",
-        ),
-        exrs=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.exr" for vase in CT82_FIG7_VASES],
-        scenes=[f"{CT82_OUT}/fig7_{{reading}}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
-    log:
-        "logs/cook_torrance_1982/fig7_{reading}.log",
-    benchmark:
-        "benchmarks/cook_torrance_1982/fig7_{reading}.tsv"
-    wildcard_constraints:
-        reading=_one_of(CT82_FIG6_READINGS),
-    threads: 1
-    resources:
-        mem_mb=1600,  # script peak 692 MB
-        runtime=10,  # measured 171 s
-    params:
-        fig=CT82_FIG7,
-        fig6=CT82_FIG6,
-        table1=CT82["table1"]["rows"],
-        reference=lambda wildcards: CT82_FIG6["ambient_readings"][wildcards.reading],
-        published=None,
+        readings=CT82_FIG6["ambient_readings"],
         wavelengths=config["wavelengths"],
         colour=config["colour"],
     script:

@@ -1,9 +1,12 @@
 """Cook & Torrance 1982, Fig. 6: (a) a copper-coloured plastic vase, (b) a copper vase, rendered
 spectrally (reflectance.render.pipeline) with the paper's parameters. The ambient term is read as
-printed or as 1 % of the lights' irradiance (wildcard ``reading``, one exposure at the brightest
-colour), or, for the default figure (``params.published``), with the object metered and its
-highlights compressed at constant chromaticity, and Fig. 6a's labelled departure beside the printed
-panel. Also tabulates the size of the ambient term and how each panel reads."""
+printed or as 1 % of the lights' irradiance (each reading of ``params.readings``, one exposure at the
+brightest colour), or, for the default figure (``params.published``), with the object metered and
+its highlights compressed at constant chromaticity, and Fig. 6a's labelled departure beside the
+printed panel. Also tabulates the size of the ambient term and how each panel reads. One process
+makes every variant (the default figure, then each reading; outputs named ``<reading>_<name>``):
+they share the imports and, where their geometry, camera and lights agree (pipeline.trace_key), the
+trace."""
 
 from pathlib import Path
 
@@ -28,14 +31,16 @@ READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
             "weighted": "ambient = {f} of the lights as they enter the model: I_ia = {f} \u03a3 I_i d\u03c9_i"}
 
 
+OUTPUTS = ["png", "csv"] + [f"{part}_{kind}" for part in "ab" for kind in ("exr", "png", "scene")]
+
+
 def departure_text(change):
     return ", ".join(f"{k} = {v:g}" for k, v in change.items())
 
 
-with script_log(snakemake) as log:
-    fig_cfg, colour_cfg, published = snakemake.params.fig, snakemake.params.colour, \
-        snakemake.params.published
-    reference, out = snakemake.params.reference, snakemake.output
+def variant(log, out, reference, published, traced):
+    """One variant of the figure: its panels, table and figure written to ``out``."""
+    fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
     exposure = published["exposure"] if published else None
     departures = published["departures"] if published else {}
@@ -51,7 +56,6 @@ with script_log(snakemake) as log:
         else:
             renders.append((part, TITLES[part], panel, True))
     rows, images, covered = [], [], []
-    traced = {}  # the panels share vase, camera and lights: traced once (pipeline.render)
     for part, title, panel, written in renders:
         document = vase_scene_CookTorrance1982(fig_cfg, panel_material(panel), reference,
                                                snakemake.params.wavelengths, colour_cfg,
@@ -84,7 +88,7 @@ with script_log(snakemake) as log:
             **appearance(rgb, result.XYZ, colour_cfg["space"]),
         })
         log.info("panel %s (%s): %s; timings %s", part, title, rows[-1], result.timings)
-    pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
+    pd.DataFrame(rows).pipe(write_csv, out["csv"], float_format="%.6g")
 
     # drawn at the print width (the renders pixel for pixel at dpi), the empty rows cropped
     crop = covered_rows(covered, margin=8)
@@ -111,4 +115,17 @@ with script_log(snakemake) as log:
                      pad=4)
     fig.suptitle(title, color="white", fontsize=TEXT_SIZE["symbol"], y=1 - 0.04 / H, va="top",
                  linespacing=1.3)
-    savefig(fig, out.png, dpi=dpi, tag=display_tag(scene.display.space))
+    savefig(fig, out["png"], dpi=dpi, tag=display_tag(scene.display.space))
+
+
+with script_log(snakemake) as log:
+    traced = {}  # the variants' panels share vase, camera and lights: traced once (pipeline.render)
+    # the default figure (if params.published; unprefixed outputs), then each reading
+    variants = ([("", snakemake.params.reference, snakemake.params.published)]
+                if snakemake.params.published else []) + [
+        (f"{reading}_", reference, None) for reading, reference in snakemake.params.readings.items()]
+    for prefix, reference, published in variants:
+        log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
+        variant(log, {key: getattr(snakemake.output, prefix + key) for key in OUTPUTS},
+                reference, published, traced)
+    log.info("%d distinct traces for %d variants", len(traced), len(variants))

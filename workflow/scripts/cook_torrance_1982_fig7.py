@@ -5,7 +5,9 @@ nonmetals) once, metered on a white card facing the lights (config ``fig7.exposu
 each vase's exposure relative to the first vase), so dark materials stay dark, with the labelled
 per-vase factors of ``fig7.vase_exposure``; the readings of
 the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
-(not in the paper) and a table of each vase's parameters, colour and how it reads."""
+(not in the paper) and a table of each vase's parameters, colour and how it reads. One process makes
+every variant (the default figure, then each reading of ``params.readings``; outputs named
+``<reading>_<name>``): they share the imports and the vases' trace (pipeline.trace_key)."""
 
 from pathlib import Path
 
@@ -40,13 +42,13 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
-with script_log(snakemake) as log:
-    p, out = snakemake.params, snakemake.output
-    colour_cfg, reference, published = p.colour, p.reference, p.published
+def variant(log, out, reference, published, traced):
+    """One variant of the figure: its vases, table and grid written to ``out``."""
+    p = snakemake.params
+    colour_cfg = p.colour
     spectra_dir = str(Path(snakemake.input.sources).parent)
     sources = list_materials(spectra_dir).set_index("material")
     rows, images, shown, groups, labels = [], [], [], [], []
-    traced = {}  # the vases share geometry, camera and lights: traced once (pipeline.render)
     for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
         document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
                                                colour_cfg, spectra_dir, p.fig["vase_image"],
@@ -54,8 +56,8 @@ with script_log(snakemake) as log:
                                                    p.fig, vase, group) if published else None)
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
-        result = render_to_files(scene, out.scenes[k], out.exrs[k],
-                                 out.pngs[k] if published else None, traced=traced)
+        result = render_to_files(scene, out["scenes"][k], out["exrs"][k],
+                                 out["pngs"][k] if published else None, traced=traced)
         rgb, scale = result.display  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
@@ -106,7 +108,7 @@ with script_log(snakemake) as log:
     for i, (rgb, XYZ) in enumerate(zip(shown, images)):
         for key, value in appearance(rgb, XYZ, colour_cfg["space"]).items():
             table.loc[i, key] = value
-    table.pipe(write_csv, out.csv, float_format="%.6g")
+    table.pipe(write_csv, out["csv"], float_format="%.6g")
 
     # metals in the first row, nonmetals in the second, variants in the last column
     n_cols = max(groups.count("metal"), groups.count("nonmetal")) + ("extra" in groups)
@@ -127,4 +129,19 @@ with script_log(snakemake) as log:
                      crop=covered_rows(images), foot=0.6 if published else 0.4,
                      top=0.12 + 0.22 * (title.count("\n") + 1), dpi=dpi,
                      label_size=TEXT_SIZE["table"])
-    savefig(fig, out.png, dpi=dpi, tag=display_tag(colour_cfg["space"]))
+    savefig(fig, out["png"], dpi=dpi, tag=display_tag(colour_cfg["space"]))
+
+
+with script_log(snakemake) as log:
+    traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
+    # the default figure (if params.published; unprefixed outputs), then each reading
+    variants = ([("", snakemake.params.reference, snakemake.params.published)]
+                if snakemake.params.published else []) + [
+        (f"{reading}_", reference, None) for reading, reference in snakemake.params.readings.items()]
+    for prefix, reference, published in variants:
+        log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
+        out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}
+        if published:  # the default figure alone writes each vase's PNG
+            out["pngs"] = getattr(snakemake.output, "pngs")
+        variant(log, out, reference, published, traced)
+    log.info("%d distinct traces for %d variants", len(traced), len(variants))
