@@ -508,3 +508,17 @@ def test_fig8_default_reads_as_the_papers_watch(fig8):
     for part in ("band_inner", "band_outer_border", "band_outer_interior"):
         codes, _ = watch_part_lab(fig8, part)
         assert (codes.max(axis=-1) >= 20).mean() >= 0.2, part  # both bands visible
+
+
+@pytest.mark.parametrize("fig", ["fig6", "fig7"])
+def test_every_ambient_reference_the_schema_allows_has_its_caption(fig):
+    """The merged Fig. 6/7 rules caption a reading by its ambient reference
+    (workflow/rules/renders.smk, ct82_caption): each reference a config may choose needs its
+    caption, which names that reading's readings."""
+    schema = yaml.safe_load((ROOT / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    readings = (schema["properties"]["figures"]["properties"]["cook_torrance_1982"]["properties"]
+                ["fig6"]["properties"]["ambient_readings"])
+    for reference in readings["additionalProperties"]["enum"]:
+        caption = ROOT / "workflow" / "report" / f"ct82_{fig}_{reference}.rst"
+        assert caption.is_file(), caption
+        assert f'if ref == "{reference}"' in caption.read_text(), caption
