@@ -44,3 +44,58 @@ def all_spectra():
 #: Every output `snakemake --cores 2` builds. Each rules file adds its own figures and tables
 #: (``TARGETS += [...]``); the Snakefile's rule all asks for them all.
 TARGETS = all_spectra()
+
+
+# Outputs and captions of C&T Figs. 6 and 7 (workflow/rules/renders.smk, one job per figure family):
+# here because Snakemake's lint wants functions and rules in separate files; they read the
+# CT82_* constants renders.smk defines before its rules call them.
+def ct82_fig6_outputs(reading):
+    """{name: path} of one variant (None: the default figure), its names prefixed by the reading."""
+    suffix, prefix = ("", "") if reading is None else (f"_{reading}", f"{reading}_")
+    return {
+        f"{prefix}{key}": f"{CT82_OUT}/{name.format(suffix)}"
+        for key, name in CT82_FIG6_FILES.items()
+    }
+
+
+def ct82_caption(fig, reading):
+    """The caption of one variant: a reading's caption is its ambient reference's."""
+    if reading is None:
+        return f"../report/ct82_{fig}_published.rst"
+    return f"../report/ct82_{fig}_{CT82_FIG6['ambient_readings'][reading]}.rst"
+
+
+def ct82_reported(outputs, fig, reading, subcategory):
+    """outputs, the figure and its table marked for the report, with the variant's caption."""
+    prefix = "" if reading is None else f"{reading}_"
+    marked = dict(outputs)
+    for key, caption in (
+        ("png", ct82_caption(fig, reading)),
+        ("csv", f"../report/ct82_{fig}_table.rst"),
+    ):
+        marked[prefix + key] = report(
+            outputs[prefix + key],
+            caption=caption,
+            category="Cook & Torrance 1982",
+            subcategory=subcategory,
+            labels={
+                "variant": reading or "published",
+                "file": {"png": "figure", "csv": "table"}[key],
+            },
+        )
+    return marked
+
+
+def ct82_fig7_outputs(reading):
+    """{name: path or paths} of one variant of Fig. 7 (None: the default figure, which alone
+    writes each vase's PNG), its names prefixed by the reading."""
+    stem, prefix = ("fig7", "") if reading is None else (f"fig7_{reading}", f"{reading}_")
+    files = {
+        "png": f"{CT82_OUT}/{stem}.png",
+        "csv": f"{CT82_OUT}/{stem}.csv",
+        "exrs": [f"{CT82_OUT}/{stem}/{vase}.exr" for vase in CT82_FIG7_VASES],
+        "scenes": [f"{CT82_OUT}/{stem}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
+    }
+    if reading is None:
+        files["pngs"] = [f"{CT82_OUT}/{stem}/{vase}.png" for vase in CT82_FIG7_VASES]
+    return {prefix + key: value for key, value in files.items()}

@@ -41,43 +41,6 @@ CT82_FIG6_FILES = {
 }
 
 
-def ct82_fig6_outputs(reading):
-    """{name: path} of one variant (None: the default figure), its names prefixed by the reading."""
-    suffix, prefix = ("", "") if reading is None else (f"_{reading}", f"{reading}_")
-    return {
-        f"{prefix}{key}": f"{CT82_OUT}/{name.format(suffix)}"
-        for key, name in CT82_FIG6_FILES.items()
-    }
-
-
-def ct82_caption(fig, reading):
-    """The caption of one variant: a reading's caption is its ambient reference's."""
-    if reading is None:
-        return f"../report/ct82_{fig}_published.rst"
-    return f"../report/ct82_{fig}_{CT82_FIG6['ambient_readings'][reading]}.rst"
-
-
-def ct82_reported(outputs, fig, reading, subcategory):
-    """outputs, the figure and its table marked for the report, with the variant's caption."""
-    prefix = "" if reading is None else f"{reading}_"
-    marked = dict(outputs)
-    for key, caption in (
-        ("png", ct82_caption(fig, reading)),
-        ("csv", f"../report/ct82_{fig}_table.rst"),
-    ):
-        marked[prefix + key] = report(
-            outputs[prefix + key],
-            caption=caption,
-            category="Cook & Torrance 1982",
-            subcategory=subcategory,
-            labels={
-                "variant": reading or "published",
-                "file": {"png": "figure", "csv": "table"}[key],
-            },
-        )
-    return marked
-
-
 rule ct82_fig6:
     input:
         spectra=CT82_FIG6_SPECTRA,
@@ -233,21 +196,6 @@ TARGETS += [
     for name in [f"{stem}.png", f"{stem}.csv"]
     + [f"{stem}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")]
 ] + [f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES]
-
-
-def ct82_fig7_outputs(reading):
-    """{name: path or paths} of one variant of Fig. 7 (None: the default figure, which alone
-    writes each vase's PNG), its names prefixed by the reading."""
-    stem, prefix = ("fig7", "") if reading is None else (f"fig7_{reading}", f"{reading}_")
-    files = {
-        "png": f"{CT82_OUT}/{stem}.png",
-        "csv": f"{CT82_OUT}/{stem}.csv",
-        "exrs": [f"{CT82_OUT}/{stem}/{vase}.exr" for vase in CT82_FIG7_VASES],
-        "scenes": [f"{CT82_OUT}/{stem}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
-    }
-    if reading is None:
-        files["pngs"] = [f"{CT82_OUT}/{stem}/{vase}.png" for vase in CT82_FIG7_VASES]
-    return {prefix + key: value for key, value in files.items()}
 
 
 # One job for the family, as Fig. 6: the default figure and each reading share imports and the
