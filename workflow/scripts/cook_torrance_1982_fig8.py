@@ -12,7 +12,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import render_to_files
+from reflectance.render.pipeline import render_to_files, trace_once
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import watch_scene_CookTorrance1982
 from reflectance.scripting import script_log
@@ -36,7 +36,10 @@ with script_log(snakemake) as log:
     # what each pixel shows: the fraction of its samples on each part; the colour it is shown in
     display = dict(illuminant=colour_cfg["illuminant"], observer=scene.observer,
                    wavelengths=scene.wavelengths)
-    (samples, _), = traced.values()  # the one trace: every camera sample of the image
+    if traced:  # the one trace: every camera sample of the image
+        (samples, _), = traced.values()
+    else:  # an image of several bands keeps no trace (pipeline.render): trace it whole here
+        samples, _, _ = trace_once(scene, None)
     stats = part_pixels(samples, scene.mesh.cell_data["part"],
                         result.XYZ, scale, colour_cfg["space"], colour_cfg["gamut_clip"], display)
     W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
