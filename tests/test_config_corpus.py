@@ -181,6 +181,8 @@ CORPUS = [
     ("unknown-material", set_(f"{CT}.fig4.material", "Copper"), r"figures\.cook_torrance_1982\.fig4\.material: unknown material 'Copper'"),
     ("unknown-table1-row", set_(f"{CT}.fig8.parts.face.table1", "Cheese"), r"fig8\.parts\.face\.table1: 'Cheese' is not a row"),
     ("unknown-reading", set_(f"{CT}.fig8.ambient_reading", "nope"), r"fig8\.ambient_reading: 'nope'"),
+    ("reading-named-as-a-panel", set_(f"{CT}.fig6.ambient_readings.b", "irradiance"),
+     r"fig6\.ambient_readings: 'b' does not match"),
     ("unknown-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidean", 2.0),
      r"fig7\.vase_exposure: 'Obsidean' is not a vase of fig7; known: Cu, .*Obsidian"),
     ("zero-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidian", 0), r"fig7\.vase_exposure\.Obsidian: 0 is less than or equal"),
