@@ -110,16 +110,23 @@ def test_copper_sphere_matches_mitsuba_per_pixel(root):
 
 
 @needs_mitsuba
-def test_a_scene_loaded_once_renders_what_a_fresh_load_renders(root, monkeypatch):
+def test_a_scene_loaded_once_renders_what_a_fresh_load_renders(root, monkeypatch, tmp_path):
     """mitsuba_renderer loads the scene once for all its renders (the bench's ladder), and each
     render is the image of the scene loaded anew at its spp and seed, bit for bit (Mitsuba's
     sampler fixes its base seed at load: a render that ignored it would differ)."""
     import mitsuba as mi
 
-    from reflectance.render.crosscheck import mitsuba_renderer
+    from reflectance.render.crosscheck import mitsuba_renderer, scene_to_mitsuba
 
     scene = sphere_scene(root, COPPER)
-    fresh = {(spp, seed): render_mitsuba(scene, spp, seed, variant="scalar_spectral")[0]
+    mi.set_variant("scalar_spectral")
+
+    def fresh_load(spp, seed, folder):  # the scene loaded anew with this spp and seed, rendered
+        folder.mkdir()
+        loaded = mi.load_dict(scene_to_mitsuba(scene, folder, spp=spp, seed=seed))
+        return np.array(mi.render(loaded, spp=spp, seed=seed), dtype=np.float64)[..., :3]
+
+    fresh = {(spp, seed): fresh_load(spp, seed, tmp_path / f"{spp}_{seed}")
              for spp, seed in ((4, 1), (16, 2))}
     loads, load_dict = [], mi.load_dict
     monkeypatch.setattr(mi, "load_dict", lambda d: loads.append(d["type"]) or load_dict(d))

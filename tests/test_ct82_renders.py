@@ -334,7 +334,7 @@ def fig6_published(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def fig7_published(tmp_path_factory):
-    return run_fig7(tmp_path_factory.mktemp("ct82_fig7_published"), "published", (96, 128, 2))
+    return run_fig7(tmp_path_factory.mktemp("ct82_fig7_default"), "published", (96, 128, 2))
 
 
 def object_lab(codes, XYZ):
