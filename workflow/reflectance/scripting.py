@@ -8,7 +8,7 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["script_log", "peak_memory"]
+__all__ = ["script_log", "peak_memory", "figure_variants"]
 
 
 def peak_memory():
@@ -56,3 +56,21 @@ def script_log(snakemake):
         finally:
             sys.stdout, sys.stderr = old_out, old_err
             logger.removeHandler(handler)
+
+
+def figure_variants(params):
+    """The variants one figure-family job writes (C&T Figs. 6 and 7, workflow/rules/renders.smk):
+    ``[(prefix of its output names, ambient reference, published settings or None), ...]``, the
+    default figure first (unprefixed; only if ``params.published``), then each reading of
+    ``params.readings`` (``{reading: reference}``), prefixed ``<reading>_``.
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> figure_variants(SimpleNamespace(published={"k": 1}, reference="irradiance",
+    ...                                 readings={"as_printed": "intensity"}))
+    [('', 'irradiance', {'k': 1}), ('as_printed_', 'intensity', None)]
+    """
+    default = [("", params.reference, params.published)] if params.published else []
+    return default + [(f"{reading}_", reference, None)
+                      for reading, reference in params.readings.items()]

@@ -14,7 +14,7 @@ from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import spheres_scene_article
 from reflectance.scripting import script_log
-from reflectance.optics.spectra import load_material, wavelength_grid
+from reflectance.optics.spectra import DEFAULT_RECOVERY, load_material, wavelength_grid
 from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
@@ -37,7 +37,7 @@ with script_log(snakemake) as log:
         X, Y, Z = rho @ W
         pigment = pigments[s["diffuse_material"]]
         rows.append({"sphere": s["name"], "munsell": pigment["notation"],
-                     "recovery": pigment.get("recovery", "Meng 2015"),
+                     "recovery": pigment.get("recovery", DEFAULT_RECOVERY),
                      "albedo_Y": Y, "albedo_x": X / (X + Y + Z), "albedo_y": Y / (X + Y + Z),
                      "clear_coat": cfg["material"], "clear_coat_F0_Y": F0_Y, "m": cfg["m"],
                      "s": cfg["s"], "d": cfg["d"], "exposure_scale": scale})

@@ -13,8 +13,9 @@ from reflectance.audit.colour_shift import reflected_XYZ
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.optics.spectra import (material_from_table, read_spectrum_csv,
-                                        reflectance_from_munsell, wavelength_grid)
+from reflectance.optics.spectra import (DEFAULT_RECOVERY, material_from_table,
+                                        read_spectrum_csv, reflectance_from_munsell,
+                                        wavelength_grid)
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -27,7 +28,7 @@ with script_log(snakemake) as log:
     files = dict(zip(cfg["materials"], snakemake.input.spectra))
     for name in cfg["materials"]:
         entry = entries[name]
-        own = entry.get("recovery", "Meng 2015")
+        own = entry.get("recovery", DEFAULT_RECOVERY)
         tables = {method: read_spectrum_csv(files[name]) if method == own
                   else reflectance_from_munsell(entry["notation"], method, grid)
                   for method in cfg["methods"]}

@@ -23,7 +23,7 @@ from reflectance.render.pipeline import display_image, render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.render.shading import ambient_intensity
 from reflectance.io.tables import write_csv
-from reflectance.scripting import script_log
+from reflectance.scripting import figure_variants, script_log
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
@@ -121,9 +121,7 @@ def variant(log, out, reference, published, traced):
 with script_log(snakemake) as log:
     traced = {}  # the variants' panels share vase, camera and lights: traced once (pipeline.render)
     # the default figure (if params.published; unprefixed outputs), then each reading
-    variants = ([("", snakemake.params.reference, snakemake.params.published)]
-                if snakemake.params.published else []) + [
-        (f"{reading}_", reference, None) for reading, reference in snakemake.params.readings.items()]
+    variants = figure_variants(snakemake.params)
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         variant(log, {key: getattr(snakemake.output, prefix + key) for key in OUTPUTS},

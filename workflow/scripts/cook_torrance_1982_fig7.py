@@ -24,7 +24,7 @@ from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982, fig7_vase
 from reflectance.render.composite import appearance, common_exposure, covered_rows, image_grid
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.scripting import script_log
+from reflectance.scripting import figure_variants, script_log
 
 GROUPS = {"metal": "six metals: Fig. 6b's s, d, D; F from measured n, k",
           "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "variant, not in the paper"}
@@ -135,9 +135,7 @@ def variant(log, out, reference, published, traced):
 with script_log(snakemake) as log:
     traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
     # the default figure (if params.published; unprefixed outputs), then each reading
-    variants = ([("", snakemake.params.reference, snakemake.params.published)]
-                if snakemake.params.published else []) + [
-        (f"{reading}_", reference, None) for reading, reference in snakemake.params.readings.items()]
+    variants = figure_variants(snakemake.params)
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}

@@ -8,12 +8,16 @@ file as it was.
 from pathlib import Path
 
 from reflectance.scripting import script_log
-from reflectance.optics.spectra import (reflectance_from_munsell, spectra_by_material,
-                                        write_spectrum_csvs)
+from reflectance.optics.spectra import (DEFAULT_RECOVERY, reflectance_from_munsell,
+                                        spectra_by_material, write_spectrum_csvs)
+
+
+def recovery(entry):
+    return entry.get("recovery", DEFAULT_RECOVERY)
 
 
 def derive(entry):
-    return reflectance_from_munsell(entry["notation"], method=entry.get("recovery", "Meng 2015"))
+    return reflectance_from_munsell(entry["notation"], method=recovery(entry))
 
 
 with script_log(snakemake) as log:
@@ -23,4 +27,4 @@ with script_log(snakemake) as log:
     for material, entry in entries.items():
         reflectance = tables[material]["reflectance"]
         log.info("%s: Munsell %s, %s, reflectance %.4f-%.4f", material, entry["notation"],
-                 entry.get("recovery", "Meng 2015"), reflectance.min(), reflectance.max())
+                 recovery(entry), reflectance.min(), reflectance.max())

@@ -520,26 +520,10 @@ def _extend_line_segment(a, b, distance=1.0):
 def _intersect_line_segments(l_1, l_2):
     """Intersections of every segment of ``l_1`` (n, 4) with every segment of ``l_2`` (m, 4).
 
-    Returns ``(xy (n, m, 2), intersect (n, m))``, NaN where they do not intersect. The standard
-    parametric solution, in the order of operations of colour-science's
-    ``colour.geometry.intersect_line_segments``.
+    Returns ``(xy (n, m, 2), intersect (n, m))``, NaN where they do not intersect: the pairs of
+    :func:`_intersect_line_segments_pairs`, broadcast.
     """
-    x_1, y_1, x_2, y_2 = (l_1[:, i, None] for i in range(4))
-    x_3, y_3, x_4, y_4 = (l_2[None, :, i] for i in range(4))
-    x_4_x_3 = x_4 - x_3
-    y_1_y_3 = y_1 - y_3
-    y_4_y_3 = y_4 - y_3
-    x_1_x_3 = x_1 - x_3
-    x_2_x_1 = x_2 - x_1
-    y_2_y_1 = y_2 - y_1
-    numerator_a = x_4_x_3 * y_1_y_3 - y_4_y_3 * x_1_x_3
-    numerator_b = x_2_x_1 * y_1_y_3 - y_2_y_1 * x_1_x_3
-    denominator = y_4_y_3 * x_2_x_1 - x_4_x_3 * y_2_y_1
-    with np.errstate(divide="ignore", invalid="ignore"):
-        u_a = numerator_a / denominator
-        u_b = numerator_b / denominator
-    intersect = (u_a >= 0) & (u_a <= 1) & (u_b >= 0) & (u_b <= 1)
-    xy = np.stack([x_1 + x_2_x_1 * u_a, y_1 + y_2_y_1 * u_a], axis=-1)
+    xy, intersect = _intersect_line_segments_pairs(l_1[:, None, :], l_2[None, :, :])
     xy[~intersect] = np.nan
     return xy, intersect
 
@@ -599,10 +583,12 @@ def _closest_locus_sample(xy, xy_n, locus_xy, inverse):
 
 
 def _intersect_line_segments_pairs(l_1, l_2):
-    """:func:`_intersect_line_segments` of the pairs ``l_1[i]``, ``l_2[i]`` (both (n, 4)):
-    ``(xy (n, 2), intersect (n,))``, the same operations in the same order."""
-    x_1, y_1, x_2, y_2 = l_1.T
-    x_3, y_3, x_4, y_4 = l_2.T
+    """Intersections of the segments ``l_1[..., :]`` and ``l_2[..., :]`` (``(x_1, y_1, x_2, y_2)``
+    in the last axis, broadcast against each other): ``(xy (..., 2), intersect (...))``. The
+    standard parametric solution, in the order of operations of colour-science's
+    ``colour.geometry.intersect_line_segments``."""
+    x_1, y_1, x_2, y_2 = np.moveaxis(l_1, -1, 0)
+    x_3, y_3, x_4, y_4 = np.moveaxis(l_2, -1, 0)
     x_4_x_3 = x_4 - x_3
     y_1_y_3 = y_1 - y_3
     y_4_y_3 = y_4 - y_3

@@ -64,6 +64,7 @@ _EXPORTS = {
     "SpectraError": "spectra",
     "EXPORT_RANGE_NM": "spectra",
     "RECOVERY_METHODS": "spectra",
+    "DEFAULT_RECOVERY": "spectra",
     "SOURCES_COLUMNS": "spectra",
     "wavelength_grid": "spectra",
     "Material": "spectra",

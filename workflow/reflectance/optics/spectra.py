@@ -42,6 +42,7 @@ __all__ = [
     "SpectraError",
     "EXPORT_RANGE_NM",
     "RECOVERY_METHODS",
+    "DEFAULT_RECOVERY",
     "SOURCES_COLUMNS",
     "wavelength_grid",
     "Material",
@@ -72,6 +73,8 @@ SAMPLE_STEP_NM = 5.0
 #: colour-science spectral recovery methods usable here (reflectance from XYZ under a given
 #: illuminant and observer); 'Mallett 2019' and 'Smits 1999' work from sRGB and are left out.
 RECOVERY_METHODS = ("Jakob 2019", "Meng 2015", "Otsu 2018")
+#: the recovery of a Munsell material without ``recovery`` (the schema's default too)
+DEFAULT_RECOVERY = "Meng 2015"
 _RECOVERY_DOI = {"Jakob 2019": "10.1111/cgf.13626", "Meng 2015": "10.1111/cgf.12676",
                  "Otsu 2018": "10.1111/cgf.13332"}
 _MUNSELL_DOI = "10.1364/JOSA.33.000385"  # Newhall, Nickerson & Judd 1943 (the renotation)
@@ -585,7 +588,7 @@ def _munsell_conditions(wavelengths):
     return cmfs, illuminant
 
 
-def reflectance_from_munsell(notation, method="Meng 2015", wavelengths=None):
+def reflectance_from_munsell(notation, method=DEFAULT_RECOVERY, wavelengths=None):
     """A smooth reflectance spectrum with the colour of a Munsell notation.
 
     The notation's xyY (Munsell renotation, relative to CIE Illuminant C) is turned into XYZ and
@@ -664,7 +667,7 @@ def sources_table(materials, spectra_dir="spectra"):
             rows.append((name, info["dataset"], info["reference"], info["DOI"], "measured",
                          notes))
         elif entry["source"] == "munsell":
-            method = entry.get("recovery", "Meng 2015")
+            method = entry.get("recovery", DEFAULT_RECOVERY)
             reference = (f"Munsell renotation (Newhall, Nickerson & Judd 1943) via colour-science "
                          f"{_colour_version()}; reflectance recovered with {method} under CIE "
                          f"Illuminant C and the CIE 1931 2 degree observer")

@@ -138,21 +138,6 @@ def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, displ
     return stats
 
 
-def _erode(mask):
-    """A 2-D boolean mask less its rim: a pixel stays if it and its four neighbours are set, with
-    nothing set outside the image (``scipy.ndimage.binary_erosion`` with its default cross and
-    ``border_value=0``)."""
-    mask = np.asarray(mask, dtype=bool)
-    out = mask.copy()
-    out[1:] &= mask[:-1]
-    out[:-1] &= mask[1:]
-    out[:, 1:] &= mask[:, :-1]
-    out[:, :-1] &= mask[:, 1:]
-    out[[0, -1]] = False
-    out[:, [0, -1]] = False
-    return out
-
-
 def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
     """How an object reads in its display image: visibility, lightness range, highlight colour.
 
@@ -169,11 +154,13 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
         ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
         channel at 255 (NaN if none); ``clipped``: fraction of object pixels with a channel at 255.
     """
+    from scipy import ndimage
+
     from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy
     from reflectance.colour.display import decode_8bit, display_space
 
     ds = display_space(space)
-    on = _erode(np.asarray(XYZ)[..., 1] > 0)
+    on = ndimage.binary_erosion(np.asarray(XYZ)[..., 1] > 0)  # the object less its rim
     codes = np.round(np.asarray(encoded)[on] * 255)
     # the display's EOTF and CIELAB as colour-science computes them, to the bit (colour's values
     # for the 256 codes; colorimetry's XYZ_to_xy and XYZ_to_Lab), without importing it
