@@ -40,6 +40,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
 from reflectance.render.idbuffer import IdRenderer
+from reflectance.render.parallel import Tasks, render_threads
 from reflectance.render.primitives import Primitives
 from reflectance.render.shading import shade, white_card_luminance
 from reflectance.render.shadows import shadow_masks
@@ -149,7 +150,7 @@ def _silent(phase):
 
 
 def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None,
-          renderer=None):
+          renderer=None, threads=1):
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
     (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
@@ -158,7 +159,9 @@ def trace(scene, rows=None, primitives=None, progress=None, select=None, map_siz
     light maps' side (default: from the band's share of the grid). ``progress``, if given, is
     called with the name of each phase as it starts. ``renderer``, an open
     :class:`reflectance.render.idbuffer.IdRenderer` of ``primitives``, draws the camera's and the
-    lights' ID buffers (one window, the scene uploaded once); default one per phase."""
+    lights' ID buffers (one window, the scene uploaded once); default one per phase.
+    ``threads``: of the per-sample work (:mod:`reflectance.render.parallel`; the same result at
+    any count)."""
     progress = progress or _silent
     t0 = time.perf_counter()
     progress("visibility")
@@ -168,15 +171,17 @@ def trace(scene, rows=None, primitives=None, progress=None, select=None, map_siz
     progress("shadows")
     if scene.shadows and scene.lights:
         shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
-                                map_size or _map_size(scene.camera, rows), renderer)
+                                map_size or _map_size(scene.camera, rows), renderer, threads)
     else:
         shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
     t2 = time.perf_counter()
     return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
 
 
-def shade_samples(scene, samples, shadowed, spectral=None, components=False, fresnel_table=None):
-    """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``)."""
+def shade_samples(scene, samples, shadowed, spectral=None, components=False, fresnel_table=None,
+                  threads=1):
+    """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``);
+    ``threads`` as for :func:`reflectance.render.shading.shade`."""
     spectral = scene.spectral if spectral is None else spectral
     N = len(samples.hit)
     XYZ = np.zeros((N, 3))
@@ -197,7 +202,7 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False, fre
                         samples.uv[idx], material, scene.lights, shadowed[:, idx],
                         scene.ambient, scene.wavelengths, scene.observer, spectral,
                         scene.table_size, components=components,
-                        fresnel_table=fresnel_table)
+                        fresnel_table=fresnel_table, threads=threads)
             if components:
                 out, got = out
                 for name in COMPONENTS:
@@ -226,25 +231,27 @@ def trace_key(scene, rows=None):
     return digest.hexdigest()
 
 
-def trace_once(scene, traced, rows=None, tools=None, progress=None):
+def trace_once(scene, traced, rows=None, tools=None, progress=None, threads=1):
     """:func:`trace` of ``scene`` (the band ``rows``), or the one ``traced`` keeps under its
     :func:`trace_key`: ``traced`` is a dict kept across scenes that differ only in materials (a
     new trace is stored in it), or None to keep nothing. ``tools``, if given, is called only when
     a trace is needed and returns ``(primitives, renderer)`` for :func:`trace`. Returns
-    ``(samples, shadowed, timings)``, zero timings for a kept trace."""
+    ``(samples, shadowed, timings)``, zero timings for a kept trace; ``threads`` as for
+    :func:`trace`."""
     key = trace_key(scene, rows) if traced is not None else None
     if key is not None and key in traced:
         samples, shadowed = traced[key]
         return samples, shadowed, {"visibility": 0.0, "shadows": 0.0}
     primitives, renderer = tools() if tools is not None else (None, None)
-    samples, shadowed, timings = trace(scene, rows, primitives, progress, renderer=renderer)
+    samples, shadowed, timings = trace(scene, rows, primitives, progress, renderer=renderer,
+                                       threads=threads)
     if key is not None:
         traced[key] = (samples, shadowed)
     return samples, shadowed, timings
 
 
 def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
-           traced=None):
+           traced=None, threads=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -265,10 +272,15 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         does not look at (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7
         vases): an image traced in one band is looked up by :func:`trace_key` and traced once;
         the result is the same, bit for bit. Images of several bands are not kept (memory).
+    threads : int, optional
+        Threads of the per-sample work (:func:`reflectance.render.parallel.render_threads`:
+        default the environment variable ``REFLECTANCE_RENDER_THREADS``, else the cores this
+        process may use; 1 is the serial path). The image is the same, bit for bit, at any count.
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
         raise ValueError("components are available with spectral='table' only")
+    threads = render_threads(threads)
     t0 = time.perf_counter()
     camera, n_ss = scene.camera, scene.camera.supersample
     bands = tiles(camera)
@@ -293,6 +305,9 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         def tools():
             if not made:
                 made["primitives"] = Primitives(scene.mesh)
+                if threads > 1 and scene.shadows and scene.lights:  # the shadow walks' edge
+                    # table, made on a worker while the camera's rays are traced
+                    Tasks(threads).submit(lambda: made["primitives"].neighbours)
                 made["renderer"] = stack.enter_context(IdRenderer(made["primitives"]))
             return made["primitives"], made["renderer"]
 
@@ -300,10 +315,11 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
             where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
             samples, shadowed, t = trace_once(
                 scene, traced if keep else None, (start, stop), tools,
-                progress and (lambda phase: progress(where + phase)))
+                progress and (lambda phase: progress(where + phase)), threads)
             t1 = time.perf_counter()
             (progress or _silent)(where + "shading")
-            shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
+            shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table,
+                                   threads)
             XYZ, got = shaded if components else (shaded, None)
             rows = slice(start // n_ss, stop // n_ss)
             image[rows] = samples.to_pixels(XYZ)
@@ -326,7 +342,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
                                refinement.threshold, white)
             del difference, silhouette
             refined = _refine(scene, tools, mask, image, parts, spectral, components,
-                              fresnel_table, timings, progress)
+                              fresnel_table, timings, progress, threads)
             timings["refinement"] = time.perf_counter() - t1
     pixels = camera.height * camera.width
     # the sample budget: every pixel's n x n, and N x N more in each refined pixel
@@ -337,7 +353,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
 
 
 def _refine(scene, tools, mask, image, parts, spectral, components, fresnel_table,
-            timings, progress):
+            timings, progress, threads=1):
     """Replace the pixels of ``mask`` in ``image`` (and ``parts``) by the box-filter mean of
     their N x N samples (:mod:`reflectance.render.adaptive`); return how many were refined.
     ``tools()`` gives the scene's primitives and their ID-buffer window."""
@@ -353,9 +369,10 @@ def _refine(scene, tools, mask, image, parts, spectral, components, fresnel_tabl
         primitives, renderer = tools()
         samples, shadowed, t = trace(fine, rows, primitives,
                                      progress and (lambda phase: progress(where + phase)),
-                                     select, map_size, renderer)
+                                     select, map_size, renderer, threads)
         t1 = time.perf_counter()
-        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table)
+        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table,
+                               threads)
         XYZ, got = shaded if components else (shaded, None)
         flat[pixels] = XYZ.reshape(len(pixels), N * N, 3).mean(axis=1)
         for name, value in (got or {}).items():

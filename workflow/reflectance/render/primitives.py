@@ -7,6 +7,8 @@ visibility and the shadows alike.
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 import pyvista as pv
 
@@ -16,6 +18,8 @@ from reflectance.geometry.vectors import normalize
 from reflectance.render.rays import sphere_hits, triangle_hits
 
 __all__ = []
+
+_NEIGHBOURS_LOCK = threading.Lock()  # the shadow pass's threads share one table
 
 
 class Primitives:
@@ -77,7 +81,12 @@ class Primitives:
         """(n, 3) triangle across the edge opposite each corner (-1: none), on welded vertices.
 
         Coincident vertices (seams, joints between parts) are welded at 1e-9 of the scene size.
+        Made once, on first use (threads asking meanwhile wait for it).
         """
+        with _NEIGHBOURS_LOCK:
+            return self._find_neighbours()
+
+    def _find_neighbours(self):
         if getattr(self, "_neighbours", None) is None:
             grid = np.round((self.points - self.center) / (1e-9 * self.radius)).astype(np.int64)
             order = np.lexsort(grid.T)

@@ -51,6 +51,7 @@ from reflectance.optics.fresnel import fresnel, fresnel_Schlick1994
 from reflectance.optics.microfacet import ROUGHNESS_PARAMETERS, c3_texture_Blinn1977
 from reflectance.geometry.texture import texture
 from reflectance.render.lights import DirectionalLight, PointLight, light_vectors
+from reflectance.render.parallel import Tasks, pieces
 
 __all__ = [
     "SHADING_MODELS",
@@ -473,7 +474,7 @@ def _light_terms(light, position, shadowed):
 
 def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambient=None,
           wavelengths=None, observer=OBSERVER_DEFAULT, spectral="table", table_size=1025,
-          components=False, fresnel_table=None):
+          components=False, fresnel_table=None, threads=1):
     """XYZ reflected (and emitted) toward the viewer by surface samples of one material.
 
     ``I_r = I_ia R_a + sum_l I_il (N.L_l) d omega_il R_l(lambda)`` (Cook & Torrance 1982) with
@@ -504,6 +505,10 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
     fresnel_table : callable, optional
         ``f(material, W, size)`` giving the Fresnel table (``spectral="table"`` only); default
         :func:`fresnel_XYZ_table`, e.g. :func:`fresnel_XYZ_table_rgb` for an RGB renderer's F.
+    threads : int or None
+        Threads of the table path's per-sample work (:mod:`reflectance.render.parallel`; None:
+        the default count): pieces of samples, each shaded as alone; the same result at any
+        count.
 
     Returns
     -------
@@ -549,8 +554,8 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
                 by_spectrum[light.spectrum] = fresnel_table(material, w, table_size)
         tables = [by_spectrum.get(light.spectrum) for light in lights]
         diffuse_XYZ = [albedo @ w for w in W]
-        for start in range(0, n, _SAMPLE_CHUNK):
-            sl = slice(start, min(n, start + _SAMPLE_CHUNK))
+
+        def shade_piece(sl):  # every sample's value depends on that sample alone
             dist = _distribution_kwargs(material, uv[sl], (sl.stop - sl.start,))
             for i, light in enumerate(lights):
                 L, energy = _light_terms(light, position[sl],
@@ -578,6 +583,9 @@ def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambien
                     total[at] += value
                     if components:
                         direct["diffuse"][at] += value
+
+        tasks = Tasks(threads)  # the pieces write disjoint rows
+        tasks.map(shade_piece, pieces(n, tasks.threads, _SAMPLE_CHUNK))
     else:
         # brute force: the model per wavelength, F(lambda, V.H) from n, k, summed against W
         step = max(1, _SPECTRAL_CHUNK // len(wavelengths))

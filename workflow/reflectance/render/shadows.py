@@ -21,6 +21,7 @@ from reflectance.render.camera import View
 from reflectance.render.primitives import Primitives
 from reflectance.render.idbuffer import distinct_keys, key_image, neighbour_keys, renderer_for
 from reflectance.render.lights import DirectionalLight, as_light, light_vectors
+from reflectance.render.parallel import Tasks, pieces
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.samples import SurfaceSamples
 
@@ -103,7 +104,7 @@ def _terminator_offset(scene, samples, idx, P):
     return P
 
 
-_CHUNK = 1 << 19  # ray-primitive pairs tested at once (bounds the memory of the temporaries)
+_CHUNK = 1 << 15  # ray-primitive pairs (and lifted samples) at once: temporaries that stay in cache
 _WALK_STEPS = 8  # edges crossed from a missed candidate toward the shadow ray's crossing
 
 
@@ -155,7 +156,7 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
         blocked[r[hit]] = True
 
 
-def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
+def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=1):
     """True where a surface sample does not see a light (cast shadow or facing away).
 
     Samples whose shading normal faces away from the light (N.L <= 0) are in shadow without a
@@ -180,6 +181,9 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
     renderer : IdRenderer, optional
         An open :class:`reflectance.render.idbuffer.IdRenderer` of the samples' primitives to
         draw the light maps with (left open); default a new window for this call.
+    threads : int or None
+        Threads of the per-sample work (:func:`reflectance.render.parallel.render_threads`;
+        None: the default count); the mask is the same at any count.
 
     Returns
     -------
@@ -210,15 +214,23 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
     eps = 1e-9 * scene.radius
     position = samples.position[surface]
     normal = samples.normal[surface]
-    lifted = _terminator_offset(scene, samples, surface,
-                                np.ascontiguousarray(position.T)) + eps * normal.T
+    # the per-sample work in pieces on the render's threads (:mod:`reflectance.render.parallel`):
+    # the lifted origins while the first light's map is drawn, each light's ray tests while the
+    # next light's map is drawn; every piece computes its samples as the serial path does
+    lifting, testing = Tasks(threads), Tasks(threads)
+    origins = np.ascontiguousarray(position.T)
+    for piece in pieces(len(surface), lifting.threads, _CHUNK):
+        lifting.submit(_terminator_offset, scene, samples, surface[piece], origins[:, piece])
+    lifted = None
     own = scene.key[samples.triangle[surface]]
+    blocked_of = []
     with renderer_for(scene, renderer) as maps:
-        for i, light in enumerate(lights):
+        for light in lights:
             L, distance = light_vectors(light, position)
             facing = np.nonzero(dot(normal, L) > 0)[0]
             blocked = np.ones(len(surface), bool)
             blocked[facing] = False
+            blocked_of.append(blocked)
             if isinstance(light, DirectionalLight):
                 Ld, t_max = np.asarray(light.direction)[:, None], np.inf  # one for all rays
             else:
@@ -239,11 +251,17 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None):
                 candidates = distinct_keys(near, own[members])
                 local, j = np.nonzero(candidates >= 0)
                 ray, prim = members[local], candidates[local, j]
-                for start in range(0, len(ray), _CHUNK):
-                    chunk = slice(start, start + _CHUNK)
-                    _block(scene, ray[chunk], prim[chunk], lifted, Ld, t_max, eps, planes,
-                           own, blocked)
-            shadow[i, surface[blocked]] = True
+                if lifted is None:  # Hanika 2021's lift, then the offset along the normal
+                    lifted = np.concatenate(lifting.results(), axis=1) + eps * normal.T
+                # a sample is blocked if any of its tests hits: the pieces' order does not
+                # change the mask (a piece only skips walks of samples already blocked)
+                for chunk in pieces(len(ray), testing.threads, _CHUNK):
+                    testing.submit(_block, scene, ray[chunk], prim[chunk], lifted, Ld, t_max,
+                                   eps, planes, own, blocked)
+        testing.results()
+    lifting.results()  # (no map drawn: nothing was waiting for the lift)
+    for i, blocked in enumerate(blocked_of):
+        shadow[i, surface[blocked]] = True
     return shadow
 
 

@@ -1,0 +1,75 @@
+"""The renderer's threads (reflectance.render.parallel): the same image, bit for bit, at any
+thread count; the thread count's sources."""
+
+import numpy as np
+import pytest
+import yaml
+
+import reflectance.render.pipeline as pipeline
+from reflectance.render.parallel import THREADS_VARIABLE, pieces, render_threads
+from reflectance.render.pipeline import render
+from reflectance.render.scene import scene_from_dict
+
+
+def hard_scene(root, size=48, adaptive=True):
+    """The hard bench scene (a vase and spheres; two point lights and a sun: one perspective
+    light map, a cube map, an orthographic one), small."""
+    doc = yaml.safe_load((root / "workflow" / "scenes" / "bench_hard.yaml").read_text())
+    doc["camera"].update(width=size, height=size)
+    doc["camera"]["adaptive"] = {"enabled": adaptive, "threshold": 2.0, "supersample": 4}
+    return scene_from_dict(doc, spectra_dir=root / "spectra")
+
+
+def same_bits(a, b):
+    return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+@pytest.mark.parametrize("threads", [2, 3])
+def test_threads_render_the_serial_images_bit_for_bit(root, threads):
+    scene = hard_scene(root)
+    serial = render(scene, components=True, threads=1)
+    parallel = render(scene, components=True, threads=threads)
+    assert serial.stats["refined"] > 0 and 0 < min(serial.stats["shadowed"])
+    assert same_bits(parallel.XYZ, serial.XYZ)
+    assert all(same_bits(parallel.components[k], serial.components[k])
+               for k in serial.components)
+    assert parallel.stats == serial.stats
+    assert np.array_equal(parallel.refined, serial.refined)
+
+
+def test_threads_render_bands_bit_for_bit(root, monkeypatch):
+    scene = hard_scene(root, size=40, adaptive=False)
+    monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 0)
+    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 40 * 2 * 2 * 7)  # bands of 7 pixel rows
+    assert len(pipeline.tiles(scene.camera)) == 6
+    serial = render(scene, threads=1)
+    assert serial.stats["hit"] > 0
+    assert same_bits(render(scene, threads=2).XYZ, serial.XYZ)
+
+
+def test_thread_count_from_argument_environment_or_cores(monkeypatch):
+    import os
+
+    monkeypatch.delenv(THREADS_VARIABLE, raising=False)
+    assert render_threads() == len(os.sched_getaffinity(0))
+    monkeypatch.setenv(THREADS_VARIABLE, "3")
+    assert render_threads() == 3
+    assert render_threads(1) == 1
+    for bad in ("0", "two", "1.5", "-2"):
+        monkeypatch.setenv(THREADS_VARIABLE, bad)
+        with pytest.raises(ValueError, match=THREADS_VARIABLE):
+            render_threads()
+    with pytest.raises(ValueError, match="threads"):
+        render_threads(True)
+
+
+@pytest.mark.parametrize("n, threads, most", [(10, 1, 4), (10, 2, 4), (3, 4, 100), (0, 2, 8),
+                                              (1000, 2, 64)])
+def test_pieces_cover_the_range_in_order_once(n, threads, most):
+    got = pieces(n, threads, most)
+    assert np.array_equal(np.concatenate([np.arange(n)[s] for s in got] or [[]]), np.arange(n))
+    assert all(0 < s.stop - s.start <= most for s in got)
+    if threads == 1:  # the serial path's chunks
+        assert [s.start for s in got] == list(range(0, n, most))
+    elif n:
+        assert len(got) >= min(n, 2 * threads)

@@ -1,0 +1,111 @@
+"""Threads for the renderer's per-sample work.
+
+numpy releases the GIL inside its array loops (gathers, ufuncs, einsum, sorts) and VTK releases
+it while it draws, so independent pieces of one render's per-sample work run side by side on
+several cores in one process. Each piece computes its samples exactly as the one-thread path does
+(the same operations on the same values, elementwise), and results are put together in a fixed
+order, so an image is the same, bit for bit, at any thread count.
+
+The thread count is :func:`render_threads`: the ``threads`` argument of
+:func:`reflectance.render.pipeline.render`, else the environment variable
+:data:`THREADS_VARIABLE`, else the cores this process may run on. One thread is the serial path
+(no pool at all).
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from concurrent.futures import ThreadPoolExecutor
+
+__all__ = ["THREADS_VARIABLE", "render_threads", "Tasks", "pieces"]
+
+THREADS_VARIABLE = "REFLECTANCE_RENDER_THREADS"
+"""Environment variable overriding the renderer's default thread count (a positive integer)."""
+
+_pools = {}
+_pools_lock = threading.Lock()
+
+
+def render_threads(threads=None):
+    """The thread count of a render: ``threads`` if given, else :data:`THREADS_VARIABLE`, else
+    the number of cores this process may run on (``os.sched_getaffinity``)."""
+    where = "threads"
+    if threads is None:
+        threads = os.environ.get(THREADS_VARIABLE) or None
+        where = THREADS_VARIABLE
+    if threads is None:
+        try:
+            return max(1, len(os.sched_getaffinity(0)))
+        except AttributeError:  # pragma: no cover - not Linux
+            return max(1, os.cpu_count() or 1)
+    try:
+        value = int(threads)
+    except (TypeError, ValueError):
+        value = 0
+    if isinstance(threads, bool) or value < 1 or str(value) != str(threads).strip():
+        raise ValueError(f"{where}: the renderer's thread count must be a positive integer, "
+                         f"got {threads!r}")
+    return value
+
+
+def _pool(threads):
+    """A process-wide pool of ``threads`` workers (made once per count, kept)."""
+    with _pools_lock:
+        if threads not in _pools:
+            _pools[threads] = ThreadPoolExecutor(threads, thread_name_prefix="reflectance-render")
+        return _pools[threads]
+
+
+class Tasks:
+    """Calls run on ``threads`` worker threads (or, for one thread, at once in the caller).
+
+    :meth:`submit` queues a call; :meth:`results` waits for every call queued so far and returns
+    their results in the order they were queued (the first exception is raised). Only the
+    thread that made the object may submit (pieces never submit pieces: no pool waits on itself).
+    """
+
+    def __init__(self, threads=1):
+        self.threads = render_threads(threads)
+        self._futures = []
+
+    def submit(self, fn, *args):
+        if self.threads == 1:
+            self._futures.append(_Done(fn(*args)))
+        else:
+            self._futures.append(_pool(self.threads).submit(fn, *args))
+
+    def results(self):
+        futures, self._futures = self._futures, []
+        for future in futures:  # every piece ends (or fails) before the caller goes on
+            future.exception()
+        return [future.result() for future in futures]
+
+    def map(self, fn, items):
+        """``[fn(item) for item in items]``, the calls on the workers."""
+        for item in items:
+            self.submit(fn, item)
+        return self.results()
+
+
+class _Done:
+    """A call made at once (the one-thread path), as a finished future."""
+
+    def __init__(self, value):
+        self.value = value
+
+    def exception(self):
+        return None
+
+    def result(self):
+        return self.value
+
+
+def pieces(n, threads, most):
+    """Slices of ``range(n)`` in order: chunks of ``most`` items for one thread (the serial
+    path's), else equal pieces of at most ``most``, at least two per thread (so that uneven
+    pieces balance)."""
+    size = most
+    if threads > 1 and n:
+        size = -(-n // max(-(-n // most), 2 * threads))
+    return [slice(start, min(n, start + size)) for start in range(0, n, size)]
