@@ -51,7 +51,10 @@ def test_thread_count_from_argument_environment_or_cores(monkeypatch):
     import os
 
     monkeypatch.delenv(THREADS_VARIABLE, raising=False)
+    monkeypatch.delenv("OMP_NUM_THREADS", raising=False)
     assert render_threads() == len(os.sched_getaffinity(0))
+    monkeypatch.setenv("OMP_NUM_THREADS", "5")  # a scheduler's grant (Snakemake: the rule's)
+    assert render_threads() == 5
     monkeypatch.setenv(THREADS_VARIABLE, "3")
     assert render_threads() == 3
     assert render_threads(1) == 1
@@ -61,15 +64,21 @@ def test_thread_count_from_argument_environment_or_cores(monkeypatch):
             render_threads()
     with pytest.raises(ValueError, match="threads"):
         render_threads(True)
+    monkeypatch.delenv(THREADS_VARIABLE)
+    monkeypatch.setenv("OMP_NUM_THREADS", "x")
+    with pytest.raises(ValueError, match="OMP_NUM_THREADS"):
+        render_threads()
 
 
 @pytest.mark.parametrize("n, threads, most", [(10, 1, 4), (10, 2, 4), (3, 4, 100), (0, 2, 8),
-                                              (1000, 2, 64)])
+                                              (1000, 2, 64), (50000, 2, 1 << 15), (5000, 3, 1 << 15)])
 def test_pieces_cover_the_range_in_order_once(n, threads, most):
-    got = pieces(n, threads, most)
+    got = pieces(n, threads, most, least=1000)
     assert np.array_equal(np.concatenate([np.arange(n)[s] for s in got] or [[]]), np.arange(n))
     assert all(0 < s.stop - s.start <= most for s in got)
     if threads == 1:  # the serial path's chunks
         assert [s.start for s in got] == list(range(0, n, most))
-    elif n:
-        assert len(got) >= min(n, 2 * threads)
+    elif n >= 2 * threads * 1000:  # two per thread, when each can hold 1000
+        assert len(got) >= 2 * threads
+    elif 0 < n < 1000 and n <= most:  # too little to split
+        assert len(got) == 1

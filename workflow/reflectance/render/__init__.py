@@ -2,7 +2,7 @@
 
 Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
-(spectral, per-angle Fresnel table); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
+(spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
 would); scene (scene files); pipeline (trace, shade, write);
 composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
 exported to the path tracer Mitsuba 3, an optional extra).
@@ -14,7 +14,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "parallel", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -53,6 +53,8 @@ _EXPORTS = {
     "LIGHT_TYPES": "lights",
     "as_light": "lights",
     "light_vectors": "lights",
+    "THREADS_VARIABLE": "parallel",
+    "render_threads": "parallel",
     "render_to_files": "pipeline",
     "COMPONENTS": "pipeline",
     "RenderResult": "pipeline",

@@ -8,8 +8,9 @@ order, so an image is the same, bit for bit, at any thread count.
 
 The thread count is :func:`render_threads`: the ``threads`` argument of
 :func:`reflectance.render.pipeline.render`, else the environment variable
-:data:`THREADS_VARIABLE`, else the cores this process may run on. One thread is the serial path
-(no pool at all).
+:data:`THREADS_VARIABLE`, else ``OMP_NUM_THREADS`` (what a job scheduler grants: Snakemake sets
+it to a rule's ``threads``, 1 in this workflow), else the cores this process may run on. One
+thread is the serial path (no pool at all).
 """
 
 from __future__ import annotations
@@ -29,11 +30,12 @@ _pools_lock = threading.Lock()
 
 def render_threads(threads=None):
     """The thread count of a render: ``threads`` if given, else :data:`THREADS_VARIABLE`, else
-    the number of cores this process may run on (``os.sched_getaffinity``)."""
+    ``OMP_NUM_THREADS``, else the number of cores this process may run on
+    (``os.sched_getaffinity``)."""
     where = "threads"
-    if threads is None:
-        threads = os.environ.get(THREADS_VARIABLE) or None
-        where = THREADS_VARIABLE
+    for name in (THREADS_VARIABLE, "OMP_NUM_THREADS"):
+        if threads is None:
+            threads, where = os.environ.get(name) or None, name
     if threads is None:
         try:
             return max(1, len(os.sched_getaffinity(0)))
@@ -101,11 +103,11 @@ class _Done:
         return self.value
 
 
-def pieces(n, threads, most):
+def pieces(n, threads, most, least=1 << 12):
     """Slices of ``range(n)`` in order: chunks of ``most`` items for one thread (the serial
     path's), else equal pieces of at most ``most``, at least two per thread (so that uneven
-    pieces balance)."""
+    pieces balance) unless that makes pieces of fewer than ``least`` items."""
     size = most
     if threads > 1 and n:
-        size = -(-n // max(-(-n // most), 2 * threads))
+        size = -(-n // max(-(-n // most), min(2 * threads, n // least)))
     return [slice(start, min(n, start + size)) for start in range(0, n, size)]

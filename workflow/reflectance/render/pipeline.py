@@ -166,7 +166,7 @@ def trace(scene, rows=None, primitives=None, progress=None, select=None, map_siz
     t0 = time.perf_counter()
     progress("visibility")
     samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows,
-                         select, renderer)
+                         select, renderer, threads)
     t1 = time.perf_counter()
     progress("shadows")
     if scene.shadows and scene.lights:
@@ -274,8 +274,9 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         the result is the same, bit for bit. Images of several bands are not kept (memory).
     threads : int, optional
         Threads of the per-sample work (:func:`reflectance.render.parallel.render_threads`:
-        default the environment variable ``REFLECTANCE_RENDER_THREADS``, else the cores this
-        process may use; 1 is the serial path). The image is the same, bit for bit, at any count.
+        default the environment variable ``REFLECTANCE_RENDER_THREADS``, else
+        ``OMP_NUM_THREADS``, else the cores this process may use; 1 is the serial path). The
+        image is the same, bit for bit, at any count.
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
@@ -322,10 +323,10 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
                                    threads)
             XYZ, got = shaded if components else (shaded, None)
             rows = slice(start // n_ss, stop // n_ss)
-            image[rows] = samples.to_pixels(XYZ)
+            image[rows] = samples.to_pixels(XYZ, threads)
             if components:
                 for name, value in got.items():
-                    parts[name][rows] = samples.to_pixels(value)
+                    parts[name][rows] = samples.to_pixels(value, threads)
             if adaptive:
                 difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
             count.add(samples, shadowed)

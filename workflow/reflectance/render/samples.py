@@ -6,6 +6,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from reflectance.render.parallel import Tasks, pieces
+
 __all__ = ["SurfaceSamples"]
 
 
@@ -74,9 +76,21 @@ class SurfaceSamples:
         values = np.asarray(values)
         return values.reshape(tuple(self.shape) + values.shape[1:])
 
-    def to_pixels(self, values):
-        """Average per-sample values over each pixel's samples (box filter): (H, W, ...)."""
+    def to_pixels(self, values, threads=1):
+        """Average per-sample values over each pixel's samples (box filter): (H, W, ...); with
+        several ``threads`` (:mod:`reflectance.render.parallel`), bands of pixel rows at once
+        (each pixel's mean as in one call)."""
         values = self.image(values)
         n = self.supersample
         rows, cols = self.shape
-        return values.reshape((rows // n, n, cols // n, n) + values.shape[2:]).mean(axis=(1, 3))
+        blocks = values.reshape((rows // n, n, cols // n, n) + values.shape[2:])
+        if threads == 1:
+            return blocks.mean(axis=(1, 3))
+        out = np.empty((rows // n, cols // n) + values.shape[2:])
+
+        def band(p):
+            out[p] = blocks[p].mean(axis=(1, 3))
+
+        tasks = Tasks(threads)
+        tasks.map(band, pieces(rows // n, tasks.threads, rows // n, least=1))
+        return out

@@ -21,13 +21,14 @@ from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.camera import Camera
 from reflectance.render.idbuffer import (dilate, distinct_keys, key_image, neighbour_keys,
                                          renderer_for)
+from reflectance.render.parallel import Tasks, pieces
 from reflectance.render.primitives import Primitives
 from reflectance.render.samples import SurfaceSamples
 
 __all__ = ["visibility"]
 
 
-def visibility(meshes, camera, rows=None, select=None, renderer=None):
+def visibility(meshes, camera, rows=None, select=None, renderer=None, threads=1):
     """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
 
     Parameters
@@ -48,6 +49,9 @@ def visibility(meshes, camera, rows=None, select=None, renderer=None):
     renderer : IdRenderer, optional
         An open :class:`reflectance.render.idbuffer.IdRenderer` of these primitives to draw
         with (left open); default a new window for this call.
+    threads : int or None
+        Threads of the per-sample work (:mod:`reflectance.render.parallel`; None: the default
+        count); the samples are the same at any count.
 
     Returns
     -------
@@ -88,18 +92,21 @@ def visibility(meshes, camera, rows=None, select=None, renderer=None):
         eye, d = view.rays(select % cols + 0.5, select // cols + start + 0.5)
         raster = keys[start - top:stop - top].ravel()[select]
     where = np.arange(N) if select is None else select  # position of each sample in the band
+    tasks = Tasks(threads)
     best_t, best_key = np.full(N, np.inf), np.full(N, -1, np.int32)
     barycentric = np.zeros((N, 2))  # (b1, b2) of the best hit so far, written in place
     best_b1, best_b2 = barycentric[:, 0], barycentric[:, 1]
 
-    def offer(sel, k):  # each sample at most once per call; chunks bound the temporaries
-        for first in range(0, len(sel), _CHUNK):
-            sc, kc = sel[first:first + _CHUNK], k[first:first + _CHUNK]
+    def offer(sel, k):  # each sample at most once per call: the pieces write disjoint samples
+        def piece(p):  # (pieces also bound the temporaries)
+            sc, kc = sel[p], k[p]
             t, b1, b2, hit = scene.intersect(eye, np.take(d, sc, axis=1), kc, 0.0, np.inf)
             better = hit & (t < best_t[sc])
             s = sc[better]
             best_t[s], best_key[s], best_b1[s], best_b2[s] = (t[better], kc[better],
                                                               b1[better], b2[better])
+
+        tasks.map(piece, pieces(len(sel), tasks.threads, _CHUNK))
 
     surface = np.nonzero(raster >= 0)[0]
     offer(surface, raster[surface])
@@ -140,7 +147,7 @@ def visibility(meshes, camera, rows=None, select=None, renderer=None):
     del d
     # best_t is inf and barycentric 0 wherever nothing was hit: they are the final arrays
     return _samples(scene, camera, (start, stop), eye, towards_camera, hit, best_t, best_key,
-                    barycentric, stats, select)
+                    barycentric, stats, select, tasks)
 
 
 _CHUNK = 1 << 18  # camera rays tested at once (bounds the memory of the ray-test temporaries)
@@ -179,17 +186,20 @@ def _search_projected_boxes(scene, view, eye, d, samples, cols, first_row, best_
                 best_t[s], best_key[s], best_b1[s], best_b2[s] = t[j], keys[j], b1[j], b2[j]
 
 
-def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, select=None):
+def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, select=None,
+             tasks=None):
     """SurfaceSamples of the rows ``band`` (start, stop), or of the samples ``select`` of it,
-    from the best exact hits; ``view`` (N, 3) is the unit V = -d."""
+    from the best exact hits; ``view`` (N, 3) is the unit V = -d. ``tasks``
+    (:class:`reflectance.render.parallel.Tasks`) interpolate the mesh samples in pieces."""
     N = len(hit)
     position, normal, geometric = np.zeros((N, 3)), np.zeros((N, 3)), np.zeros((N, 3))
     uv = np.zeros((N, 2))
     triangle = np.full(N, -1, np.int32)
 
     mesh = np.nonzero(hit & (key < scene.n))[0]  # mesh triangles: barycentric interpolation
-    for start in range(0, len(mesh), _CHUNK):  # chunks bound the temporaries
-        m = mesh[start:start + _CHUNK]
+
+    def piece(p):  # disjoint samples; pieces bound the temporaries
+        m = mesh[p]
         tri = key[m]
         triangle[m] = tri
         corner = np.take(scene.T, tri, axis=1)
@@ -209,6 +219,9 @@ def _samples(scene, camera, band, eye, view, hit, t, key, barycentric, stats, se
         geometric[m] = g
         n *= inv[:, None]
         normal[m] = np.where(good[:, None], n, g)
+
+    tasks = tasks or Tasks(1)
+    tasks.map(piece, pieces(len(mesh), tasks.threads, _CHUNK))
     del mesh
 
     s = np.nonzero(hit & (key >= scene.n))[0]  # analytic spheres: exact
