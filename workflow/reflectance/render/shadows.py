@@ -252,7 +252,8 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
                 local, j = np.nonzero(candidates >= 0)
                 ray, prim = members[local], candidates[local, j]
                 if lifted is None:  # Hanika 2021's lift, then the offset along the normal
-                    lifted = np.concatenate(lifting.results(), axis=1) + eps * normal.T
+                    lifted = np.concatenate(lifting.results(), axis=1)
+                    lifted += eps * normal.T
                 # a sample is blocked if any of its tests hits: the pieces' order does not
                 # change the mask (a piece only skips walks of samples already blocked)
                 for chunk in pieces(len(ray), testing.threads, _CHUNK):
