@@ -221,11 +221,13 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
     origins = np.ascontiguousarray(position.T)
     for piece in pieces(len(surface), lifting.threads, _CHUNK):
         lifting.submit(_terminator_offset, scene, samples, surface[piece], origins[:, piece])
-    lifted = None
+    planning = Tasks(threads)  # each light's occluder planes (they need no sample)
+    planning.submit(lambda: [scene.light_planes(light) for light in lights])
+    lifted = plane_sets = None
     own = scene.key[samples.triangle[surface]]
     blocked_of = []
     with renderer_for(scene, renderer) as maps:
-        for light in lights:
+        for i, light in enumerate(lights):
             L, distance = light_vectors(light, position)
             facing = np.nonzero(dot(normal, L) > 0)[0]
             blocked = np.ones(len(surface), bool)
@@ -235,7 +237,6 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
                 Ld, t_max = np.asarray(light.direction)[:, None], np.inf  # one for all rays
             else:
                 Ld, t_max = np.ascontiguousarray(L.T), distance * (1.0 - 1e-12) - eps
-            planes = scene.light_planes(light)
             # (no sample facing the light: all in shadow, no map to draw)
             views = _light_views(light, position[facing], scene, int(map_size)) \
                 if len(facing) else []
@@ -254,13 +255,15 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
                 if lifted is None:  # Hanika 2021's lift, then the offset along the normal
                     lifted = np.concatenate(lifting.results(), axis=1)
                     lifted += eps * normal.T
+                    [plane_sets] = planning.results()
+                planes = plane_sets[i]
                 # a sample is blocked if any of its tests hits: the pieces' order does not
                 # change the mask (a piece only skips walks of samples already blocked)
                 for chunk in pieces(len(ray), testing.threads, _CHUNK):
                     testing.submit(_block, scene, ray[chunk], prim[chunk], lifted, Ld, t_max,
                                    eps, planes, own, blocked)
         testing.results()
-    lifting.results()  # (no map drawn: nothing was waiting for the lift)
+    lifting.results(), planning.results()  # (no map drawn: nothing waited for them)
     for i, blocked in enumerate(blocked_of):
         shadow[i, surface[blocked]] = True
     return shadow

@@ -77,22 +77,24 @@ def visibility(meshes, camera, rows=None, select=None, renderer=None, threads=1)
     if not (0 <= start < stop <= height and start % n_ss == 0 and stop % n_ss == 0):
         raise ValueError(f"rows {start}..{stop} are not a band of whole pixels of the "
                          f"{height}-row sample grid")
+    tasks = Tasks(threads)
+    if select is None:  # the camera rays, on a worker while VTK draws the ID buffer
+        N = (stop - start) * cols
+        tasks.submit(view.pixel_rays, start, stop)
+    else:  # the rays through the selected samples' centres, as pixel_rays makes them
+        select = np.asarray(select, np.int64)
+        N = len(select)
+        tasks.submit(view.rays, select % cols + 0.5, select // cols + start + 0.5)
     # the ID buffer of the band and one row around it (the 3 x 3 neighbourhoods below)
     top, bottom = max(start - 1, 0), min(stop + 1, height)
     with renderer_for(scene, renderer) as ids:
         keys = key_image(scene, ids.render(
             view if (top, bottom) == (0, height) else view.band(top, bottom)))
-    if select is None:
-        N = (stop - start) * cols
-        eye, d = view.pixel_rays(start, stop)
-        raster = keys[start - top:stop - top].ravel()
-    else:  # the rays through the selected samples' centres, as pixel_rays makes them
-        select = np.asarray(select, np.int64)
-        N = len(select)
-        eye, d = view.rays(select % cols + 0.5, select // cols + start + 0.5)
-        raster = keys[start - top:stop - top].ravel()[select]
+    raster = keys[start - top:stop - top].ravel()
+    if select is not None:
+        raster = raster[select]
+    [(eye, d)] = tasks.results()
     where = np.arange(N) if select is None else select  # position of each sample in the band
-    tasks = Tasks(threads)
     best_t, best_key = np.full(N, np.inf), np.full(N, -1, np.int32)
     barycentric = np.zeros((N, 2))  # (b1, b2) of the best hit so far, written in place
     best_b1, best_b2 = barycentric[:, 0], barycentric[:, 1]
