@@ -1,4 +1,5 @@
 import os
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -21,20 +22,67 @@ def root():
     return ROOT
 
 
-@pytest.fixture(scope="session")
-def built(root, tmp_path_factory):
-    """The whole workflow, `snakemake --cores 2`, run once per test session in a temporary copy
-    of the project; shared by every end-to-end test that reads (never changes) its results.
+def pytest_collection_modifyitems(items):
+    """The modules that read the session's build (`built`) run last, each whole and in its place
+    among them: the build starts with the session (fixture ``early``) and runs while everything
+    else is tested, instead of holding up the first of them to come alphabetically."""
+    late = {item.path for item in items if "built" in getattr(item, "fixturenames", ())}
+    items.sort(key=lambda item: item.path in late)  # stable: the order within each part stays
 
-    The copy starts without the committed spectra, so the build exports and derives every one
-    again (whether Snakemake would rerun them beside a checkout depends on the files' times)."""
-    from test_workflow import copy_project, snakemake
 
-    cwd = copy_project(root, tmp_path_factory.mktemp("workflow"))
+@pytest.fixture(scope="session", autouse=True)
+def early(request, root, tmp_path_factory):
+    """Runs that only wait on subprocesses, started in background threads when the session does
+    (tests/side_by_side.py), if a selected test needs them: the session's build, the SLURM
+    daemons and runs of tests/test_slurm.py, the failing runs of tests/test_workflow_resume.py.
+    The tests that need them take their results (or their failure) when they come to them; at
+    the end of the session, whatever is still running is killed and the daemons are stopped."""
+    from side_by_side import SideBySide
+
+    items = request.session.items
+    with SideBySide() as runs:
+        if any("built" in getattr(item, "fixturenames", ()) for item in items):
+            runs.start_once("built", _build, runs, tmp_path_factory.mktemp("workflow"), root)
+        # a test module's own background runs: its function start_with_session(runs, root,
+        # tmp_path_factory, its selected tests) starts those they need (tests/test_slurm.py,
+        # tests/test_workflow_resume.py)
+        modules = {}
+        for item in items:
+            module = getattr(item, "module", None)
+            if module is not None and hasattr(module, "start_with_session"):
+                modules.setdefault(module, []).append(item)
+        for module, selected in modules.items():
+            module.start_with_session(runs, root, tmp_path_factory, selected)
+        yield runs
+
+
+def _build(runs, cwd, root):
+    """The whole workflow, `snakemake --cores 2`, in a temporary copy of the project, from
+    nothing: the copy starts without the committed spectra, so the build exports and derives
+    every one again (whether Snakemake would rerun them beside a checkout depends on the files'
+    times)."""
+    from test_workflow import SNAKEMAKE, copy_project
+
+    copy_project(root, cwd)
     for spectrum in (cwd / "spectra").glob("*.csv"):
         spectrum.unlink()
-    snakemake(cwd, "--cores", "2")
+    args = ["--cores", "2"]
+    proc = runs.popen(SNAKEMAKE + args, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                      text=True)
+    stdout, stderr = proc.communicate()
+    if proc.returncode != 0:
+        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{stdout}\n{stderr}")
     return cwd
+
+
+@pytest.fixture(scope="session")
+def built(early, root, tmp_path_factory):
+    """The whole workflow, `snakemake --cores 2`, run once per test session in a temporary copy
+    of the project (``_build``); shared by every end-to-end test that reads (never changes) its
+    results. Started with the session (``early``), taken here."""
+    if not early.started("built"):  # (``early`` starts it whenever a selected test needs it)
+        early.start("built", _build, early, tmp_path_factory.mktemp("workflow"), root)
+    return early.result("built")
 
 
 @pytest.fixture(scope="session")

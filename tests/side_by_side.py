@@ -6,10 +6,21 @@ that do not depend on one another, a module-scoped fixture starts them all at on
 pool (one per core this process may use, at most four: each holds a few hundred MB), and each
 test then takes its own run's result and makes its own assertions on it. What each test checks
 is unchanged; only the waiting overlaps.
+
+The same pool serves the session (tests/conftest.py, fixture ``early``): runs that only wait on
+subprocesses (the session's build, the SLURM runs) start when the session does, in background
+threads, and the tests that need them take their results when they come to them. Such runs start
+their processes with ``popen`` (each in its own session), so that closing the pool early (a
+failure with ``-x``, Ctrl-C) kills what is still running, children included, instead of waiting
+for it; ``callback`` registers what must happen once the runs are over (stopping daemons).
 """
 
 import os
+import signal
+import subprocess
+import threading
 from concurrent.futures import ThreadPoolExecutor
+from contextlib import ExitStack
 
 
 def workers():
@@ -21,6 +32,10 @@ def workers():
     return max(1, min(4, cores))
 
 
+class Closed(Exception):
+    """A run asked for a process after the pool was closed."""
+
+
 class SideBySide:
     """``start(key, function, *args)`` in a thread pool; ``result(key)`` waits for that one
     (and raises what it raised)."""
@@ -28,6 +43,10 @@ class SideBySide:
     def __init__(self, n=None):
         self._pool = ThreadPoolExecutor(n or workers())
         self._runs = {}
+        self._lock = threading.Lock()
+        self._processes = []
+        self._cleanup = ExitStack()
+        self.closing = threading.Event()
 
     def start(self, key, function, *args, **kwargs):
         assert key not in self._runs, key
@@ -38,11 +57,40 @@ class SideBySide:
         if key not in self._runs:
             self.start(key, function, *args, **kwargs)
 
+    def started(self, key):
+        return key in self._runs
+
     def result(self, key):
         return self._runs[key].result()
 
+    def popen(self, *args, **kwargs):
+        """``subprocess.Popen`` in a session of its own, killed with its children if it is still
+        running when the pool closes."""
+        with self._lock:
+            if self.closing.is_set():
+                raise Closed(args)
+            proc = subprocess.Popen(*args, start_new_session=True, **kwargs)
+            self._processes.append(proc)
+        return proc
+
+    def callback(self, function, *args, **kwargs):
+        """Call ``function`` when the pool closes, after its runs are over (last in, first
+        out; each one called even if another raised)."""
+        self._cleanup.callback(function, *args, **kwargs)
+
     def close(self):
-        self._pool.shutdown(wait=True, cancel_futures=True)
+        with self._lock:
+            self.closing.set()
+            for proc in self._processes:
+                if proc.poll() is None:
+                    try:
+                        os.killpg(proc.pid, signal.SIGKILL)
+                    except ProcessLookupError:
+                        pass
+        try:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+        finally:
+            self._cleanup.close()
 
     def __enter__(self):
         return self

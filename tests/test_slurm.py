@@ -1,5 +1,11 @@
 """The workflow on a real one-node SLURM: Debian's slurm-wlm and munge, started here, torn down after.
 
+SLURM and both runs start with the test session, in a background thread (``start_with_session``,
+called by tests/conftest.py's ``early``): they need nothing of the session's build, and most of
+their time is the SLURM executor's waiting, which so overlaps the other tests; the tests here take
+the runs' result and compare it with the build. The daemons are stopped and slurm.conf removed
+when the session ends, whatever happened.
+
 munged, slurmctld and slurmd run on localhost from a slurm.conf written below (this machine's
 CPUs and memory as `slurmd -C` reports them). No cgroups are needed: processes are tracked by
 proctrack/linuxproc, and a job's memory request is enforced by jobacct_gather/linux sampling every
@@ -126,13 +132,32 @@ def _run(*cmd, **kw):
     return subprocess.run(cmd, capture_output=True, text=True, timeout=60, **kw)
 
 
-@pytest.fixture(scope="module")
-def slurm(tmp_path_factory):
-    """Start munged, slurmctld and slurmd; yield the jobcomp file; stop them all and clean up."""
+def start_with_session(runs, root, tmp_path_factory, items):
+    """Start SLURM and the runs of this module in the background, on the session's pool:
+    tests/conftest.py's ``early`` calls this when the session starts, with this module's selected
+    tests (the fixture ``runs`` needs them all)."""
+    _start_slurm(runs, root, tmp_path_factory)
+
+
+def _start_slurm(runs, root, tmp_path_factory):
+    """What the pool gives back under "slurm" is the runs' result (``_background``), or their
+    failure, or the skip with the reason SLURM cannot run here. The daemons are stopped and
+    slurm.conf removed when the pool closes (``_stop``), whatever happened."""
+    if runs.started("slurm"):
+        return
     reason = _why_not()
     if reason:
-        pytest.skip(reason)
+        runs.start("slurm", pytest.skip, reason)
+        return
     d = tmp_path_factory.mktemp("slurm")
+    daemons = []
+    runs.callback(_stop, daemons)
+    runs.start("slurm", _background, runs, d, daemons, root,
+               tmp_path_factory.mktemp("runs") / "cluster")
+
+
+def _up(runs, d, daemons):
+    """Start munged, slurmctld and slurmd (into ``daemons``); return the jobcomp file."""
     for sub in ("state", "spool", "log", "munge"):
         (d / sub).mkdir()
     (d / "munge").chmod(0o711)
@@ -141,37 +166,42 @@ def slurm(tmp_path_factory):
     key.chmod(0o600)
     SLURM_CONF.parent.mkdir(parents=True, exist_ok=True)
     SLURM_CONF.write_text(_slurm_conf(d, socket.gethostname().split(".")[0], _node_line()))
-    daemons = []
 
     def start(*cmd):
         log = open(d / "log" / f"{Path(cmd[0]).name}.out", "w")
         daemons.append(subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
                                         start_new_session=True))
 
+    start("munged", "-F", "-f", f"--key-file={key}", f"--socket={d}/munge/munge.sock",
+          f"--pid-file={d}/munge/munged.pid", f"--log-file={d}/munge/munged.log",
+          f"--seed-file={d}/munge/munged.seed")
+    for _ in range(50):
+        if (d / "munge" / "munge.sock").exists():
+            break
+        time.sleep(0.2)
+    start("slurmctld", "-D", "-f", str(SLURM_CONF))
+    start("slurmd", "-D", "-f", str(SLURM_CONF))
+    state = ""
+    for _ in range(120):
+        state = _run("sinfo", "-h", "-N", "-o", "%T").stdout.strip()
+        if state == "idle" or runs.closing.is_set():
+            break
+        if any(p.poll() is not None for p in daemons):
+            break
+        time.sleep(0.5)
+    if state != "idle":
+        logs = "\n".join(f.read_text()[-2000:] for f in sorted((d / "log").glob("*")))
+        pytest.fail(f"SLURM did not come up (node state {state!r}):\n{logs}")
+    return d / "log" / "jobcomp.txt"
+
+
+def _stop(daemons):
+    """Cancel every job, stop the daemons (each in its own session) and remove slurm.conf; fail
+    if any process of theirs is left."""
     try:
-        start("munged", "-F", "-f", f"--key-file={key}", f"--socket={d}/munge/munge.sock",
-              f"--pid-file={d}/munge/munged.pid", f"--log-file={d}/munge/munged.log",
-              f"--seed-file={d}/munge/munged.seed")
-        for _ in range(50):
-            if (d / "munge" / "munge.sock").exists():
-                break
-            time.sleep(0.2)
-        start("slurmctld", "-D", "-f", str(SLURM_CONF))
-        start("slurmd", "-D", "-f", str(SLURM_CONF))
-        state = ""
-        for _ in range(120):
-            state = _run("sinfo", "-h", "-N", "-o", "%T").stdout.strip()
-            if state == "idle":
-                break
-            if any(p.poll() is not None for p in daemons):
-                break
-            time.sleep(0.5)
-        if state != "idle":
-            logs = "\n".join(f.read_text()[-2000:] for f in sorted((d / "log").glob("*")))
-            pytest.fail(f"SLURM did not come up (node state {state!r}):\n{logs}")
-        yield d / "log" / "jobcomp.txt"
+        if daemons:
+            _run("scancel", "--user", "root")
     finally:
-        _run("scancel", "--user", "root")
         for proc in reversed(daemons):  # slurmd, slurmctld, munged: each in its own session
             if proc.poll() is None:
                 os.killpg(proc.pid, signal.SIGTERM)
@@ -181,8 +211,8 @@ def slurm(tmp_path_factory):
                     os.killpg(proc.pid, signal.SIGKILL)
                     proc.wait(timeout=10)
         SLURM_CONF.unlink(missing_ok=True)
-        left = [p.pid for p in daemons if _session_alive(p.pid)]
-        assert not left, f"SLURM daemons still running after teardown: {left}"
+    left = [p.pid for p in daemons if _session_alive(p.pid)]
+    assert not left, f"SLURM daemons still running after teardown: {left}"
 
 
 def _session_alive(sid):
@@ -197,9 +227,11 @@ def _session_alive(sid):
     return False
 
 
-def _workdir(root, built, path, removed=()):
-    """A copy of the project whose spectra are those of the session's build (`built`), so that
-    its outputs are made from the same inputs as that build's; ``removed`` are left out."""
+def _workdir(root, path, removed=()):
+    """A copy of the project with its committed spectra (which the session's build, `built`,
+    makes again byte for byte: tests/test_workflow.py; ``test_the_outputs_are_byte_identical_to_a_
+    local_run`` checks it for this copy), so that its outputs are made from the same inputs as
+    that build's; ``removed`` are left out."""
     path.mkdir()
     for name in ("Snakefile", "config.yaml"):
         shutil.copy(root / name, path / name)
@@ -208,18 +240,19 @@ def _workdir(root, built, path, removed=()):
     shutil.copytree(root / "workflow", path / "workflow",
                     ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"),
                     copy_function=shutil.copy)
-    shutil.copytree(built / "spectra", path / "spectra", copy_function=shutil.copy)
+    shutil.copytree(root / "spectra", path / "spectra", copy_function=shutil.copy)
     for name in removed:
         (path / name).unlink()
     return path
 
 
-def _snakemake(cwd, *args):
-    """Start Snakemake in ``cwd``, its output to a file there (no pipe to fill while it runs)."""
+def _snakemake(runs, cwd, *args):
+    """Start Snakemake in ``cwd`` on the pool ``runs``, its output to a file there (no pipe to
+    fill while it runs)."""
     out = cwd / f"snakemake-{len(list(cwd.glob('snakemake-*.out')))}.out"
     with open(out, "w") as stream:
-        proc = subprocess.Popen([sys.executable, "-m", "snakemake", *args], cwd=cwd,
-                                stdout=stream, stderr=subprocess.STDOUT)
+        proc = runs.popen([sys.executable, "-m", "snakemake", *args], cwd=cwd, stdout=stream,
+                          stderr=subprocess.STDOUT)
     proc.out = out
     return proc
 
@@ -259,26 +292,34 @@ def _outputs(cwd, names=None):
     return {name: (cwd / name).read_bytes() for name in sorted(names) if (cwd / name).is_file()}
 
 
-@pytest.fixture(scope="module")
-def runs(built, slurm, root, tmp_path_factory):
-    """The subset built twice on SLURM, in a copy whose other spectra are the session build's:
+def _background(runs, d, daemons, root, cluster):
+    """SLURM up, then the subset built twice on SLURM, in a copy with the committed spectra:
 
     - ``first``: the SLURM profile with the audit's request cut to SMALL_MB and ``--keep-going``
       (everything else completes, SLURM kills the audit);
     - ``second``: the SLURM profile as it is: only the audit runs again, with its own request.
 
     Both runs look at their jobs first 5 s after submitting (STATUS), not the profile's 10 s.
-
-    The local result to compare with is the session's whole build (``built``, ``--cores 2``),
-    which made these files, the spectra included, from the same inputs.
+    Runs in a background thread from the start of the session (``start_with_session``): it needs
+    nothing of the session's build, and most of its time is the executor's waiting.
     """
-    cluster = _workdir(root, built, tmp_path_factory.mktemp("runs") / "cluster", REMOVED_SPECTRA)
+    jobcomp = _up(runs, d, daemons)
+    _workdir(root, cluster, REMOVED_SPECTRA)
     # (targets first: --set-resources takes every word after it)
-    first = _finish(_snakemake(cluster, *TARGETS, "--profile", PROFILE, *STATUS, "--keep-going",
-                               "--set-resources", f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
-    second = _finish(_snakemake(cluster, "--profile", PROFILE, *STATUS, *TARGETS))
-    return {"local": built, "cluster": cluster, "first": first, "second": second,
-            "jobcomp": _jobcomp(slurm)}
+    first = _finish(_snakemake(runs, cluster, *TARGETS, "--profile", PROFILE, *STATUS,
+                               "--keep-going", "--set-resources",
+                               f"{AUDIT}:mem_mb={SMALL_MB}"), ok=False)
+    second = _finish(_snakemake(runs, cluster, "--profile", PROFILE, *STATUS, *TARGETS))
+    return {"cluster": cluster, "first": first, "second": second, "jobcomp": _jobcomp(jobcomp)}
+
+
+@pytest.fixture(scope="module")
+def runs(early, built, root, tmp_path_factory):
+    """The runs of ``_background`` (started with the session, taken here, its failure raised
+    here) and the local result to compare with: the session's whole build (``built``,
+    ``--cores 2``), which made these files, the spectra included, from the same inputs."""
+    _start_slurm(early, root, tmp_path_factory)  # (``early`` did, unless run without it)
+    return {"local": built, **early.result("slurm")}
 
 
 def test_every_job_is_a_slurm_job_with_the_resources_its_rule_declares(runs):
@@ -306,6 +347,11 @@ def _declared_outputs(out):
 
 
 def test_the_outputs_are_byte_identical_to_a_local_run(runs):
+    # the same inputs: the copy's other spectra files (committed ones, or written by a job
+    # though no test names them: sources.csv) are the local build's
+    inputs = {f"spectra/{p.name}" for p in (runs["cluster"] / "spectra").glob("*.csv")}
+    inputs -= set(WRITTEN_SPECTRA)
+    assert inputs and _outputs(runs["cluster"], inputs) == _outputs(runs["local"], inputs)
     cluster_files = _outputs(runs["cluster"])
     # the spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
     assert len(cluster_files) >= len(WRITTEN_SPECTRA) + 3 + 5 + 4, sorted(cluster_files)

@@ -162,37 +162,55 @@ def _spectra_inodes(cwd):
     return {p.name: p.stat().st_ino for p in (cwd / "spectra").glob("*.csv")}
 
 
-@pytest.fixture(scope="module")
-def failing_runs(root, tmp_path_factory):
-    """The cases' runs, each in its own copy of the project, side by side (tests/side_by_side.py):
-    {case: (copy, digests and inodes of its spectra before, finished process)}."""
-    from side_by_side import SideBySide
+def start_with_session(runs, root, tmp_path_factory, items):
+    """Start the failing cases' runs on the session's pool if any of ``items`` (this module's
+    selected tests) needs them: tests/conftest.py's ``early`` calls this when the session starts.
+    They need nothing of the session's build, so they run while other tests do."""
+    if any("failing_runs" in getattr(item, "fixturenames", ()) for item in items):
+        _start_failing(runs, root, tmp_path_factory)
 
-    def run(cwd):
-        committed, inodes = _spectra_digests(cwd), _spectra_inodes(cwd)
-        return cwd, committed, inodes, snakemake(cwd, "--cores", "1", "--force",
-                                                 "spectra/Rubber.csv", check=False)
 
-    with SideBySide() as runs:
-        for case in FAILING_CASES:
-            cwd = copy_project(root, tmp_path_factory.mktemp("failing"))
-            script = cwd / "workflow" / "scripts" / "derive_spectra.py"
-            if case == "bad notation":  # not a Munsell colour: refused before any job starts
-                config = yaml.safe_load((cwd / "config.yaml").read_text())
-                config["materials"]["Rubber"]["notation"] = "N99"
-                (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
-            elif case == "failing script":  # whatever the reason, a derive job that fails after it wrote
-                script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
-            else:  # one material fails: Rubber; the others (a stand-in) do not
-                text = script.read_text()
-                assert "def derive(entry):\n" in text
-                script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
+def _start_failing(runs, root, tmp_path_factory):
+    for case in FAILING_CASES:
+        if not runs.started(("failing", case)):
+            runs.start(("failing", case), _failing_run, runs, root,
+                       tmp_path_factory.mktemp("failing"), case)
+
+
+def _failing_run(runs, root, cwd, case):
+    """One case's run in its own copy of the project: (copy, digests and inodes of its spectra
+    before, finished process)."""
+    copy_project(root, cwd)
+    script = cwd / "workflow" / "scripts" / "derive_spectra.py"
+    if case == "bad notation":  # not a Munsell colour: refused before any job starts
+        config = yaml.safe_load((cwd / "config.yaml").read_text())
+        config["materials"]["Rubber"]["notation"] = "N99"
+        (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+    elif case == "failing script":  # whatever the reason, a derive job that fails after it wrote
+        script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
+    else:  # one material fails: Rubber; the others (a stand-in) do not
+        text = script.read_text()
+        assert "def derive(entry):\n" in text
+        script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
     if entry["notation"] == "N2.5":
         raise ValueError("stand-in failure")
     return {"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}
 """))
-            runs.start(case, run, cwd)
-        yield runs
+    committed, inodes = _spectra_digests(cwd), _spectra_inodes(cwd)
+    proc = runs.popen(SNAKEMAKE + ["--cores", "1", "--force", "spectra/Rubber.csv"], cwd=cwd,
+                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc.communicate()
+    return cwd, committed, inodes, proc
+
+
+@pytest.fixture(scope="module")
+def failing_runs(early, root, tmp_path_factory):
+    """The cases' runs, each in its own copy of the project, side by side on the session's pool
+    (tests/side_by_side.py), started with the session (``start_with_session``):
+    case -> (copy, digests and inodes of its spectra before, finished process), each case's
+    failure raised by its own test."""
+    _start_failing(early, root, tmp_path_factory)
+    return lambda case: early.result(("failing", case))
 
 
 @pytest.mark.parametrize("case", FAILING_CASES)
@@ -202,7 +220,7 @@ def test_a_failing_spectrum_job_keeps_the_committed_file(failing_runs, case):
     that derives every Munsell spectrum makes them all before it writes any: one material that
     fails is named in its log, and no file is replaced (each keeps its inode; Snakemake's
     restore copies into the file at the path, an atomic write would have left a new one)."""
-    cwd, committed, inodes, proc = failing_runs.result(case)
+    cwd, committed, inodes, proc = failing_runs(case)
     assert proc.returncode != 0
     assert _spectra_digests(cwd) == committed
     assert not [p for p in (cwd / "spectra").iterdir() if p.name.startswith(".")]
