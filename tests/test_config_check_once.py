@@ -102,6 +102,40 @@ def test_a_new_or_changed_spectrum_is_checked_again(counted, tmp_path):
     assert run(config, counted) == 3
 
 
+def test_in_a_folder_on_sys_path_only_what_an_import_could_find_counts(counted, tmp_path,
+                                                                        monkeypatch):
+    """Snakemake puts the workflow's folder on sys.path, so the import system lists it while the
+    checks import: a build's results/ and logs/ there, which no import finds, repeat nothing; a
+    module there named as one the checks import (here one they tried and did not find) does."""
+    import importlib
+    import sys
+
+    search, name = tmp_path / "search", "reflectance_check_once_probe"
+    search.mkdir()
+    monkeypatch.syspath_prepend(str(search))
+    stand_in = C.check_config
+
+    def check_config(config, **kwargs):
+        stand_in(config, **kwargs)
+        try:
+            __import__(name)  # as an import statement does
+        except ImportError:
+            pass
+
+    monkeypatch.setattr(C, "check_config", check_config)
+    config = {"a": 1}
+    assert run(config, counted) == 1
+    (search / "results").mkdir()
+    (search / "logs").mkdir()
+    assert run(config, counted) == 1
+    (search / f"{name}.py").write_text("")
+    importlib.invalidate_caches()
+    try:
+        assert run(config, counted) == 2
+    finally:
+        sys.modules.pop(name, None)
+
+
 def test_an_environment_variable_of_the_project_is_part_of_the_key(counted, monkeypatch):
     config = {"a": 1}
     run(config, counted)

@@ -235,8 +235,8 @@ def _workdir(root, path, removed=()):
     path.mkdir()
     for name in ("Snakefile", "config.yaml"):
         shutil.copy(root / name, path / name)
-    # Fresh modification times, the spectra newest: Snakemake would otherwise rebuild every
-    # spectrum whose script is newer than its CSV (as on a fresh checkout).
+    # Fresh modification times, the spectra newest (the spectra rules run their scripts with
+    # shell:, which Snakemake does not compare with the CSVs; sources.csv is newer than the rest).
     shutil.copytree(root / "workflow", path / "workflow",
                     ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"),
                     copy_function=shutil.copy)

