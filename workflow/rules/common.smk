@@ -24,6 +24,7 @@ except ConfigError as err:
 
 CT82 = config["figures"]["cook_torrance_1982"]
 
+
 def spectrum_csv(name):
     """The CSV of one material of config['materials']."""
     return f"spectra/{name}.csv"
