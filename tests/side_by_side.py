@@ -47,6 +47,9 @@ class SideBySide:
         self._processes = []
         self._cleanup = ExitStack()
         self.closing = threading.Event()
+        # the environment as it is now (the session's start, for tests/conftest.py's pool): a
+        # run started later must not take what a test running meanwhile has patched
+        self.environ = os.environ.copy()
 
     def start(self, key, function, *args, **kwargs):
         assert key not in self._runs, key
@@ -64,11 +67,12 @@ class SideBySide:
         return self._runs[key].result()
 
     def popen(self, *args, **kwargs):
-        """``subprocess.Popen`` in a session of its own, killed with its children if it is still
-        running when the pool closes."""
+        """``subprocess.Popen`` in a session of its own (by default in the environment the pool
+        was made in), killed with its children if it is still running when the pool closes."""
         with self._lock:
             if self.closing.is_set():
                 raise Closed(args)
+            kwargs.setdefault("env", self.environ)
             proc = subprocess.Popen(*args, start_new_session=True, **kwargs)
             self._processes.append(proc)
         return proc

@@ -65,9 +65,32 @@ def test_thread_count_from_argument_environment_or_cores(monkeypatch):
     with pytest.raises(ValueError, match="threads"):
         render_threads(True)
     monkeypatch.delenv(THREADS_VARIABLE)
-    monkeypatch.setenv("OMP_NUM_THREADS", "x")
-    with pytest.raises(ValueError, match="OMP_NUM_THREADS"):
-        render_threads()
+    monkeypatch.setenv("OMP_NUM_THREADS", "4,2")  # OpenMP's list per nesting level: the first
+    assert render_threads() == 4
+    for theirs in ("x", "0", ""):  # OpenMP's business, not a reason to refuse a render
+        monkeypatch.setenv("OMP_NUM_THREADS", theirs)
+        assert render_threads() == len(os.sched_getaffinity(0))
+
+
+def test_a_forked_child_gets_pools_of_its_own():
+    """A pool made before a fork has no threads in the child: work queued there would wait
+    forever (the child here gives up after 20 s and exits 3)."""
+    import os
+    import signal
+
+    from reflectance.render.parallel import Tasks
+
+    import time
+
+    # the parent's pool of 2, both of its threads started (each busy when the next call came)
+    assert Tasks(2).map(time.sleep, [0.2] * 4) == [None] * 4
+    pid = os.fork()
+    if pid == 0:  # the child
+        signal.signal(signal.SIGALRM, lambda *_: os._exit(3))
+        signal.alarm(20)
+        os._exit(0 if Tasks(2).map(abs, [-3, -4]) == [3, 4] else 4)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
 
 
 @pytest.mark.parametrize("n, threads, most", [(10, 1, 4), (10, 2, 4), (3, 4, 100), (0, 2, 8),

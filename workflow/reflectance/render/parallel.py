@@ -33,10 +33,13 @@ def render_threads(threads=None):
     ``OMP_NUM_THREADS``, else the number of cores this process may run on
     (``os.sched_getaffinity``)."""
     where = "threads"
-    for name in (THREADS_VARIABLE, "OMP_NUM_THREADS"):
-        if threads is None:
-            threads, where = os.environ.get(name) or None, name
     if threads is None:
+        threads, where = os.environ.get(THREADS_VARIABLE) or None, THREADS_VARIABLE
+    if threads is None:  # OpenMP's variable may be a list per nesting level ("4,2"): its first
+        # level; a value OpenMP's own syntax would not take is left to OpenMP, not refused here
+        first = (os.environ.get("OMP_NUM_THREADS") or "").split(",")[0].strip()
+        if first.isdigit() and int(first) >= 1:
+            return int(first)
         try:
             return max(1, len(os.sched_getaffinity(0)))
         except AttributeError:  # pragma: no cover - not Linux
@@ -49,6 +52,16 @@ def render_threads(threads=None):
         raise ValueError(f"{where}: the renderer's thread count must be a positive integer, "
                          f"got {threads!r}")
     return value
+
+
+def _forget_pools():
+    """In a forked child: the parent's pools have no threads there (a task would wait forever)."""
+    global _pools_lock
+    _pools.clear()
+    _pools_lock = threading.Lock()
+
+
+os.register_at_fork(after_in_child=_forget_pools)
 
 
 def _pool(threads):

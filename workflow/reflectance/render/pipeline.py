@@ -308,7 +308,9 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
                 made["primitives"] = Primitives(scene.mesh)
                 if threads > 1 and scene.shadows and scene.lights:  # the shadow walks' edge
                     # table, made on a worker while the camera's rays are traced
-                    Tasks(threads).submit(lambda: made["primitives"].neighbours)
+                    edges = Tasks(threads)
+                    edges.submit(lambda: made["primitives"].neighbours)
+                    stack.callback(edges.results)  # awaited (and its error raised) at the end
                 made["renderer"] = stack.enter_context(IdRenderer(made["primitives"]))
             return made["primitives"], made["renderer"]
 

@@ -19,9 +19,6 @@ from reflectance.render.rays import sphere_hits, triangle_hits
 
 __all__ = []
 
-_NEIGHBOURS_LOCK = threading.Lock()  # the shadow pass's threads share one table
-
-
 class Primitives:
     """Flat arrays of a composed scene; a triangle's *key* names what to intersect exactly.
 
@@ -31,6 +28,7 @@ class Primitives:
     """
 
     def __init__(self, meshes):
+        self._neighbours_lock = threading.Lock()  # the shadow pass's threads share one table
         if isinstance(meshes, pv.PolyData) and "object_id" in meshes.cell_data:
             mesh = meshes
         elif isinstance(meshes, pv.DataSet):
@@ -83,7 +81,7 @@ class Primitives:
         Coincident vertices (seams, joints between parts) are welded at 1e-9 of the scene size.
         Made once, on first use (threads asking meanwhile wait for it).
         """
-        with _NEIGHBOURS_LOCK:
+        with self._neighbours_lock:
             return self._find_neighbours()
 
     def _find_neighbours(self):

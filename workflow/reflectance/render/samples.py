@@ -86,7 +86,8 @@ class SurfaceSamples:
         blocks = values.reshape((rows // n, n, cols // n, n) + values.shape[2:])
         if threads == 1:
             return blocks.mean(axis=(1, 3))
-        out = np.empty((rows // n, cols // n) + values.shape[2:])
+        out = np.empty((rows // n, cols // n) + values.shape[2:],  # the dtype one call gives
+                       blocks[:0].mean(axis=(1, 3)).dtype)
 
         def band(p):
             out[p] = blocks[p].mean(axis=(1, 3))
