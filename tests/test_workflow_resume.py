@@ -172,7 +172,7 @@ def start_with_session(runs, root, tmp_path_factory, items):
 
 def _start_failing(runs, root, tmp_path_factory):
     for case in FAILING_CASES:
-        if not runs.started(("failing", case)):
+        if not runs.started(("failing", case)):  # (not start_once: no folder made for nothing)
             runs.start(("failing", case), _failing_run, runs, root,
                        tmp_path_factory.mktemp("failing"), case)
 

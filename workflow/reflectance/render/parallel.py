@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 import threading
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 
 __all__ = ["THREADS_VARIABLE", "render_threads", "Tasks", "pieces"]
 
@@ -86,7 +86,9 @@ class Tasks:
 
     def submit(self, fn, *args):
         if self.threads == 1:
-            self._futures.append(_Done(fn(*args)))
+            done = Future()  # the call made at once, as a finished future
+            done.set_result(fn(*args))
+            self._futures.append(done)
         else:
             self._futures.append(_pool(self.threads).submit(fn, *args))
 
@@ -101,19 +103,6 @@ class Tasks:
         for item in items:
             self.submit(fn, item)
         return self.results()
-
-
-class _Done:
-    """A call made at once (the one-thread path), as a finished future."""
-
-    def __init__(self, value):
-        self.value = value
-
-    def exception(self):
-        return None
-
-    def result(self):
-        return self.value
 
 
 def pieces(n, threads, most, least=1 << 12):

@@ -19,6 +19,7 @@ from reflectance.render.rays import sphere_hits, triangle_hits
 
 __all__ = []
 
+
 class Primitives:
     """Flat arrays of a composed scene; a triangle's *key* names what to intersect exactly.
 
