@@ -167,6 +167,79 @@ def test_equal_error_seconds_interpolates_a_power_law_exactly():
     assert equal_error_seconds(10.0, ladder, extrapolate=True) is None
 
 
+# Our ladder in the cross-check: synthetic results (no Mitsuba needed). Mitsuba's ladder follows
+# a power law, mean error = 1 / sqrt(seconds) and p95 three times that, so its time at the goal
+# (0.3 mean, 1.0 p95) is known in closed form: (1 / 0.3)^2 s for the mean, 3^2 = 9 s for the p95,
+# and the larger, 100 / 9 s, for both.
+MITSUBA_LADDER = [{"spp": spp, "seconds": s, "vs_mitsuba": [1 / s**0.5, 3 / s**0.5],
+                   "vs_ours": [1 / s**0.5, 3 / s**0.5]}
+                  for spp, s in ((4, 1.0), (16, 4.0), (64, 16.0), (256, 64.0))]
+
+
+def our_rung(n, seconds, mean, p95):
+    return {"supersample": n, "seconds": seconds, "vs_mitsuba": [mean + 0.1, p95 + 0.2],
+            "vs_ours": [mean, p95]}
+
+
+OUR_LADDER = [our_rung(1, 0.7, 0.2, 1.2),  # fastest, but misses the goal's p95
+              our_rung(4, 1.0, 0.35, 0.5),  # misses the goal's mean
+              our_rung(2, 1.3, 0.01, 0.05),  # meets it: the fastest that does
+              our_rung(3, 2.5, 0.005, 0.01)]  # meets it too, with the smallest error, slower
+
+
+def synthetic_result(our_ladder, supersample=2):
+    bench_own = next(r for r in our_ladder if r["supersample"] == supersample)
+    return {"size": 512, "variant": "llvm_ad_spectral", "supersample": supersample,
+            "material": {"m": 0.2}, "reference_spp": 1024, "reference_supersample": 16,
+            "mitsuba_reference_s": 30.0, "ours_s": bench_own["seconds"],
+            "ours_vs_mitsuba": bench_own["vs_mitsuba"], "ours_vs_ours": bench_own["vs_ours"],
+            "our_reference_vs_mitsuba": [0.08, 0.4],
+            "ladder": MITSUBA_LADDER, "our_ladder": our_ladder,
+            "equal_error_vs_mitsuba": {"mitsuba_s": None, "ratio": None, "extrapolated": False,
+                                       "ratio_above": None, "best_spp": 256},
+            "equal_error_vs_ours": {"mitsuba_s": 100.0, "ratio": 50.0, "extrapolated": True,
+                                    "ratio_above": None, "best_spp": 256}}
+
+
+def test_our_fastest_rung_at_the_goal_meets_both_mean_and_p95():
+    from reflectance.render.crosscheck import fastest_at_goal
+
+    assert fastest_at_goal(OUR_LADDER)["supersample"] == 2
+    assert fastest_at_goal(OUR_LADDER, goal=(0.4, 1.5))["supersample"] == 1
+    assert fastest_at_goal(OUR_LADDER[:2]) is None
+
+
+def test_goal_comparison_is_mitsubas_time_at_the_goal_over_our_fastest_rung_meeting_it():
+    from reflectance.render.crosscheck import format_crosscheck, goal_comparison
+
+    goal = goal_comparison(MITSUBA_LADDER, OUR_LADDER)
+    assert goal["mitsuba_mean_s"] == pytest.approx(1 / 0.3**2, rel=1e-9)
+    assert goal["mitsuba_p95_s"] == pytest.approx(9.0, rel=1e-9)
+    assert goal["mitsuba_s"] == pytest.approx(1 / 0.3**2, rel=1e-9)
+    assert goal["ours_supersample"] == 2 and goal["ours_s"] == 1.3
+    assert goal["ratio"] == pytest.approx(1 / 0.3**2 / 1.3, rel=1e-9)
+    text = "\n".join(format_crosscheck(synthetic_result(OUR_LADDER)))
+    assert "our fastest rung meeting it is 2^2 spp, 1.30 s" in text
+    assert f"= {1 / 0.3**2 / 1.3:.3g} x" in text
+    # the bench's own supersampling keeps its line: Mitsuba at the goal over ours at 2 x 2
+    assert f"Mitsuba {1 / 0.3**2:.3g} s" in text and "x ours at 2^2 spp" in text
+    for n in (1, 2, 3, 4):  # every rung of ours in the table
+        assert any(line.split()[:1] == [f"{n}^2"] for line in text.splitlines())
+
+
+def test_when_no_rung_of_ours_meets_the_goal_there_is_no_ratio():
+    from reflectance.render.crosscheck import format_crosscheck, goal_comparison
+
+    missing = OUR_LADDER[:2]
+    goal = goal_comparison(MITSUBA_LADDER, missing)
+    assert goal["ours_supersample"] is None and goal["ours_s"] is None
+    assert goal["ratio"] is None
+    assert goal["mitsuba_s"] == pytest.approx(1 / 0.3**2, rel=1e-9)  # Mitsuba's still there
+    text = "\n".join(format_crosscheck(synthetic_result(missing, supersample=1)))
+    assert "no rung of ours (1^2, 4^2 spp) meets it (no ratio)" in text
+    assert "fastest rung meeting it" not in text
+
+
 def test_without_mitsuba_its_tests_skip_outside_ci_and_fail_in_ci():
     """One Mitsuba test run by pytest in a fresh process where ``import mitsuba`` finds nothing
     (``sys.modules["mitsuba"] = None``), with and without CI in the environment."""
@@ -216,6 +289,12 @@ def test_bench_crosscheck_measures_both_against_the_same_reference(root):
     assert r["variant"] == "scalar_spectral"
     assert r["material"]["convention"] == "physical" and r["material"]["m"] == 0.2
     assert [rung["spp"] for rung in r["ladder"]] == [1, 16]
+    # our ladder (default 1 and 2): the bench's own 2 x 2 is its second rung, not timed again
+    assert [rung["supersample"] for rung in r["our_ladder"]] == [1, 2]
+    assert r["our_ladder"][1]["seconds"] == r["ours_s"]
+    assert r["our_ladder"][1]["vs_ours"] == r["ours_vs_ours"]
+    assert r["our_ladder"][0]["vs_ours"][0] > r["ours_vs_ours"][0]  # 1 x 1 is the noisier
+    assert set(r["goal"]) >= {"mitsuba_s", "ours_supersample", "ours_s", "ratio"}
     # Mitsuba's own noise against either reference falls with its samples
     for key in ("vs_mitsuba", "vs_ours"):
         assert r["ladder"][1][key][0] < r["ladder"][0][key][0]

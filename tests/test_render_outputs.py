@@ -194,7 +194,8 @@ def test_bench_command_defaults_are_the_librarys(monkeypatch):
     monkeypatch.setattr(bench, "run_bench", lambda *a, **k: passed.update(
         real.bind(*a, **k).arguments) or [])
     assert main(["bench", "--scene", "x.yaml", "--quiet"]) == 0
-    for name in ("reference_supersample", "crosscheck_size", "crosscheck_spp"):
+    for name in ("reference_supersample", "crosscheck_size", "crosscheck_spp",
+                 "crosscheck_supersamples"):
         assert passed[name] == real.parameters[name].default, name
 
 

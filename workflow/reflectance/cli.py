@@ -577,7 +577,8 @@ def _run_render(args):
 def _add_bench(sub):
     # the bench's defaults (reflectance.render.bench imports nothing heavy at import)
     from reflectance.render.bench import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
-                                          REFERENCE_MAX_SAMPLES, REFERENCE_SUPERSAMPLE)
+                                          CROSSCHECK_SUPERSAMPLES, REFERENCE_MAX_SAMPLES,
+                                          REFERENCE_SUPERSAMPLE)
 
     p = sub.add_parser(
         "bench", help=COMMAND_HELP["bench"],
@@ -592,7 +593,8 @@ def _add_bench(sub):
                     "time on 5 nm and 1 nm wavelength grids. The hard scene "
                     "workflow/scenes/bench_hard.yaml has sharp highlights, small lights and "
                     "silhouettes. With Mitsuba 3 installed, at --crosscheck-size a path "
-                    "tracer's times and errors against its own converged render.")
+                    "tracer's times and errors against its own converged render, beside ours "
+                    "at --crosscheck-supersamples, compared at the accuracy goal.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels, 1 to 16384 (default 256 512 1024)")
@@ -622,6 +624,12 @@ def _add_bench(sub):
                    metavar="N",
                    help=f"samples per pixel of Mitsuba's converged reference (default "
                         f"{CROSSCHECK_SPP})")
+    p.add_argument("--crosscheck-supersamples", type=SUPERSAMPLE, nargs="+",
+                   default=CROSSCHECK_SUPERSAMPLES, metavar="N",
+                   help="our n x n supersamplings timed in the cross-check, each with its "
+                        "errors, the fastest meeting the accuracy goal compared with Mitsuba "
+                        "at that goal (1 to 16; default "
+                        f"{' '.join(map(str, CROSSCHECK_SUPERSAMPLES))})")
     p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",
@@ -655,7 +663,8 @@ def _run_bench(args):
                             args.reference_supersample, progress=progress,
                             adaptive={"scene": None, "on": True, "off": False}[args.adaptive],
                             crosscheck_size=args.crosscheck_size,
-                            crosscheck_spp=args.crosscheck_spp)
+                            crosscheck_spp=args.crosscheck_spp,
+                            crosscheck_supersamples=args.crosscheck_supersamples)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))

@@ -27,7 +27,9 @@ includes VTK's, belongs to that size alone) and reports:
 With Mitsuba 3 installed (``pip install .[crosscheck]``), at one size (``crosscheck_size``, if
 benchmarked) a path tracer is a second, independent reference
 (:mod:`reflectance.render.crosscheck`): our render and Mitsuba's at a ladder of sample counts,
-their seconds and their CIEDE2000 against the same converged Mitsuba render. Without it the
+and ours at a ladder of supersamplings (``crosscheck_supersamples``), their seconds and their
+CIEDE2000 against the same converged references, and the two compared at the accuracy goal
+(equal error). Without it the
 report says in one line that the cross-check is skipped.
 
 Speed targets are measured here, never asserted in tests.
@@ -51,6 +53,8 @@ REFERENCE_MAX_SAMPLES = 1 << 26
 CROSSCHECK_SIZE = 512
 #: samples per pixel of Mitsuba's converged reference in the cross-check (stratified)
 CROSSCHECK_SPP = 1024
+#: our supersamplings (n x n) timed in the cross-check, our ladder beside Mitsuba's
+CROSSCHECK_SUPERSAMPLES = (1, 2)
 
 
 def _peak_MiB():
@@ -209,7 +213,8 @@ def crosscheck_status(results=()):
 def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
               grids_nm=(5, 1), grid_size=512, spectra_dir=None,
               reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
-              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=CROSSCHECK_SPP):
+              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=CROSSCHECK_SPP,
+              crosscheck_supersamples=CROSSCHECK_SUPERSAMPLES):
     """Run :func:`bench_size` for each size in a fresh subprocess; return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
@@ -218,7 +223,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
     pixel; ours at ``reference_supersample``, or :data:`REFERENCE_SUPERSAMPLE` where that is
-    0)."""
+    0; our own ladder at the supersamplings ``crosscheck_supersamples``)."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
     for i, size in enumerate(sizes):
@@ -247,7 +252,8 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                 results[-1]["crosscheck"] = run_crosscheck(
                     scene, size, supersample, max(1, min(runs, 3)),
                     reference_supersample or REFERENCE_SUPERSAMPLE,
-                    crosscheck_spp, spectra_dir=spectra_dir, progress=tell)
+                    crosscheck_spp, spectra_dir=spectra_dir, progress=tell,
+                    our_supersamples=crosscheck_supersamples)
     if progress is not None:
         progress.close()
     return results

@@ -65,12 +65,18 @@ class IdRenderer:
         except ImportError:  # pragma: no cover - VTK built without EGL
             window = vtkRenderWindow()
         self.scene = scene
-        poly = pv.PolyData(scene.points, faces=np.asarray(scene.mesh.faces))
-        poly.cell_data["id_rgb"] = encode_ids(np.arange(1, scene.n + 1))
-        poly.cell_data.active_scalars_name = "id_rgb"
+        # the triangles "exploded": three vertices of their own each, carrying the triangle's
+        # id colour as point scalars: the same rasterised triangles in the same order (the same
+        # ID images), but VTK passes point colours through as vertex attributes, while it looks
+        # cell colours up per fragment in a buffer of cell values (measured on the 221,408-
+        # triangle bench vase at 512 px: 0.082 CPU s per Render() against 0.095 s)
+        poly = pv.PolyData.from_regular_faces(
+            scene.points[scene.tris.ravel()], np.arange(3 * scene.n).reshape(-1, 3))
+        poly.point_data["id_rgb"] = np.repeat(encode_ids(np.arange(1, scene.n + 1)), 3, axis=0)
+        poly.point_data.active_scalars_name = "id_rgb"
         mapper = vtkPolyDataMapper()
         mapper.SetInputData(poly)
-        mapper.SetScalarModeToUseCellData()
+        mapper.SetScalarModeToUsePointData()
         mapper.SetColorModeToDirectScalars()  # the uint8 colours go to the screen unmapped
         mapper.ScalarVisibilityOn()
         mapper.SetInterpolateScalarsBeforeMapping(False)
