@@ -232,9 +232,20 @@ slurmstepd-vm: error: *** JOB 17 ON vm CANCELLED AT 2026-12-01T22:49:18 ***
 """
 
 
-def test_a_job_killed_for_memory_is_named_with_its_rule_and_request(tmp_path):
+#: SLURM's lines in the other order it writes them in (seen on a loaded machine)
+SLURM_LOG_JOB_LINE_FIRST = """\
+host: vm
+slurmstepd-vm: error: Exceeded job memory limit
+slurmstepd-vm: error: StepId=17.batch exceeded memory limit (229134336 > 209715200), being killed
+slurmstepd-vm: error: *** JOB 17 ON vm CANCELLED AT 2026-12-01T22:49:18 ***
+"""
+
+
+@pytest.mark.parametrize("slurm_text", [SLURM_LOG, SLURM_LOG_JOB_LINE_FIRST],
+                         ids=["step-line-first", "job-line-first"])
+def test_a_job_killed_for_memory_is_named_with_its_rule_and_request(tmp_path, slurm_text):
     slurm_log, other_log = tmp_path / "17.log", tmp_path / "18.log"
-    slurm_log.write_text(SLURM_LOG)
+    slurm_log.write_text(slurm_text)
     other_log.write_text("Traceback (most recent call last):\nValueError: not memory\n")
     run_log = tmp_path / "run.snakemake.log"
     run_log.write_text(RUN_LOG.format(slurm_log=slurm_log, other_log=other_log))

@@ -124,6 +124,8 @@ def resume_after_kill(main_process=True, state_dir=".snakemake", stream=sys.stde
 #: and the cgroup plugin's ("Detected 1 oom_kill event in StepId=12.0").
 MEMORY_KILL = re.compile(r"^.*(?:exceeded (?:job )?memory limit|oom[-_]kill event).*$",
                          re.IGNORECASE | re.MULTILINE)
+#: the line of those that says by how much: "(229134336 > 209715200)", used bytes over the limit
+_MEMORY_FIGURES = re.compile(r"\(\d+ > \d+\)")
 _BLOCK = r"^{head}:\n((?:    .*\n?)+)"
 
 
@@ -168,11 +170,14 @@ def memory_kills(log_text, read_text=lambda path: Path(path).read_text(errors="r
         logs = re.sub(r"\s*\(check log file\(s\) for error details\)$", "", fields.get("log", ""))
         for path in (p.strip() for p in logs.split(", ") if p.strip()):
             try:
-                found = MEMORY_KILL.search(read_text(path))
+                found = [m.group(0).strip() for m in MEMORY_KILL.finditer(read_text(path))]
             except OSError:
                 continue
             if found:
-                evidence = found.group(0).strip()
+                # SLURM writes its lines in no fixed order ("Exceeded job memory limit" may come
+                # first): the one with the step's used and allowed bytes, else the first
+                evidence = next((line for line in found if _MEMORY_FIGURES.search(line)),
+                                found[0])
                 break
         if evidence:
             kills.append({"rule": rule, "jobid": fields.get("jobid"),
