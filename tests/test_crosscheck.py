@@ -302,3 +302,31 @@ def test_bench_crosscheck_measures_both_against_the_same_reference(root):
         assert 0 <= r[key][0] <= r[key][1]
     text = "\n".join(format_crosscheck(r))
     assert "Mitsuba 3" in text and "spp" in text
+    # the whole commands, fresh processes: ours at our rung meeting the goal (or our best),
+    # Mitsuba at its first rung meeting it (or its best)
+    w = r["whole_commands"]
+    assert w["ours_s"] > 0 and w["mitsuba_s"] > 0
+    assert w["ratio"] == pytest.approx(w["mitsuba_s"] / w["ours_s"])
+    assert w["ours_supersample"] in (1, 2) and w["mitsuba_spp"] in (1, 16)
+    assert f"Mitsuba at {w['mitsuba_spp']} spp" in text and "whole commands" in text
+
+
+@needs_mitsuba
+def test_mitsubas_whole_command_renders_the_exported_scene(root, tmp_path):
+    """The bench's Mitsuba command (a fresh process: reflectance.render.mitsuba_command) renders
+    the scene the in-process export renders, bit for bit, at the same spp and seed 0."""
+    import mitsuba as mi
+
+    from reflectance.render.crosscheck import mitsuba_renderer
+    from reflectance.render.mitsuba_command import save_scene
+
+    scene = sphere_scene(root, COPPER)
+    mi.set_variant("scalar_spectral")
+    save_scene(scene_to_mitsuba(scene, tmp_path, spp=4), scene.camera, tmp_path / "scene.json")
+    subprocess.run([sys.executable, "-m", "reflectance.render.mitsuba_command",
+                    str(tmp_path / "scene.json"), "scalar_spectral", "16",
+                    str(tmp_path / "out.exr")], check=True, capture_output=True)
+    written = np.array(mi.Bitmap(str(tmp_path / "out.exr")), dtype=np.float64)[..., :3]
+    expected, _ = mitsuba_renderer(scene, "scalar_spectral")(16, seed=0)
+    assert written.shape == expected.shape and written.max() > 0
+    assert np.array_equal(written, expected)

@@ -594,7 +594,8 @@ def _add_bench(sub):
                     "workflow/scenes/bench_hard.yaml has sharp highlights, small lights and "
                     "silhouettes. With Mitsuba 3 installed, at --crosscheck-size a path "
                     "tracer's times and errors against its own converged render, beside ours "
-                    "at --crosscheck-supersamples, compared at the accuracy goal.")
+                    "at --crosscheck-supersamples, compared at the accuracy goal, and both "
+                    "renderers' whole commands (fresh processes) at that goal.")
     p.add_argument("--scene", help="scene file (default: C&T 1982 Fig. 6b built from config.yaml)")
     p.add_argument("--sizes", type=PIXELS, nargs="+", default=[256, 512, 1024], metavar="N",
                    help="image sides in pixels, 1 to 16384 (default 256 512 1024)")

@@ -5,7 +5,8 @@ camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, sha
 (spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
 would); scene (scene files); pipeline (trace, shade, write);
 composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
-exported to the path tracer Mitsuba 3, an optional extra).
+exported to the path tracer Mitsuba 3, an optional extra); mitsuba_command (Mitsuba's whole
+command, timed by the bench).
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
 the package stays cheap.
@@ -14,7 +15,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "parallel", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "mitsuba_command", "parallel", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
