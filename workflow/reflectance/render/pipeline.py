@@ -28,6 +28,7 @@ same scene gives byte-identical files.
 from __future__ import annotations
 
 import contextlib
+import functools
 import hashlib
 import json
 import time
@@ -544,6 +545,12 @@ _DISPLAY_BAND_PIXELS = 1 << 20  # pixels converted to display RGB at once
 
 def software_versions():
     """Versions of the packages an image depends on (for the EXR header)."""
+    return dict(_software_versions())  # a copy: the caller may change it
+
+
+@functools.lru_cache(maxsize=1)
+def _software_versions():
+    # looked up once per process (12 to 17 ms each time; C&T Fig. 7 writes 39 images)
     from importlib.metadata import PackageNotFoundError, version
 
     out = {}
