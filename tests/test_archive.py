@@ -5,7 +5,6 @@ in the clone and in the unpacked archive, with the archive's own library (PYTHON
 byte for byte."""
 
 import hashlib
-import os
 import shutil
 import subprocess
 import sys
