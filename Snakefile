@@ -31,11 +31,11 @@ report: "workflow/report/workflow.rst"
 
 
 # common.smk checks config.yaml first, naming each bad key (config.yaml: colour.space: ...);
-# Snakemake's validate() then applies the same schema and fills in its defaults.
+# Snakemake's validate() then applies the same schema (JSON: read in ms) and fills in its defaults.
 include: "workflow/rules/common.smk"
 
 
-validate(config, "workflow/schemas/config.schema.yaml")
+validate(config, "workflow/schemas/config.schema.json")
 
 
 include: "workflow/rules/spectra.smk"

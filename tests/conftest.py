@@ -25,33 +25,47 @@ def root():
 def pytest_collection_modifyitems(items):
     """The modules that read the session's build (`built`) run last, each whole and in its place
     among them: the build starts with the session (fixture ``early``) and runs while everything
-    else is tested, instead of holding up the first of them to come alphabetically."""
+    else is tested, instead of holding up the first of them to come alphabetically. Likewise,
+    the other modules with runs of their own started with the session come just before them."""
     late = {item.path for item in items if "built" in getattr(item, "fixturenames", ())}
-    items.sort(key=lambda item: item.path in late)  # stable: the order within each part stays
+    # before them, the modules whose own runs start with the session (``start_with_session``,
+    # e.g. tests/test_archive.py): their runs then overlap the other tests instead of being
+    # waited for
+    background = {item.path for item in items
+                  if hasattr(getattr(item, "module", None), "start_with_session")}
+    items.sort(key=lambda item: (item.path in late, item.path in background))  # stable
 
 
 @pytest.fixture(scope="session", autouse=True)
 def early(request, root, tmp_path_factory):
     """Runs that only wait on subprocesses, started in background threads when the session does
     (tests/side_by_side.py), if a selected test needs them: the session's build, the SLURM
-    daemons and runs of tests/test_slurm.py, the failing runs of tests/test_workflow_resume.py.
+    daemons and runs of tests/test_slurm.py, the failing runs of tests/test_workflow_resume.py,
+    the clone, archive and builds of tests/test_archive.py, the lint of tests/test_workflow.py,
+    the Sphinx build of tests/test_docs.py, the installed wheel of tests/test_audit_cli.py, the
+    refused runs of tests/test_config_corpus.py.
     The tests that need them take their results (or their failure) when they come to them; at
     the end of the session, whatever is still running is killed and the daemons are stopped."""
-    from side_by_side import SideBySide
+    from side_by_side import SideBySide, workers
 
     items = request.session.items
-    with SideBySide() as runs:
+    # one run more than the cores: the build and the SLURM runs (mostly waiting) take two for
+    # most of the session; the short runs get the third
+    with SideBySide(workers() + 1) as runs:
         if any("built" in getattr(item, "fixturenames", ()) for item in items):
             runs.start_once("built", _build, runs, tmp_path_factory.mktemp("workflow"), root)
         # a test module's own background runs: its function start_with_session(runs, root,
-        # tmp_path_factory, its selected tests) starts those they need (tests/test_slurm.py,
-        # tests/test_workflow_resume.py)
+        # tmp_path_factory, its selected tests) starts those they need
         modules = {}
         for item in items:
             module = getattr(item, "module", None)
             if module is not None and hasattr(module, "start_with_session"):
                 modules.setdefault(module, []).append(item)
-        for module, selected in modules.items():
+        # the modules that read the build first (the SLURM runs are long, mostly waiting; the
+        # others short), then the others in the order their tests come
+        late = {module for module, selected in modules.items()
+                if any("built" in getattr(item, "fixturenames", ()) for item in selected)}
+        for module, selected in sorted(modules.items(), key=lambda m: m[0] not in late):
             module.start_with_session(runs, root, tmp_path_factory, selected)
         yield runs
 

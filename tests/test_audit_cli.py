@@ -7,7 +7,6 @@ tristimulus weights), ``XYZ_to_Lab`` and ``delta_E``.
 
 import csv
 import io
-import os
 import shutil
 import subprocess
 import sys
@@ -231,9 +230,33 @@ def test_bad_input_exits_1_from_the_shell(tmp_path):
     assert result.stderr.count("\n") == 1 and "known: " in result.stderr
 
 
-def test_installed_package_works_in_any_folder(root, tmp_path):
-    """Build a wheel from a copy of the project, install it alone (dependencies from this
-    environment) and run the command in an empty folder: the spectra come with the package."""
+def start_with_session(runs, root, tmp_path_factory, items):
+    """The wheel's build, install and run start with the session, on its pool
+    (tests/conftest.py's ``early`` calls this), if the test is selected: they need nothing of the
+    session's build, and so overlap the other tests; the test takes their result."""
+    if any(item.originalname == "test_installed_package_works_in_any_folder" for item in items):
+        _start_installed(runs, root, tmp_path_factory)
+
+
+def _start_installed(runs, root, tmp_path_factory):
+    if not runs.started("installed"):
+        runs.start("installed", _installed, runs, root, tmp_path_factory.mktemp("installed"))
+
+
+def _run(runs, args, timeout, **kwargs):
+    """``args`` as a process of the pool: the finished process (its output captured)."""
+    proc = runs.popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kwargs)
+    try:
+        stdout, stderr = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        raise
+    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
+
+
+def _installed(runs, root, tmp_path):
+    """A wheel built from a copy of the project, installed alone (--target), its command run in
+    an empty folder: (the install folder, the command's finished process)."""
     src = tmp_path / "src"
     src.mkdir()
     for name in ("pyproject.toml", "README.md"):
@@ -242,21 +265,29 @@ def test_installed_package_works_in_any_folder(root, tmp_path):
     shutil.copytree(root / "workflow" / "reflectance", src / "workflow" / "reflectance",
                     symlinks=True, ignore=shutil.ignore_patterns("__pycache__"))
     wheels = tmp_path / "wheels"
-    built = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w",
-                            str(wheels), str(src)], capture_output=True, text=True, timeout=600)
+    built = _run(runs, [sys.executable, "-m", "pip", "wheel", "--no-deps", "-q", "-w",
+                        str(wheels), str(src)], timeout=600)
     if built.returncode != 0:
         pytest.skip(f"cannot build a wheel here: {built.stderr.strip().splitlines()[-1:]}")
     site = tmp_path / "site"
-    subprocess.run([sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target",
-                    str(site), *map(str, wheels.glob("*.whl"))], check=True, timeout=600)
+    installed = _run(runs, [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target",
+                            str(site), *map(str, wheels.glob("*.whl"))], timeout=600)
+    assert installed.returncode == 0, installed.stdout + installed.stderr
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
-    env = dict(os.environ, PYTHONPATH=str(site))
-    result = subprocess.run(
-        [sys.executable, "-c", "import sys, reflectance, reflectance.cli as c; "
-         "print(reflectance.__file__, file=sys.stderr); sys.exit(c.main())",
-         "audit", "Cu", "--angle", "0"], cwd=elsewhere, env=env, capture_output=True, text=True,
-        timeout=300)
+    env = dict(runs.environ, PYTHONPATH=str(site))
+    result = _run(runs, [sys.executable, "-c", "import sys, reflectance, reflectance.cli as c; "
+                         "print(reflectance.__file__, file=sys.stderr); sys.exit(c.main())",
+                         "audit", "Cu", "--angle", "0"], timeout=300, cwd=elsewhere, env=env)
+    return site, result
+
+
+def test_installed_package_works_in_any_folder(root, early, tmp_path_factory):
+    """Build a wheel from a copy of the project, install it alone (dependencies from this
+    environment) and run the command in an empty folder: the spectra come with the package.
+    The build, install and run (``_installed``) start with the session; taken here."""
+    _start_installed(early, root, tmp_path_factory)  # (``early`` did, unless run without it)
+    site, result = early.result("installed")
     assert result.returncode == 0, result.stderr
     assert str(site) in result.stderr  # the installed copy, not the checkout
     assert not (site / "reflectance" / "data" / "spectra").is_symlink()

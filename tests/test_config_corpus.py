@@ -351,26 +351,52 @@ def _config_text(config, edit):
     return yaml.safe_dump(bad, sort_keys=False)
 
 
-@pytest.fixture(scope="module")
-def workflow_runs(config, tmp_path_factory):
-    """Every case's run, each in its own copy of the project, side by side (tests/side_by_side.py):
-    {case id: (copy, snapshot before the run, the finished process)}. Each test below makes its
-    own assertions on its case."""
-    from side_by_side import SideBySide
-
-    def run(project, before):
-        # a real run (not -n) of a figure that needs a spectrum: nothing may start
-        proc = subprocess.run([sys.executable, "-m", "snakemake", "--cores", "1",
-                               "results/cook_torrance_1982/fig4.csv"], cwd=project,
-                              capture_output=True, text=True, timeout=300)
-        return project, before, proc
-
-    with SideBySide() as runs:
+def start_with_session(runs, root, tmp_path_factory, items):
+    """Every selected case's run starts with the session, on its pool (tests/conftest.py's
+    ``early`` calls this): they need nothing of the session's build, and so overlap the other
+    tests; each test takes its own case's result."""
+    selected = {item.callspec.params["case_id"] for item in items
+                if item.originalname == "test_the_workflow_refuses_before_any_job_naming_the_key"}
+    if selected:
+        config = read_config(ROOT / "config.yaml")
         for case_id, edit, _ in WORKFLOW_CASES:
-            project = _project(tmp_path_factory.mktemp(case_id))
-            (project / "config.yaml").write_text(_config_text(config, edit))
-            runs.start(case_id, run, project, snapshot(project))
-        yield runs
+            if case_id in selected:
+                _start_case(runs, config, tmp_path_factory, case_id, edit)
+
+
+def _start_case(runs, config, tmp_path_factory, case_id, edit):
+    if not runs.started(("config case", case_id)):
+        project = _project(tmp_path_factory.mktemp(case_id))
+        (project / "config.yaml").write_text(_config_text(config, edit))
+        runs.start(("config case", case_id), _run, runs, project, snapshot(project))
+
+
+def _run(runs, project, before):
+    """A real run (not -n) of a figure that needs a spectrum, in ``project`` (nothing may start),
+    a process of the pool: (copy, snapshot before the run, the finished process)."""
+    proc = runs.popen([sys.executable, "-m", "snakemake", "--cores", "1",
+                       "results/cook_torrance_1982/fig4.csv"], cwd=project,
+                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        stdout, stderr = proc.communicate(timeout=300)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        raise
+    return project, before, subprocess.CompletedProcess(proc.args, proc.returncode, stdout,
+                                                        stderr)
+
+
+@pytest.fixture(scope="module")
+def workflow_runs(early, config, tmp_path_factory):
+    """Every case's run, each in its own copy of the project, on the session's pool
+    (tests/side_by_side.py), started with the session (``start_with_session``): case id ->
+    (copy, snapshot before the run, the finished process). Each test below makes its own
+    assertions on its case."""
+    def result(case_id):
+        edit = {c[0]: c[1] for c in WORKFLOW_CASES}[case_id]
+        _start_case(early, config, tmp_path_factory, case_id, edit)  # unless ``early`` did
+        return early.result(("config case", case_id))
+    return result
 
 
 @pytest.mark.parametrize("case_id, edit, expected", WORKFLOW_CASES,
@@ -378,7 +404,7 @@ def workflow_runs(config, tmp_path_factory):
 def test_the_workflow_refuses_before_any_job_naming_the_key(workflow_runs, case_id, edit,
                                                            expected):
     """README: bad config stops before any job, with a one-line error naming what is wrong."""
-    project, before, proc = workflow_runs.result(case_id)
+    project, before, proc = workflow_runs(case_id)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0, out
     lines = [line for line in out.splitlines() if re.search(expected, line)]

@@ -5,6 +5,7 @@ the default figures against what a reader of the paper must see (issue 13's acce
 """
 
 import copy
+import json
 import runpy
 from pathlib import Path
 from types import SimpleNamespace
@@ -515,7 +516,7 @@ def test_every_ambient_reference_the_schema_allows_has_its_caption(fig):
     """The merged Fig. 6/7 rules caption a reading by its ambient reference
     (workflow/rules/renders.smk, ct82_caption): each reference a config may choose needs its
     caption, which names that reading's readings."""
-    schema = yaml.safe_load((ROOT / "workflow" / "schemas" / "config.schema.yaml").read_text())
+    schema = json.loads((ROOT / "workflow" / "schemas" / "config.schema.json").read_text())
     readings = (schema["properties"]["figures"]["properties"]["cook_torrance_1982"]["properties"]
                 ["fig6"]["properties"]["ambient_readings"])
     for reference in readings["additionalProperties"]["enum"]:

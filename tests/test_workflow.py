@@ -229,11 +229,11 @@ def test_fresh_spectra_export_is_identical(root, built):
     assert digests(built, committed) == digests(root, committed)
 
 
-def test_lint_reports_only_missing_environments(root, runs):
+def test_lint_reports_only_missing_environments(root, early):
     """`snakemake --lint`: the only lint is the absence of per-rule conda/container envs
     (README.md says how the Python environment is made instead)."""
-    _start_lint(runs, root)  # unless the dry runs started it already
-    proc = runs.result("lint")
+    _start_lint(early, root)  # (``early`` did, unless run without it)
+    proc = early.result("lint")
     text = proc.stdout + proc.stderr
     lints = [line.strip() for line in text.splitlines() if line.strip().startswith("* ")]
     assert lints, text  # the environment lint is expected: the linter did run
@@ -301,16 +301,33 @@ def _report(built, path):
     return path
 
 
+def start_with_session(runs, root, tmp_path_factory, items):
+    """The lint of the project starts with the session, on its pool (tests/conftest.py's
+    ``early`` calls this), if it is selected: it reads the project, nothing of the session's
+    build, and so overlaps the other tests."""
+    if any(item.originalname == "test_lint_reports_only_missing_environments" for item in items):
+        _start_lint(runs, root)
+
+
 def _start_lint(runs, root):
-    runs.start_once("lint", snakemake, root, "--lint", check=False)
+    runs.start_once("lint", _lint, runs, root)
+
+
+def _lint(runs, root):
+    """`snakemake --lint` in the project, a process of the pool (killed if the session ends
+    first)."""
+    proc = runs.popen(SNAKEMAKE + ["--lint"], cwd=root, stdout=subprocess.PIPE,
+                      stderr=subprocess.PIPE, text=True)
+    stdout, stderr = proc.communicate()
+    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
 
 
 @pytest.fixture(scope="module")
 def dry_runs(runs, built, root, tmp_path_factory):
     """`snakemake -n --cores 2` in the session's build ("built") and in a copy of it with each
-    one-key edit of ONE_KEY_EDITS (by its index), the report of the build ("report") and the
-    lint of the project ("lint"), all started at once. The copies are made before any run
-    starts."""
+    one-key edit of ONE_KEY_EDITS (by its index) and the report of the build ("report"), all
+    started at once (the lint of the project starts with the session: ``start_with_session``).
+    The copies are made before any run starts."""
     copies = []
     for key, value, _ in ONE_KEY_EDITS:
         cwd = tmp_path_factory.mktemp("edit") / "copy"
@@ -321,7 +338,6 @@ def dry_runs(runs, built, root, tmp_path_factory):
     for i, cwd in enumerate(copies):
         runs.start(i, snakemake, cwd, "-n", "--cores", "2")
     runs.start("report", _report, built, tmp_path_factory.mktemp("report") / "report.html")
-    _start_lint(runs, root)
     return runs
 
 

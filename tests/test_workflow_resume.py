@@ -187,20 +187,29 @@ def _failing_run(runs, root, cwd, case):
         config["materials"]["Rubber"]["notation"] = "N99"
         (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
     elif case == "failing script":  # whatever the reason, a derive job that fails after it wrote
+        # (a stand-in derive: the case is about the job failing after it wrote, not about the
+        # Meng fits, ~21 CPU-s for nothing)
+        _stand_in_derive(script, failing="")
         script.write_text(script.read_text() + "\nraise RuntimeError('fails after writing')\n")
     else:  # one material fails: Rubber; the others (a stand-in) do not
-        text = script.read_text()
-        assert "def derive(entry):\n" in text
-        script.write_text(text.replace("def derive(entry):\n", """def derive(entry):
-    if entry["notation"] == "N2.5":
-        raise ValueError("stand-in failure")
-    return {"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}
-"""))
+        _stand_in_derive(script, failing="N2.5")
     committed, inodes = _spectra_digests(cwd), _spectra_inodes(cwd)
     proc = runs.popen(SNAKEMAKE + ["--cores", "1", "--force", "spectra/Rubber.csv"], cwd=cwd,
                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     proc.communicate()
     return cwd, committed, inodes, proc
+
+
+def _stand_in_derive(script, failing):
+    """derive_spectra.py's ``derive`` replaced by a stand-in: a flat spectrum for every material,
+    a ValueError for the one whose notation is ``failing`` (none if it is "")."""
+    text = script.read_text()
+    assert "def derive(entry):\n" in text
+    script.write_text(text.replace("def derive(entry):\n", f"""def derive(entry):
+    if entry["notation"] == {failing!r}:
+        raise ValueError("stand-in failure")
+    return {{"wavelength_nm": [400.0, 700.0], "reflectance": [0.5, 0.5]}}
+"""))
 
 
 @pytest.fixture(scope="module")
