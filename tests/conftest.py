@@ -49,8 +49,8 @@ def early(request, root, tmp_path_factory):
     from side_by_side import SideBySide, workers
 
     items = request.session.items
-    # one run more than the cores: the build and the SLURM runs (mostly waiting) take two for
-    # most of the session; the short runs get the third
+    # one run more than the cores (side_by_side.workers: at most 4): the build and the SLURM
+    # runs (mostly waiting) take two for most of the session; the short runs get the third
     with SideBySide(workers() + 1) as runs:
         if any("built" in getattr(item, "fixturenames", ()) for item in items):
             runs.start_once("built", _build, runs, tmp_path_factory.mktemp("workflow"), root)

@@ -77,6 +77,23 @@ class SideBySide:
             self._processes.append(proc)
         return proc
 
+    def run(self, args, timeout=None, **kwargs):
+        """``args`` run to its end as :meth:`popen` starts it, output captured as text: the
+        ``subprocess.CompletedProcess``. On ``timeout`` (seconds) its whole session is killed
+        and waited for, then ``subprocess.TimeoutExpired`` is raised."""
+        proc = self.popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          **kwargs)
+        try:
+            stdout, stderr = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+            proc.communicate()
+            raise
+        return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
+
     def callback(self, function, *args, **kwargs):
         """Call ``function`` when the pool closes, after its runs are over (last in, first
         out; each one called even if another raised)."""

@@ -245,13 +245,7 @@ def _start_installed(runs, root, tmp_path_factory):
 
 def _run(runs, args, timeout, **kwargs):
     """``args`` as a process of the pool: the finished process (its output captured)."""
-    proc = runs.popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kwargs)
-    try:
-        stdout, stderr = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        raise
-    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
+    return runs.run(args, timeout=timeout, **kwargs)
 
 
 def _installed(runs, root, tmp_path):

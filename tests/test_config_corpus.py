@@ -12,7 +12,6 @@ import copy
 import math
 import re
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
@@ -374,16 +373,9 @@ def _start_case(runs, config, tmp_path_factory, case_id, edit):
 def _run(runs, project, before):
     """A real run (not -n) of a figure that needs a spectrum, in ``project`` (nothing may start),
     a process of the pool: (copy, snapshot before the run, the finished process)."""
-    proc = runs.popen([sys.executable, "-m", "snakemake", "--cores", "1",
-                       "results/cook_torrance_1982/fig4.csv"], cwd=project,
-                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        stdout, stderr = proc.communicate(timeout=300)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        raise
-    return project, before, subprocess.CompletedProcess(proc.args, proc.returncode, stdout,
-                                                        stderr)
+    return project, before, runs.run([sys.executable, "-m", "snakemake", "--cores", "1",
+                                      "results/cook_torrance_1982/fig4.csv"], timeout=300,
+                                     cwd=project)
 
 
 @pytest.fixture(scope="module")

@@ -305,10 +305,47 @@ def test_bench_crosscheck_measures_both_against_the_same_reference(root):
     # the whole commands, fresh processes: ours at our rung meeting the goal (or our best),
     # Mitsuba at its first rung meeting it (or its best)
     w = r["whole_commands"]
+    assert "error" not in w, w
     assert w["ours_s"] > 0 and w["mitsuba_s"] > 0
     assert w["ratio"] == pytest.approx(w["mitsuba_s"] / w["ours_s"])
-    assert w["ours_supersample"] in (1, 2) and w["mitsuba_spp"] in (1, 16)
+    assert w["ours_supersample"] in (1, 2)
+    assert round(w["mitsuba_spp"] ** 0.5) ** 2 == w["mitsuba_spp"]  # a square, as stratified
+    # each command's image judged against O: ours is the in-process rung's image, but read
+    # back from a float32 EXR
+    rung = next(x for x in r["our_ladder"] if x["supersample"] == w["ours_supersample"])
+    assert w["ours_vs_ours"] == pytest.approx(rung["vs_ours"], abs=1e-3)
+    assert len(w["mitsuba_vs_ours"]) == 2 and w["mitsuba_vs_ours"][0] > 0
     assert f"Mitsuba at {w['mitsuba_spp']} spp" in text and "whole commands" in text
+
+
+def test_mitsubas_spp_at_the_goal_is_a_square_past_both_mean_and_p95():
+    from reflectance.render.crosscheck import spp_at_goal
+
+    # error ~ spp^(-1/2): the mean 0.3 needs 1 / 0.09 = 11.1 spp, the p95 1.0 needs 3^2 = 9
+    ladder = [{"spp": spp, "vs_ours": [spp ** -0.5, 3 * spp ** -0.5]} for spp in (4, 16, 64)]
+    assert spp_at_goal(ladder) == 16  # 11.1 rounded up to a square
+    assert spp_at_goal(ladder, goal=(1.0, 0.375)) == 64  # the p95 binds: 8^2
+    assert spp_at_goal(ladder, goal=(0.1, 1.0)) == 100  # extrapolated past the slowest rungs
+    assert spp_at_goal(ladder[:1]) is None  # one rung: no slope
+
+
+def test_whole_commands_line_says_what_each_image_scores_or_why_there_is_none():
+    from reflectance.render.crosscheck import format_crosscheck
+
+    result = synthetic_result(OUR_LADDER)
+    result["whole_commands"] = {
+        "ours_s": 3.5, "mitsuba_s": 7.0, "ours_vs_ours": [0.02, 0.016],
+        "mitsuba_vs_ours": [0.31, 0.9], "ours_meets_goal": True, "mitsuba_meets_goal": False,
+        "ratio": 2.0, "ours_supersample": 1, "mitsuba_spp": 225}
+    text = "\n".join(format_crosscheck(result))
+    assert ("ours (`reflectance render`) at 1^2 spp 3.50 s (0.020 / 0.016 against O: meets the "
+            "goal)") in text
+    assert "Mitsuba at 225 spp" in text and "(0.310 / 0.900 against O: misses the goal) = 2 x" \
+        in text
+    result["whole_commands"] = {"error": "mitsuba's whole command failed (exit 1): boom",
+                                "ours_supersample": 1, "mitsuba_spp": 225}
+    lines = format_crosscheck(result)
+    assert lines[-1] == "  whole commands: mitsuba's whole command failed (exit 1): boom"
 
 
 @needs_mitsuba

@@ -2,7 +2,6 @@
 
 import importlib.util
 import re
-import subprocess
 import sys
 
 import pytest
@@ -35,12 +34,9 @@ def _start_sphinx(runs, root, tmp_path_factory):
 
 def _sphinx(runs, root, out):
     """`python -m sphinx -W` of workflow/docs into ``out``: (its folder, finished process)."""
-    proc = runs.popen(
+    return out, runs.run(
         [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-E", "-q", "-b", "html",
-         "-d", str(out / "doctrees"), str(root / "workflow" / "docs"), str(out / "html")],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    stdout, stderr = proc.communicate()
-    return out, subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
+         "-d", str(out / "doctrees"), str(root / "workflow" / "docs"), str(out / "html")])
 
 
 def test_sphinx_builds_without_warnings(root, early, tmp_path_factory):

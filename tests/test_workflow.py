@@ -316,10 +316,7 @@ def _start_lint(runs, root):
 def _lint(runs, root):
     """`snakemake --lint` in the project, a process of the pool (killed if the session ends
     first)."""
-    proc = runs.popen(SNAKEMAKE + ["--lint"], cwd=root, stdout=subprocess.PIPE,
-                      stderr=subprocess.PIPE, text=True)
-    stdout, stderr = proc.communicate()
-    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
+    return runs.run(SNAKEMAKE + ["--lint"], cwd=root)
 
 
 @pytest.fixture(scope="module")

@@ -63,7 +63,7 @@ from reflectance.render.bench import CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES
 
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
            "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "fastest_at_goal",
-           "goal_comparison", "first_rung_at_goal", "whole_commands", "bench_crosscheck",
+           "goal_comparison", "spp_at_goal", "whole_commands", "bench_crosscheck",
            "run_crosscheck", "format_crosscheck"]
 
 #: Mitsuba variants tried in order: the LLVM one is much faster, the scalar one needs no LLVM
@@ -384,31 +384,47 @@ def goal_comparison(ladder, our_ladder, goal=GOAL_DE):
             "ratio": None if ours is None or mitsuba_s is None else mitsuba_s / ours["seconds"]}
 
 
-def first_rung_at_goal(ladder, goal=GOAL_DE):
-    """Of Mitsuba's rungs ``[{"spp", "vs_ours", ...}, ...]``, the one of fewest samples whose
-    error against our converged reference (O) meets ``goal`` in mean and p95; None if none.
+def spp_at_goal(ladder, goal=GOAL_DE):
+    """Mitsuba's samples per pixel at the accuracy ``goal`` against O, from its ``ladder``
+    (rungs ``{"spp", "vs_ours"}``): for the mean and for the p95, log-log interpolation of
+    error against spp between rungs (past the slowest two, extrapolated along them:
+    :func:`equal_error_seconds` with the spp in place of the seconds), the larger of the two,
+    rounded up to a perfect square (the counts of the stratified sampler); None where the
+    ladder cannot say.
 
     Examples
     --------
-    >>> ladder = [{"spp": 64, "vs_ours": [0.35, 1.9]}, {"spp": 256, "vs_ours": [0.17, 0.95]}]
-    >>> first_rung_at_goal(ladder)["spp"], first_rung_at_goal(ladder[:1])
-    (256, None)
+    >>> ladder = [{"spp": 16, "vs_ours": [0.6, 2.0]}, {"spp": 64, "vs_ours": [0.3, 1.0]}]
+    >>> spp_at_goal(ladder), spp_at_goal(ladder, goal=(0.45, 2.0))
+    (64, 36)
     """
-    meeting = [rung for rung in ladder if meets_goal(rung["vs_ours"], goal)]
-    return min(meeting, key=lambda rung: rung["spp"]) if meeting else None
+    need = [equal_error_seconds(g, [(r["spp"], r["spp"], r["vs_ours"][j]) for r in ladder],
+                                extrapolate=True) for j, g in enumerate(goal)]
+    if None in need:
+        return None
+    side = int(np.ceil(np.sqrt(max(need)) - 1e-9))
+    return max(side, 1) ** 2
 
 
-def whole_commands(document, scene, size, supersample, spp, variant, runs=3, progress=None):
-    """Wall seconds (median of ``runs``, the two run alternately) of the two renderers' whole
-    commands, each in a fresh process: Python's start-up, imports, the scene's loading, the
-    render at equal settings and the EXR written.
+#: seconds a whole command may take before the bench gives up on it
+COMMAND_TIMEOUT_S = 900
+
+
+def whole_commands(document, scene, size, supersample, spp, variant, reference, runs=3,
+                   spectra_dir=None, base_dir=None, progress=None):
+    """The two renderers' whole commands, each in a fresh process (Python's start-up, imports,
+    the scene's loading, the render, the EXR written): wall seconds (median of ``runs``, the
+    two run alternately) and the CIEDE2000 (mean, p95) of each image against ``reference``
+    (XYZ; :func:`reflectance.render.pipeline.difference_statistics_CIEDE2000` over ``scene``).
 
     Ours is ``python -m reflectance render SCENE.yaml -o OUT.exr --quiet`` on ``document`` (a
-    scene document as :func:`crosscheck_scene` gives it) at ``size`` x ``size`` pixels with
-    ``supersample`` x ``supersample`` samples; Mitsuba's is
-    :mod:`reflectance.render.mitsuba_command` on ``scene`` (the loaded scene, exported by
+    scene document as :func:`crosscheck_scene` gives it; table shading, ``spectra_dir`` and
+    mesh paths made absolute against ``base_dir``) at ``size`` x ``size`` pixels with
+    ``supersample`` x ``supersample`` samples, as the in-process rungs; Mitsuba's is
+    :mod:`reflectance.render.mitsuba_command` on ``scene`` (exported by
     :func:`scene_to_mitsuba`) at ``spp`` samples per pixel with ``variant``. Returns
-    ``{"ours_s", "mitsuba_s"}``.
+    ``{"ours_s", "mitsuba_s", "ours_vs_ours", "mitsuba_vs_ours"}``; a command that fails or
+    times out gives ``{"error": one line naming it and its last line of standard error}``.
     """
     import copy
     import statistics
@@ -417,30 +433,56 @@ def whole_commands(document, scene, size, supersample, spp, variant, runs=3, pro
 
     import yaml
 
+    from reflectance.io.images import read_exr
     from reflectance.render.mitsuba_command import save_scene
+    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
 
     progress = progress or (lambda phase: None)
+    ours_doc = copy.deepcopy(document)
+    ours_doc.pop("_source", None)
+    ours_doc["camera"].update(width=int(size), height=int(size), supersample=int(supersample))
+    ours_doc["spectral"] = "table"  # as the in-process rungs (load_bench_scene's spectral)
+    for obj in ours_doc.get("objects", []):  # a mesh file relative to the scene file's folder
+        geometry = obj.get("geometry", {})
+        if geometry.get("type") == "mesh" and base_dir is not None:
+            geometry["path"] = str((Path(base_dir) / geometry["path"]).resolve())
     with tempfile.TemporaryDirectory(prefix="reflectance-commands-") as folder:
         folder = Path(folder)
-        ours_doc = copy.deepcopy(document)
-        ours_doc.pop("_source", None)
-        ours_doc["camera"].update(width=int(size), height=int(size), supersample=int(supersample))
         (folder / "scene.yaml").write_text(yaml.safe_dump(ours_doc, sort_keys=False))
         save_scene(scene_to_mitsuba(scene, folder, spp=spp), scene.camera, folder / "scene.json")
+        ours = [sys.executable, "-m", "reflectance", "render", str(folder / "scene.yaml"),
+                "-o", str(folder / "ours.exr"), "--quiet"]
+        if spectra_dir is not None:
+            ours += ["--spectra-dir", str(Path(spectra_dir).resolve())]
         commands = {
-            "ours_s": [sys.executable, "-m", "reflectance", "render", str(folder / "scene.yaml"),
-                       "-o", str(folder / "ours.exr"), "--quiet"],
-            "mitsuba_s": [sys.executable, "-m", "reflectance.render.mitsuba_command",
-                          str(folder / "scene.json"), variant, str(int(spp)),
-                          str(folder / "mitsuba.exr")]}
+            "ours": ours,
+            "mitsuba": [sys.executable, "-m", "reflectance.render.mitsuba_command",
+                        str(folder / "scene.json"), variant, str(int(spp)),
+                        str(folder / "mitsuba.exr")]}
         times = {key: [] for key in commands}
         for run in range(runs):
             for key, command in commands.items():
-                progress(f"cross-check: whole command, {key.split('_')[0]} {run + 1}/{runs}")
+                progress(f"cross-check: whole command, {key} {run + 1}/{runs}")
                 t0 = time.perf_counter()
-                subprocess.run(command, check=True, capture_output=True)
+                try:
+                    subprocess.run(command, check=True, capture_output=True, text=True,
+                                   timeout=COMMAND_TIMEOUT_S)
+                except subprocess.TimeoutExpired:
+                    return {"error": f"{key}'s whole command took over {COMMAND_TIMEOUT_S} s"}
+                except subprocess.CalledProcessError as err:
+                    last = (err.stderr or "").strip().splitlines()[-1:] or ["no message"]
+                    return {"error": f"{key}'s whole command failed (exit {err.returncode}): "
+                                     f"{last[0]}"}
                 times[key].append(time.perf_counter() - t0)
-    return {key: statistics.median(value) for key, value in times.items()}
+        import mitsuba as mi
+
+        XYZ = {"ours": read_exr(folder / "ours.exr")[0].astype(np.float64),
+               "mitsuba": np.array(mi.Bitmap(str(folder / "mitsuba.exr")),
+                                   dtype=np.float64)[..., :3]}
+    out = {f"{key}_s": statistics.median(value) for key, value in times.items()}
+    out.update({f"{key}_vs_ours": list(errors(image, reference, scene))
+                for key, image in XYZ.items()})
+    return out
 
 
 def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
@@ -470,7 +512,9 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     from reflectance.render.pipeline import render
 
     progress = progress or (lambda phase: None)
+    base_dir = None  # a scene file's folder: its mesh paths are relative to it
     if not isinstance(document, dict):  # a scene file: its validated document
+        base_dir = Path(document).parent
         document = load_bench_scene(document, spectra_dir=spectra_dir).document
     doc = crosscheck_scene(document)
 
@@ -523,20 +567,19 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
         "ladder": rungs, "our_ladder": our_ladder,
         "goal": goal_comparison(rungs, our_ladder),
     }
-    # the issue's "whole command": ours at our fastest rung meeting the goal, Mitsuba at its
-    # first rung meeting it (or each one's best rung when none does)
+    # issue 9's "whole command": ours at our fastest rung meeting the goal (else our rung of
+    # smallest mean error), Mitsuba at its spp at the goal (spp_at_goal, else its top rung);
+    # each command's own image is judged against O again
     ours_at = out["goal"]["ours_supersample"] or min(
         our_ladder, key=lambda r: r["vs_ours"][0])["supersample"]
-    theirs_at = first_rung_at_goal(rungs) or min(rungs, key=lambda r: r["vs_ours"][0])
-    del mitsuba  # its threads and memory before the fresh processes are timed
-    commands = whole_commands(doc, scene, size, ours_at, theirs_at["spp"], variant,
-                              max(1, runs), progress)
-    out["whole_commands"] = {
-        **commands, "ours_supersample": ours_at, "mitsuba_spp": theirs_at["spp"],
-        "ours_meets_goal": meets_goal(next(r["vs_ours"] for r in our_ladder
-                                           if r["supersample"] == ours_at)),
-        "mitsuba_meets_goal": meets_goal(theirs_at["vs_ours"]),
-        "ratio": commands["mitsuba_s"] / commands["ours_s"]}
+    theirs_spp = spp_at_goal(rungs) or max(r["spp"] for r in rungs)
+    commands = whole_commands(doc, scene, size, ours_at, theirs_spp, variant, our_reference,
+                              max(1, runs), spectra_dir, base_dir, progress)
+    if "error" not in commands:
+        commands.update(ours_meets_goal=meets_goal(commands["ours_vs_ours"]),
+                        mitsuba_meets_goal=meets_goal(commands["mitsuba_vs_ours"]),
+                        ratio=commands["mitsuba_s"] / commands["ours_s"])
+    out["whole_commands"] = {**commands, "ours_supersample": ours_at, "mitsuba_spp": theirs_spp}
     for against, extrapolate in (("mitsuba", False), ("ours", True)):
         # Against Mitsuba's reference its own noise is a floor no renderer goes below, so
         # only interpolation (or a bound); against ours, extrapolation along the power law.
@@ -593,7 +636,7 @@ def format_crosscheck(result):
     at_goal = f"  at the goal CIEDE2000 {GOAL_DE[0]:g} mean / {GOAL_DE[1]:g} p95 against O: "
     if goal["mitsuba_s"] is not None:
         lines.append(at_goal + f"Mitsuba {goal['mitsuba_s']:.3g} s ({need[0]:.3g} s for the "
-                     f"mean, {need[1]:.3g} s for the p95, log-log between rungs) = "
+                     f"mean, {need[1]:.3g} s for the p95, log-log along its rungs) = "
                      f"{goal['mitsuba_s'] / r['ours_s']:.3g} x ours at "
                      f"{r['supersample']}^2 spp; that rung of ours "
                      f"{'meets' if meets_goal(r['ours_vs_ours']) else 'misses'} it")
@@ -618,16 +661,20 @@ def format_crosscheck(result):
                      f"spp, {goal['ours_s']:.2f} s; Mitsuba's time there / ours = "
                      f"{goal['ratio']:.3g} x (issue 9's goal: {GOAL_SPEEDUP:g} x)")
     w = r.get("whole_commands")
-    if w:
-        def meets(ok):
-            return "meets the goal" if ok else "misses the goal; its best rung"
+    if w and "error" in w:
+        lines.append(f"  whole commands: {w['error']}")
+    elif w:
+        def judged(errors, ok):
+            return f"{pair(errors)} against O: {'meets' if ok else 'misses'} the goal"
 
         lines.append(
             f"  whole commands (each a fresh process: Python, imports, scene loading, render, "
-            f"EXR; median of {r.get('runs', 3)}, alternately): ours (`reflectance render`) at "
-            f"{w['ours_supersample']}^2 spp ({meets(w['ours_meets_goal'])}) {w['ours_s']:.2f} s; "
-            f"Mitsuba at {w['mitsuba_spp']} spp ({meets(w['mitsuba_meets_goal'])}) "
-            f"{w['mitsuba_s']:.2f} s = {w['ratio']:.3g} x ours")
+            f"EXR; median of {r.get('runs', 3)}, the two alternately; each image judged against "
+            f"O): ours (`reflectance render`) at {w['ours_supersample']}^2 spp "
+            f"{w['ours_s']:.2f} s ({judged(w['ours_vs_ours'], w['ours_meets_goal'])}); Mitsuba "
+            f"at {w['mitsuba_spp']} spp (its spp at the goal from the ladder, a square) "
+            f"{w['mitsuba_s']:.2f} s ({judged(w['mitsuba_vs_ours'], w['mitsuba_meets_goal'])})"
+            f" = {w['ratio']:.3g} x ours")
     return lines
 
 
