@@ -324,7 +324,7 @@ def test_mitsubas_spp_at_the_goal_is_a_square_past_both_mean_and_p95():
     # error ~ spp^(-1/2): the mean 0.3 needs 1 / 0.09 = 11.1 spp, the p95 1.0 needs 3^2 = 9
     ladder = [{"spp": spp, "vs_ours": [spp ** -0.5, 3 * spp ** -0.5]} for spp in (4, 16, 64)]
     assert spp_at_goal(ladder) == 16  # 11.1 rounded up to a square
-    assert spp_at_goal(ladder, goal=(1.0, 0.375)) == 64  # the p95 binds: 8^2
+    assert spp_at_goal(ladder, goal=(0.45, 0.375)) == 64  # the p95 binds (mean: 4.9): 8^2
     assert spp_at_goal(ladder, goal=(0.1, 1.0)) == 100  # extrapolated past the slowest rungs
     assert spp_at_goal(ladder[:1]) is None  # one rung: no slope
 
