@@ -51,6 +51,24 @@ def _file_digest(path):
         return hashlib.file_digest(stream, "sha256").hexdigest()
 
 
+#: the shell command of a spectra rule that runs its script as a command (spectra.smk says why),
+#: with the params of _script_params
+SCRIPT_COMMAND = (
+    "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
+)
+
+
+def _script_params(script, **payload):
+    """The params of such a rule: its ``payload`` as JSON (what the script reads), its script's
+    sha256 (a changed script reruns the job) and the Python that runs it (a Path: not compared by
+    the params trigger)."""
+    return {
+        "json": json.dumps(payload),
+        "script": _file_digest(_workflow_script(script)),
+        "python": Path(sys.executable),
+    }
+
+
 def _one_of(names):
     """A wildcard regex matching exactly these names (nothing at all for an empty list)."""
     return "|".join(re.escape(name) for name in names) or "(?!x)x"

