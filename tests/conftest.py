@@ -43,7 +43,8 @@ def early(request, root, tmp_path_factory):
     daemons and runs of tests/test_slurm.py, the failing runs of tests/test_workflow_resume.py,
     the clone, archive and builds of tests/test_archive.py, the lint of tests/test_workflow.py,
     the Sphinx build of tests/test_docs.py, the installed wheel of tests/test_audit_cli.py, the
-    refused runs of tests/test_config_corpus.py.
+    refused runs of tests/test_config_corpus.py; once the build is done, the runs that read it
+    (``after_build``: the kill -9 resume, the generic-cluster run, the dry runs and the report).
     The tests that need them take their results (or their failure) when they come to them; at
     the end of the session, whatever is still running is killed and the daemons are stopped."""
     from side_by_side import SideBySide, workers
@@ -67,7 +68,29 @@ def early(request, root, tmp_path_factory):
                 if any("built" in getattr(item, "fixturenames", ()) for item in selected)}
         for module, selected in sorted(modules.items(), key=lambda m: m[0] not in late):
             module.start_with_session(runs, root, tmp_path_factory, selected)
+        # the runs that read the finished build (a module's function after_build(runs, built,
+        # tmp_path_factory, its selected tests)): started the moment the build ends, instead of
+        # one after another when the last modules' tests come to them
+        readers = {}
+        for item in items:
+            module = getattr(item, "module", None)
+            if module is not None and hasattr(module, "after_build"):
+                readers.setdefault(module, []).append(item)
+        if readers and runs.started("built"):
+            runs.after("built", "after build", _after_build, runs, readers, tmp_path_factory)
         yield runs
+
+
+def _after_build(built, runs, readers, tmp_path_factory):
+    """Each reading module's copies of the finished build first (no run has touched it yet),
+    then all their runs, the longest first (each module's ``after_build`` returns
+    ``(estimated seconds, key, function, args)`` per run and makes its copies itself)."""
+    starts = []
+    for module, selected in readers.items():
+        starts += module.after_build(runs, built, tmp_path_factory, selected)
+    for _, key, function, args in sorted(starts, key=lambda start: -start[0]):
+        runs.start(key, function, *args)
+    return built
 
 
 def _build(runs, cwd, root):
@@ -97,6 +120,15 @@ def built(early, root, tmp_path_factory):
     if not early.started("built"):  # (``early`` starts it whenever a selected test needs it)
         early.start("built", _build, early, tmp_path_factory.mktemp("workflow"), root)
     return early.result("built")
+
+
+@pytest.fixture(scope="session")
+def after_build(early, built):
+    """The runs the modules' ``after_build`` started once the session's build was done
+    (``early``): ``after_build(key)`` waits for that one and gives its result (or raises what
+    it raised)."""
+    early.result("after build")
+    return early.result
 
 
 @pytest.fixture(scope="session")

@@ -19,7 +19,7 @@ import os
 import signal
 import subprocess
 import threading
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor
 from contextlib import ExitStack
 
 
@@ -59,6 +59,32 @@ class SideBySide:
         """``start`` unless ``key`` was started already."""
         if key not in self._runs:
             self.start(key, function, *args, **kwargs)
+
+    def after(self, key, then, function, *args, **kwargs):
+        """Start ``then``, ``function(result of key, *args, **kwargs)``, on the pool once run
+        ``key`` has ended, without holding a thread while it waits; if ``key`` raised (or the
+        pool closed first), ``result(then)`` raises the same."""
+        assert then not in self._runs, then
+        outer = self._runs[then] = Future()
+
+        def copy(inner):
+            if inner.cancelled():
+                outer.set_exception(Closed(then))
+            elif inner.exception() is not None:
+                outer.set_exception(inner.exception())
+            else:
+                outer.set_result(inner.result())
+
+        def chain(done):
+            if done.cancelled() or done.exception() is not None:
+                return copy(done)
+            try:
+                inner = self._pool.submit(function, done.result(), *args, **kwargs)
+            except RuntimeError:  # the pool is shut down: the session is ending
+                return outer.set_exception(Closed(then))
+            inner.add_done_callback(copy)
+
+        self._runs[key].add_done_callback(chain)
 
     def started(self, key):
         return key in self._runs

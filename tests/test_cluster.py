@@ -3,8 +3,8 @@
 import hashlib
 import re
 import shutil
-import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -13,21 +13,35 @@ pytestmark = pytest.mark.workflow
 TARGETS = ["results/cook_torrance_1982/fig4.csv", "results/cook_torrance_1982/fig5bc.csv"]
 
 
-def test_generic_cluster_profile_gives_the_local_result(root, built, tmp_path):
-    """Two figures through workflow/profiles/cluster-generic, byte-identical to the same files of
-    the session's local build (`built`), made from the same inputs: this checkout's workflow and
-    config, and the spectra that build exported (fresh times, so none is made again)."""
-    cwd = tmp_path
+def after_build(runs, built, tmp_path_factory, items):
+    """tests/conftest.py's ``early`` calls this when the session's build is done: the cluster
+    run starts then, beside the other runs that read the build, if its test is selected."""
+    if not items:
+        return []
+    cwd = tmp_path_factory.mktemp("cluster")
+    root = Path(__file__).resolve().parents[1]
     for name in ("Snakefile", "config.yaml"):
         shutil.copy(root / name, cwd / name)
     shutil.copytree(root / "workflow", cwd / "workflow",
                     ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     shutil.copytree(built / "spectra", cwd / "spectra", copy_function=shutil.copy)
+    return [(10, "generic cluster", _cluster_run, (runs, cwd))]
+
+
+def _cluster_run(runs, cwd):
     # Status checks every second, not Snakemake's default 10 s: a test has no scheduler to spare.
-    proc = subprocess.run([sys.executable, "-m", "snakemake", "--profile",
-                           "workflow/profiles/cluster-generic", "--seconds-between-status-checks",
-                           "1", *TARGETS], cwd=cwd, capture_output=True, text=True,
-                          timeout=1800)  # a loaded 2-core machine
+    proc = runs.run([sys.executable, "-m", "snakemake", "--profile",
+                     "workflow/profiles/cluster-generic", "--seconds-between-status-checks",
+                     "1", *TARGETS], cwd=cwd, timeout=1800)  # a loaded 2-core machine
+    return cwd, proc
+
+
+def test_generic_cluster_profile_gives_the_local_result(built, after_build):
+    """Two figures through workflow/profiles/cluster-generic, byte-identical to the same files of
+    the session's local build (`built`), made from the same inputs: this checkout's workflow and
+    config, and the spectra that build exported (fresh times, so none is made again). The run
+    starts when the build ends (``after_build``)."""
+    cwd, proc = after_build("generic cluster")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     # The executor's own report for every job, with the id that submit.sh printed (local-<pid>):
     # the jobs really went through the submit command, not the local executor.

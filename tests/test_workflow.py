@@ -2,7 +2,6 @@
 
 import hashlib
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
@@ -28,13 +27,6 @@ def copy_project(root, dest):
         shutil.copytree(root / name, dest / name,
                         ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     return dest
-
-
-def snakemake(cwd, *args, check=True):
-    proc = subprocess.run(SNAKEMAKE + list(args), cwd=cwd, capture_output=True, text=True)
-    if check and proc.returncode != 0:
-        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr}")
-    return proc
 
 
 def digests(cwd, paths):
@@ -207,8 +199,8 @@ def test_provenance_lists_every_output_with_its_sha256(built):
     assert manifest["git"] == {"commit": None, "dirty": None}
 
 
-def test_nothing_left_to_do(dry_runs):
-    proc = dry_runs.result("built")
+def test_nothing_left_to_do(after_build):
+    proc = after_build(("dry run", "built"))
     assert "Nothing to be done" in proc.stdout + proc.stderr
 
 
@@ -285,22 +277,6 @@ def _edit_one_key(cwd, key, value):
     (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
 
 
-@pytest.fixture(scope="module")
-def runs():
-    """This module's Snakemake runs that read but never change their folder, side by side
-    (tests/side_by_side.py): several seconds each, most of it parsing the workflow. Each test
-    makes its own assertions on its own run."""
-    from side_by_side import SideBySide
-
-    with SideBySide() as pool:
-        yield pool
-
-
-def _report(built, path):
-    snakemake(built, "--report", str(path))
-    return path
-
-
 def start_with_session(runs, root, tmp_path_factory, items):
     """The lint of the project starts with the session, on its pool (tests/conftest.py's
     ``early`` calls this), if it is selected: it reads the project, nothing of the session's
@@ -319,31 +295,38 @@ def _lint(runs, root):
     return runs.run(SNAKEMAKE + ["--lint"], cwd=root)
 
 
-@pytest.fixture(scope="module")
-def dry_runs(runs, built, root, tmp_path_factory):
-    """`snakemake -n --cores 2` in the session's build ("built") and in a copy of it with each
-    one-key edit of ONE_KEY_EDITS (by its index) and the report of the build ("report"), all
-    started at once (the lint of the project starts with the session: ``start_with_session``).
-    The copies are made before any run starts."""
-    copies = []
-    for key, value, _ in ONE_KEY_EDITS:
-        cwd = tmp_path_factory.mktemp("edit") / "copy"
-        shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
-        _edit_one_key(cwd, key, value)
-        copies.append(cwd)
-    runs.start("built", snakemake, built, "-n", "--cores", "2")
-    for i, cwd in enumerate(copies):
-        runs.start(i, snakemake, cwd, "-n", "--cores", "2")
-    runs.start("report", _report, built, tmp_path_factory.mktemp("report") / "report.html")
-    return runs
+def after_build(runs, built, tmp_path_factory, items):
+    """tests/conftest.py's ``early`` calls this when the session's build is done: the selected
+    tests' runs, ``snakemake -n --cores 2`` in the build (``("dry run", "built")``) and in a
+    copy of it with each one-key edit of ONE_KEY_EDITS (``("dry run", index)``), and the report
+    of the build read in headless Chromium (``"report"``). The copies are made here, before any
+    run starts."""
+    names = {item.originalname for item in items}
+    params = {item.callspec.params.get("edit") for item in items if hasattr(item, "callspec")}
+    starts = []
+    for i, (key, value, _) in enumerate(ONE_KEY_EDITS):
+        if "test_a_one_key_config_edit_plans_exactly_its_dependent_jobs" in names and i in params:
+            cwd = tmp_path_factory.mktemp("edit") / "copy"
+            shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+            _edit_one_key(cwd, key, value)
+            starts.append((5, ("dry run", i), _dry_run, (runs, cwd)))
+    if "test_report_reads_in_a_browser" in names:
+        starts.append((10, "report", _report, (runs, built, tmp_path_factory.mktemp("report"))))
+    if "test_nothing_left_to_do" in names:
+        starts.append((5, ("dry run", "built"), _dry_run, (runs, built)))
+    return starts
+
+
+def _dry_run(runs, cwd):
+    return runs.run(SNAKEMAKE + ["-n", "--cores", "2"], cwd=cwd)
 
 
 @pytest.mark.parametrize("edit", range(len(ONE_KEY_EDITS)),
                          ids=[".".join(key) for key, _, _ in ONE_KEY_EDITS])
-def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(dry_runs, edit):
+def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(after_build, edit):
     """README: an output whose parameters changed is rebuilt, and nothing else."""
     dependents = ONE_KEY_EDITS[edit][2]
-    proc = dry_runs.result(edit)
+    proc = after_build(("dry run", edit))
     text = proc.stdout + proc.stderr
     assert set(_planned_jobs(text)) == dependents | {"all"}, text
 
@@ -364,20 +347,29 @@ def _rules_text(root):
     return "\n".join(p.read_text() for p in sorted((root / "workflow" / "rules").glob("*.smk")))
 
 
-def test_report_reads_in_a_browser(dry_runs, root, tmp_path):
+def _report(runs, built, folder):
+    """The build's report (`snakemake --report`) with tests/report_driver.js appended, read in
+    headless Chromium: Chromium's finished process (a skip without Chromium)."""
+    chromium = _chromium()
+    page = folder / "report.html"
+    proc = runs.run(SNAKEMAKE + ["--report", str(page)], cwd=built)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    text = page.read_text()
+    driver = (Path(__file__).parent / "report_driver.js").read_text()
+    end = text.rindex("</body>")
+    driven = folder / "driven.html"
+    driven.write_text(text[:end] + "<script>" + driver + "</script>" + text[end:])
+    return runs.run(
+        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=600000",
+         "--dump-dom", driven.as_uri()], timeout=600)
+
+
+def test_report_reads_in_a_browser(after_build, root):
     import html
     import json
     import re
 
-    chromium = _chromium()
-    page = dry_runs.result("report").read_text()
-    driver = (Path(__file__).parent / "report_driver.js").read_text()
-    end = page.rindex("</body>")
-    driven = tmp_path / "driven.html"
-    driven.write_text(page[:end] + "<script>" + driver + "</script>" + page[end:])
-    proc = subprocess.run(
-        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=600000",
-         "--dump-dom", driven.as_uri()], capture_output=True, text=True, timeout=600)
+    proc = after_build("report")  # started when the build ended
     found = re.search(r'<pre id="report-check">(.*?)</pre>', proc.stdout, re.S)
     assert found, proc.stderr[-2000:]
     seen = json.loads(html.unescape(found.group(1)))

@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from test_workflow import SNAKEMAKE, copy_project, digests, results, snakemake
+from test_workflow import SNAKEMAKE, copy_project, digests, results
 
 pytestmark = pytest.mark.workflow
 
@@ -76,7 +76,19 @@ def temporaries(cwd):
     return sorted(str(p) for p in (cwd / "results").rglob(".*") if p.is_file())
 
 
-def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
+def after_build(runs, built, tmp_path_factory, items):
+    """tests/conftest.py's ``early`` calls this when the session's build is done: if the kill -9
+    test is selected, its copy of the build is made here and its runs start then."""
+    if not any(item.originalname == "test_kill_9_mid_render_then_a_plain_rerun_completes"
+               for item in items):
+        return []
+    tmp = tmp_path_factory.mktemp("kill-9")
+    cwd = tmp / "copy"
+    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    return [(25, "kill -9", _kill_9_and_resume, (runs, built, cwd, tmp))]
+
+
+def test_kill_9_mid_render_then_a_plain_rerun_completes(after_build):
     """README: a run killed outright resumes with a plain `snakemake --cores 2`, and what it
     builds is byte-identical to an uninterrupted build.
 
@@ -85,15 +97,18 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
     after it, the jobs that read its files) and is killed with SIGKILL, Snakemake and its jobs,
     once the render has begun writing. The plain rerun must render again and end with every file
     of results/ byte-identical to the uninterrupted build's: the CSVs, EXRs, PNGs, PDFs and scene
-    files the render and the jobs after it write anew, and everything else untouched."""
-    cwd = tmp_path / "copy"
-    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    files the render and the jobs after it write anew, and everything else untouched. The runs
+    start when the build ends (``after_build``); ``_kill_9_and_resume`` checks as it goes, and
+    what fails there fails here."""
+    after_build("kill -9")
+
+
+def _kill_9_and_resume(runs, built, cwd, tmp_path):
     for name in KILLED_OUTPUTS:
         (cwd / name).unlink()
     copied = final_files(cwd)  # the build's own files (test_workflow reads them)
     log = open(tmp_path / "first_run.txt", "w")
-    run = subprocess.Popen(SNAKEMAKE + ["--cores", "2"], cwd=cwd, stdout=log,
-                           stderr=subprocess.STDOUT, start_new_session=True)
+    run = runs.popen(SNAKEMAKE + ["--cores", "2"], cwd=cwd, stdout=log, stderr=subprocess.STDOUT)
     checked = dict(copied)
     killed, started, before = False, None, set()
     try:
@@ -131,7 +146,9 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
             whole(path)
 
     spectra_before = {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")}
-    proc = snakemake(cwd, "--cores", "2")  # plain: no --rerun-incomplete, no --unlock
+    # plain: no --rerun-incomplete, no --unlock
+    proc = runs.run(SNAKEMAKE + ["--cores", "2"], cwd=cwd)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "reflectance: resuming" in proc.stderr
     assert f"rule {KILLED_RULE}:" in proc.stdout + proc.stderr  # rendered again
     for path, key in final_files(cwd).items():  # what the rerun wrote (the rest: compared below)
@@ -139,7 +156,8 @@ def test_kill_9_mid_render_then_a_plain_rerun_completes(tmp_path, built):
             whole(path)
     assert temporaries(cwd) == []  # the killed writers' temporaries were removed
     assert {p.name: p.read_bytes() for p in (cwd / "spectra").glob("*.csv")} == spectra_before
-    dry = snakemake(cwd, "-n", "--cores", "2")
+    dry = runs.run(SNAKEMAKE + ["-n", "--cores", "2"], cwd=cwd)
+    assert dry.returncode == 0, dry.stdout + dry.stderr
     assert "Nothing to be done" in dry.stdout + dry.stderr
     files = results(built)
     assert results(cwd) == files
