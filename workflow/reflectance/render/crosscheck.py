@@ -415,6 +415,10 @@ def spp_at_goal(ladder, goal=GOAL_DE):
 #: seconds a whole command may take before the bench gives up on it
 COMMAND_TIMEOUT_S = 900
 
+#: the least any command of ours does before it renders: Python started, numpy and VTK's OpenGL
+#: renderer (the ID buffers) imported; timed beside the two whole commands as their floor
+FLOOR_COMMAND = "import numpy, vtkmodules.vtkRenderingCore, vtkmodules.vtkRenderingOpenGL2"
+
 
 def whole_commands(document, scene, size, supersample, spp, variant, reference, runs=3,
                    spectra_dir=None, base_dir=None, progress=None):
@@ -428,9 +432,11 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     mesh paths made absolute against ``base_dir``) at ``size`` x ``size`` pixels with
     ``supersample`` x ``supersample`` samples, as the in-process rungs; Mitsuba's is
     :mod:`reflectance.render.mitsuba_command` on ``scene`` (exported by
-    :func:`scene_to_mitsuba`) at ``spp`` samples per pixel with ``variant``. Returns
-    ``{"ours_s", "mitsuba_s", "ours_vs_ours", "mitsuba_vs_ours"}``; a command that fails or
-    times out gives ``{"error": one line naming it and its last line of standard error}``.
+    :func:`scene_to_mitsuba`) at ``spp`` samples per pixel with ``variant``. Beside them, the
+    floor of any command of ours, ``python -c FLOOR_COMMAND`` (start-up and the imports it cannot
+    do without, nothing rendered). Returns ``{"ours_s", "mitsuba_s", "floor_s", "ours_vs_ours",
+    "mitsuba_vs_ours"}``; a command that fails or times out gives ``{"error": one line naming it
+    and its last line of standard error}``.
     """
     import copy
     import statistics
@@ -464,7 +470,8 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
             "ours": ours,
             "mitsuba": [sys.executable, "-m", "reflectance.render.mitsuba_command",
                         str(folder / "scene.json"), variant, str(int(spp)),
-                        str(folder / "mitsuba.exr")]}
+                        str(folder / "mitsuba.exr")],
+            "floor": [sys.executable, "-c", FLOOR_COMMAND]}
         times = {key: [] for key in commands}
         for run in range(runs):
             for key, command in commands.items():
@@ -681,6 +688,14 @@ def format_crosscheck(result):
             f"at {w['mitsuba_spp']} spp (its spp at the goal from the ladder, a square) "
             f"{w['mitsuba_s']:.2f} s ({judged(w['mitsuba_vs_ours'], w['mitsuba_meets_goal'])})"
             f" = {w['ratio']:.3g} x ours")
+        if w.get("floor_s") is not None:
+            tenth = w["mitsuba_s"] / GOAL_SPEEDUP
+            lines.append(
+                f"  the floor of any command of ours (Python started, numpy and VTK's OpenGL "
+                f"renderer imported, nothing rendered): {w['floor_s']:.2f} s; issue 9's "
+                f"{GOAL_SPEEDUP:g} x needs ours within Mitsuba's / {GOAL_SPEEDUP:g} = "
+                f"{tenth:.2f} s, which the floor alone "
+                + ("exceeds" if w["floor_s"] > tenth else "leaves room for"))
     return lines
 
 
