@@ -221,9 +221,10 @@ def snapshot(root):
 
 
 def run_checks(config):
-    """What the workflow runs at parse time (workflow/rules/common.smk)."""
+    """What the workflow runs at parse time (workflow/rules/common.smk), on a machine of 2 GiB
+    whatever this one has (an 8192 px render, about 3.1 GiB, is refused there)."""
     validate_schema(config)
-    check_config(config, check_spectra=False, spectra_dir=ROOT / "spectra")
+    check_config(config, check_spectra=False, spectra_dir=ROOT / "spectra", memory=2 * GiB)
 
 
 def test_corpus_is_large_and_distinct():
@@ -278,11 +279,21 @@ def test_duplicated_key_names_both_lines(tmp_path):
 
 # --- the memory estimate -------------------------------------------------------------------------
 
-def test_memory_estimate_reproduces_the_benchmark():
-    """README's bench table (2 x 2 supersampling): 0.69, 1.02, 2.42 GiB at 256, 512, 1024 px;
-    the line through the last two predicts the first within 5 %."""
-    for size, measured in ((256, 0.69), (512, 1.02), (1024, 2.42)):
-        assert math.isclose(render_memory_bytes(size, size, 2) / GiB, measured, rel_tol=0.05)
+def test_memory_estimate_reproduces_the_measured_peaks():
+    """README's peaks of `reflectance render` of the vase, 2 x 2, EXR and PNG written (measured
+    with /usr/bin/time: 0.58, 0.80, 0.82, 1.09, 1.49 GiB at 256 to 4096 px): the estimate goes
+    through the four it is drawn through, and over the fifth (1024 px, banded) by at most a
+    quarter; a 4096 px figure fits in 1.5 GiB, as issue 9 asks, and is not refused."""
+    measured = {256: 0.579, 512: 0.797, 1024: 0.816, 2048: 1.090, 4096: 1.485}
+    for size, peak in measured.items():
+        estimate = render_memory_bytes(size, size, 2) / GiB
+        if size == 1024:
+            assert peak < estimate < 1.25 * peak
+        else:
+            assert math.isclose(estimate, peak, rel_tol=0.01)
+    assert render_memory_bytes(4096, 4096, 2) < 1.5 * GiB
+    # more samples per pixel of a banded image cost bands, not memory
+    assert render_memory_bytes(4096, 4096, 8) == render_memory_bytes(4096, 4096, 2)
 
 
 def test_memory_is_refused_against_the_machine_given(config):
@@ -290,9 +301,9 @@ def test_memory_is_refused_against_the_machine_given(config):
     bad["figures"]["blinn_1977"]["fig7_sweep"].update(size=1024, supersample=8)
     validate_schema(bad)
     with pytest.raises(ConfigError, match=r"fig7_sweep\.size, \.supersample: a 1024 x 683 render "
-                                          r"with 8 x 8 samples needs about 20\.5 GiB; this "
-                                          r"machine has 8\.0 GiB"):
-        check_config(bad, check_spectra=False, memory=8 * GiB)
+                                          r"with 8 x 8 samples needs about 1\.0 GiB; this "
+                                          r"machine has 0\.5 GiB"):
+        check_config(bad, check_spectra=False, memory=0.5 * GiB)
 
 
 # --- through the workflow itself ------------------------------------------------------------------

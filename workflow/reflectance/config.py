@@ -657,22 +657,35 @@ def _texture_values(config):
 
 # --- renders: their sizes and memory ---------------------------------------------------------
 
-#: ``reflectance bench`` (README, "Speed and memory"): peak resident memory of rendering the
-#: Fig. 6b vase square with 2 x 2 supersampling and two lights, VTK included: (samples, bytes).
-BENCH_PEAK_MEMORY = ((512**2 * 4, 1.02 * 2**30), (1024**2 * 4, 2.42 * 2**30))
+#: Peak resident memory (bytes) of ``reflectance render`` of the Fig. 6b vase, square (side in
+#: pixels), 2 x 2 samples per pixel, two lights, its EXR and PNG written: VTK, the mesh and the
+#: images included (README, "Speed and memory"; measured 2026-12-02 with ``/usr/bin/time``).
+RENDER_PEAK_MEMORY = {256: 606904 * 2**10, 512: 835764 * 2**10, 1024: 855748 * 2**10,
+                      2048: 1142600 * 2**10, 4096: 1557504 * 2**10}
 
 
 def render_memory_bytes(width, height, supersample):
-    """Estimated peak memory (bytes) of rendering an image of this size.
+    """Estimated peak memory (bytes) of rendering an image of this size and writing it.
 
-    A straight line through the two largest sizes of the README's benchmark
-    (:data:`BENCH_PEAK_MEMORY`): a fixed part (Python, VTK, the mesh; 0.55 GiB) plus 478 bytes
-    per sample (the ID buffer, float64 positions, normals, the shadow pass's candidates). The
-    line predicts the benchmark's 256-pixel peak within 3 % (0.67 against 0.69 GiB).
+    An image of at most :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples is traced
+    in one pass, and its per-sample arrays (ID buffer, float64 positions, normals, the shadow
+    pass's candidates) set the peak: a line in the number of samples through the measured 256
+    and 512 px peaks (:data:`RENDER_PEAK_MEMORY`; 0.51 GiB fixed, 298 bytes per sample). A
+    larger one is traced in bands of at most :data:`~reflectance.render.camera.TILE_SAMPLES`
+    samples, so what grows is the image itself (XYZ, display, EXR and PNG buffers): a line in
+    the number of pixels through the 2048 and 4096 px peaks (0.96 GiB fixed, 34 bytes per
+    pixel), above the 1024 px peak (it predicts 0.99 GiB against the measured 0.82).
     """
-    (s0, m0), (s1, m1) = BENCH_PEAK_MEMORY
-    per_sample = (m1 - m0) / (s1 - s0)
-    return (m0 - per_sample * s0) + per_sample * width * height * supersample**2
+    from reflectance.render.camera import SINGLE_TILE_SAMPLES
+
+    def line(x0, m0, x1, m1, x):
+        return m0 + (m1 - m0) * (x - x0) / (x1 - x0)
+
+    m, pixels = RENDER_PEAK_MEMORY, width * height
+    samples = pixels * supersample**2
+    if samples <= SINGLE_TILE_SAMPLES:
+        return line(256**2 * 4, m[256], 512**2 * 4, m[512], samples)
+    return line(2048**2, m[2048], 4096**2, m[4096], pixels)
 
 
 def physical_memory_bytes():

@@ -12,11 +12,20 @@ import numpy as np
 
 from reflectance.geometry.vectors import unit_vector
 
-__all__ = ["Camera", "MAX_BUFFER_SIDE"]
+__all__ = ["Camera", "MAX_BUFFER_SIDE", "SINGLE_TILE_SAMPLES", "TILE_SAMPLES"]
 
 MAX_BUFFER_SIDE = 16384
 """Largest ID-buffer side in pixels (OpenGL renderbuffers are commonly limited to this); here,
 not in :mod:`reflectance.render.idbuffer`, so the config check reads it without loading VTK."""
+
+SINGLE_TILE_SAMPLES = 1 << 21
+"""Images of at most this many samples are traced in one pass (every figure of the workflow is);
+:func:`reflectance.render.pipeline.tiles` reads it (here, so that the config check's memory
+estimate reads it without loading VTK)."""
+
+TILE_SAMPLES = 1 << 19
+"""Samples per band of a larger image (bounds the per-sample arrays of visibility, shadows and
+shading to a few hundred MiB whatever the image size)."""
 
 
 @dataclass(frozen=True)

@@ -13,9 +13,10 @@
    :mod:`reflectance.render.adaptive`): the pixels on a silhouette or whose shading curves
    within them are traced, shaded and box-filtered again on a finer N x N grid, in bands.
 
-An image of more than :data:`SINGLE_TILE_SAMPLES` samples runs these steps band by band of
-pixel rows (:func:`tiles`), each band at most :data:`TILE_SAMPLES` samples, so that memory does
-not grow with the image beyond the image itself. Every sample is traced and shaded as in one
+An image of more than :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples runs
+these steps band by band of pixel rows (:func:`tiles`), each band at most
+:data:`~reflectance.render.camera.TILE_SAMPLES` samples, so that memory does not grow with the
+image beyond the image itself. Every sample is traced and shaded as in one
 pass (the same rays, the same exact tests); only the light maps that propose occluders are
 drawn per band (over that band's samples, at the whole image's map size).
 
@@ -40,6 +41,7 @@ from reflectance.colour.display import expose_CookTorrance1982, expose_key
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
+from reflectance.render.camera import SINGLE_TILE_SAMPLES, TILE_SAMPLES
 from reflectance.render.idbuffer import IdRenderer
 from reflectance.render.parallel import Tasks, render_threads
 from reflectance.render.primitives import Primitives
@@ -56,8 +58,6 @@ __all__ = [
     "trace_once",
     "difference_statistics_CIEDE2000",
     "tiles",
-    "SINGLE_TILE_SAMPLES",
-    "TILE_SAMPLES",
     "shade_samples",
     "render",
     "display_image",
@@ -112,18 +112,16 @@ class RenderResult:
     display: tuple | None = field(default=None, repr=False)
 
 
-#: images of at most this many samples are traced in one pass (every figure of the workflow is)
-SINGLE_TILE_SAMPLES = 1 << 21
-#: samples per band of a larger image (bounds the per-sample arrays of visibility, shadows and
-#: shading to a few hundred MiB whatever the image size)
-TILE_SAMPLES = 1 << 19
+# SINGLE_TILE_SAMPLES and TILE_SAMPLES come from reflectance.render.camera; tiles() reads them
+# as this module's names (which tests patch)
 
 
 def tiles(camera, single=None, tile=None):
     """Bands ``(start, stop)`` of rows of the camera's fine grid that :func:`render` traces one
     at a time: the whole grid if it has at most ``single`` samples (default
-    :data:`SINGLE_TILE_SAMPLES`), else bands of whole pixel rows of at most ``tile`` samples
-    (default :data:`TILE_SAMPLES`; at least one pixel row)."""
+    :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES`), else bands of whole pixel rows of at
+    most ``tile`` samples (default :data:`~reflectance.render.camera.TILE_SAMPLES`; at least one
+    pixel row)."""
     single = SINGLE_TILE_SAMPLES if single is None else int(single)
     tile = TILE_SAMPLES if tile is None else int(tile)
     rows, cols = camera.shape
