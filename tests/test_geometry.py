@@ -6,6 +6,7 @@ import pyvista as pv
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import reflectance.geometry.shapes as shapes
 from reflectance.geometry.shapes import (
     VASE_INTERPOLATION_METHODS,
     VASE_PARTS,
@@ -132,11 +133,95 @@ def test_vase_outer_normals_are_perpendicular_to_the_surface():
     assert np.abs(np.einsum("ij,ij->i", chord, mid)).max() < 1e-4
 
 
-def test_vase_is_deterministic():
-    a, b = vase(VASE_PROFILE, 32, 20, 0.03), vase(VASE_PROFILE, 32, 20, 0.03)
-    assert np.array_equal(a.points, b.points)
+def same_mesh(a, b):
+    """The same arrays, bit for bit (NaN nowhere)."""
+    assert a.n_points == b.n_points and a.n_cells == b.n_cells
+    assert np.array_equal(a.points, b.points) and a.points.dtype == b.points.dtype
     assert np.array_equal(a.faces, b.faces)
-    assert np.array_equal(a.point_data["Normals"], b.point_data["Normals"])
+    for data in ("point_data", "cell_data"):
+        A, B = getattr(a, data), getattr(b, data)
+        assert list(A.keys()) == list(B.keys())
+        for name in A.keys():
+            assert A[name].dtype == B[name].dtype and np.array_equal(A[name], B[name]), name
+    return True
+
+
+def test_vase_is_deterministic():
+    # two builds, not one build and its cached copy (shapes._vase: the build behind the cache)
+    args = (VASE_PROFILE, 32, 20, 0.03, 9, "cubic")
+    assert same_mesh(shapes._vase(*args), shapes._vase(*args))
+
+
+# --- the vase's cache (reflectance.io.cache) -------------------------------------------------------
+
+@pytest.fixture
+def mesh_cache(tmp_path, monkeypatch):
+    """An empty cache folder of this test's own; the builds of shapes._vase counted."""
+    monkeypatch.setenv("REFLECTANCE_CACHE", str(tmp_path / "cache"))
+    builds = []
+    build = shapes._vase
+
+    def counted(*args):
+        builds.append(args)
+        return build(*args)
+
+    monkeypatch.setattr(shapes, "_vase", counted)
+    return tmp_path / "cache", builds
+
+
+def test_cached_vase_is_the_built_one_bit_for_bit(mesh_cache):
+    folder, builds = mesh_cache
+    first = vase(VASE_PROFILE, 32, 20, 0.03)
+    again = vase(VASE_PROFILE, 32, 20, 0.03)  # read back: no second build
+    assert len(builds) == 1
+    assert same_mesh(first, again)
+    (stored,) = folder.glob("meshes-*/vase-*.npz")
+    assert stored.stat().st_size > 0
+    # other arguments: another file, built
+    other = vase(VASE_PROFILE, 32, 20, 0.04)
+    assert len(builds) == 2 and len(list(folder.glob("meshes-*/vase-*.npz"))) == 2
+    assert not np.array_equal(other.points, first.points)
+
+
+def test_damaged_or_unwritable_mesh_cache_builds_again(mesh_cache, tmp_path, monkeypatch):
+    folder, builds = mesh_cache
+    first = vase(VASE_PROFILE, 16, 10, 0.03)
+    (stored,) = folder.glob("meshes-*/vase-*.npz")
+    stored.write_bytes(stored.read_bytes()[: stored.stat().st_size // 2])  # cut short
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 2
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 2  # mended
+    # a file of the right name holding other arrays (a vertex out of range) is not believed
+    data = dict(np.load(stored))
+    data["tris"] = data["tris"] + len(data["points"])
+    with open(stored, "wb") as file:
+        np.savez(file, **data)
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 3
+    # a cache folder that cannot be made: every call builds, nothing is raised
+    blocker = tmp_path / "blocker"
+    blocker.write_text("a file where the folder would be")
+    monkeypatch.setenv("REFLECTANCE_CACHE", str(blocker))
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 4
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 5
+
+
+def test_mesh_cache_of_another_code_version_is_dropped(mesh_cache):
+    folder, builds = mesh_cache
+    old = folder / "meshes-0000000000000000-numpy-0-scipy-0"
+    old.mkdir(parents=True)
+    (old / "vase-x.npz").write_bytes(b"old")
+    tables = folder / "colour-science-0.0"  # another user of the cache: kept
+    tables.mkdir()
+    vase(VASE_PROFILE, 16, 10, 0.03)
+    assert not old.exists() and tables.exists()
+    assert [p.name for p in folder.iterdir() if p.name.startswith("meshes-")] == [
+        shapes._mesh_cache_name()]
+
+
+def test_bad_vase_input_is_refused_whatever_the_cache_holds(mesh_cache):
+    folder, builds = mesh_cache
+    with pytest.raises(ValueError, match="wall_thickness"):
+        vase(VASE_PROFILE, 16, 10, 0.6)
+    assert not list(folder.glob("meshes-*/vase-*.npz"))  # nothing cached of a refused call
 
 
 @pytest.mark.parametrize("kwargs, message", [

@@ -27,10 +27,11 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
-import os
-from pathlib import Path
 
 import numpy as np
+
+from reflectance.io.cache import CACHE_ENVIRONMENT_VARIABLE, cache_root, distribution_version
+from reflectance.io.cache import store as _store
 
 __all__ = [
     "CACHE_ENVIRONMENT_VARIABLE",
@@ -50,60 +51,25 @@ __all__ = [
     "forget",
 ]
 
-CACHE_ENVIRONMENT_VARIABLE = "REFLECTANCE_CACHE"
-"""Environment variable naming the cache folder (default ``${XDG_CACHE_HOME:-~/.cache}/reflectance``)."""
-
 _FORMAT = 1
 """Version of this module's file layout; part of every file name."""
 
 
 @functools.lru_cache(maxsize=1)
 def _colour_science_version():
-    """The installed colour-science's version, from its dist-info folder (no import of colour and
-    no importlib.metadata, which alone takes ~0.1 s); else a tag of its location and time."""
-    import importlib.util
-
-    spec = importlib.util.find_spec("colour")
-    if spec is None or not spec.origin:
-        return "missing"
-    origin = Path(spec.origin)
-    found = sorted(origin.parent.parent.glob("colour_science-*.dist-info"))
-    if len(found) == 1:
-        return found[0].name[len("colour_science-"):-len(".dist-info")]
-    stamp = f"{origin}:{origin.stat().st_mtime_ns}"
-    return "unknown-" + hashlib.sha256(stamp.encode()).hexdigest()[:12]
+    """The installed colour-science's version (:func:`reflectance.io.cache.distribution_version`:
+    no import of colour)."""
+    return distribution_version("colour", "colour_science")
 
 
 def cache_directory():
     """The folder of the cached tables for the installed colour-science (may not exist yet)."""
-    root = os.environ.get(CACHE_ENVIRONMENT_VARIABLE)
-    if not root:
-        root = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "reflectance"
-    return Path(root) / f"colour-science-{_colour_science_version()}"
+    return cache_root() / f"colour-science-{_colour_science_version()}"
 
 
 def _path(kind, parts, suffix):
     digest = hashlib.sha256(json.dumps([_FORMAT, kind, parts]).encode()).hexdigest()[:24]
     return cache_directory() / f"{kind}-{digest}{suffix}"
-
-
-def _store(path, write):
-    """Write ``path`` atomically with ``write(file)``; give up silently if the cache is unwritable."""
-    import tempfile
-
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        with os.fdopen(fd, "wb") as file:
-            write(file)
-        os.replace(tmp, path)
-    except OSError:
-        if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
 
 
 def _array(kind, parts, compute, ndim):

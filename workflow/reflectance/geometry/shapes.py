@@ -20,6 +20,7 @@ an object with varied curvature for Blinn 1977, Fig. 7 (the paper does not descr
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -97,16 +98,99 @@ def triangle_mesh(P, N, uv, tris, part):
 
 
 def _polydata(points, normals, uv, tris, part, sphere_index=None):
-    faces = np.column_stack([np.full(len(tris), 3, np.int64), tris]).ravel()
-    mesh = pv.PolyData(np.asarray(points, np.float64), faces=faces)
     normals = np.asarray(normals, np.float64)
     normals = normals / np.linalg.norm(normals, axis=-1, keepdims=True)
+    return _mesh_from_arrays(
+        np.asarray(points, np.float64), normals, np.asarray(uv, np.float64), tris,
+        np.asarray(part, np.int32),
+        np.full(len(tris), -1, np.int32) if sphere_index is None else sphere_index)
+
+
+def _mesh_from_arrays(points, normals, uv, tris, part, sphere_index):
+    """The PolyData of these arrays, taken as they are."""
+    faces = np.column_stack([np.full(len(tris), 3, np.int64), tris]).ravel()
+    mesh = pv.PolyData(points, faces=faces)
     mesh.point_data["Normals"] = normals
-    mesh.point_data["uv"] = np.asarray(uv, np.float64)
-    mesh.cell_data["part"] = np.asarray(part, np.int32)
-    mesh.cell_data["sphere_index"] = (
-        np.full(len(tris), -1, np.int32) if sphere_index is None else sphere_index
-    )
+    mesh.point_data["uv"] = uv
+    mesh.cell_data["part"] = part
+    mesh.cell_data["sphere_index"] = sphere_index
+    return mesh
+
+
+# --------------------------------------------------------------------------------------------
+# Built meshes, cached (reflectance.io.cache)
+# --------------------------------------------------------------------------------------------
+
+_MESH_FORMAT = 1
+"""Version of the cached meshes' layout; part of every file name."""
+
+_MESH_ARRAYS = {"points": (np.float64, 3), "normals": (np.float64, 3), "uv": (np.float64, 2),
+                "tris": (np.int64, 3), "part": (np.int32, None), "sphere_index": (np.int32, None)}
+"""The arrays of a cached mesh: dtype and columns (None: one value per triangle)."""
+
+
+@functools.lru_cache(maxsize=1)
+def _mesh_cache_name():
+    """The cached meshes' folder name: this module's source and the numpy and scipy that built
+    them, so that a change of either builds them again."""
+    from reflectance.io.cache import distribution_version, source_digest
+
+    return (f"meshes-{source_digest(__file__)}-numpy-{distribution_version('numpy', 'numpy')}"
+            f"-scipy-{distribution_version('scipy', 'scipy')}")
+
+
+def _mesh_cache_directory():
+    from reflectance.io.cache import cache_root
+
+    return cache_root() / _mesh_cache_name()
+
+
+def _json_value(value):
+    if isinstance(value, (np.ndarray, np.generic)):
+        return value.tolist()
+    raise TypeError(f"not a plain value: {type(value).__name__}")
+
+
+def _cached_mesh(kind, build, *args):
+    """``build(*args)``, built once per arguments, code and numpy and scipy versions, then read
+    back from the cache: the very arrays the build gave, bit for bit, without the build's
+    imports (the vase's splines import scipy.interpolate, about 0.5 s). Arguments that are not
+    plain values, or a cache that cannot be read or written, just build."""
+    import hashlib
+    import json
+    import zipfile
+
+    from reflectance.io.cache import prune, store
+
+    try:
+        key = json.dumps([_MESH_FORMAT, kind, args], default=_json_value)
+    except (TypeError, ValueError):
+        return build(*args)
+    path = _mesh_cache_directory() / f"{kind}-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
+    try:
+        with np.load(path, allow_pickle=False) as data:
+            arrays = {name: data[name] for name in _MESH_ARRAYS}
+        n_points, n_tris = len(arrays["points"]), len(arrays["tris"])
+        for name, (dtype, columns) in _MESH_ARRAYS.items():
+            shape = (n_points if name in ("points", "normals", "uv") else n_tris,
+                     *(() if columns is None else (columns,)))
+            if arrays[name].dtype != dtype or arrays[name].shape != shape:
+                raise ValueError(f"{path}: {name} is not {dtype.__name__} {shape}")
+        if n_tris and not 0 <= arrays["tris"].min() <= arrays["tris"].max() < n_points:
+            raise ValueError(f"{path}: a triangle's vertex is out of range")
+        return _mesh_from_arrays(**arrays)
+    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
+        pass
+    mesh = build(*args)
+    if set(mesh.point_data.keys()) == {"Normals", "uv"} and not mesh.field_data.keys():
+        arrays = {"points": np.asarray(mesh.points, np.float64),
+                  "normals": np.asarray(mesh.point_data["Normals"]),
+                  "uv": np.asarray(mesh.point_data["uv"]), "tris": _triangles(mesh),
+                  "part": np.asarray(mesh.cell_data["part"]),
+                  "sphere_index": np.asarray(mesh.cell_data["sphere_index"])}
+        if not path.parent.exists():  # a new code or library version: drop the older meshes
+            prune(path.parent)
+        store(path, lambda file: np.savez(file, **arrays))
     return mesh
 
 
@@ -280,6 +364,12 @@ def vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples=9,
     >>> mesh.is_all_triangles, np.unique(mesh.cell_data["part"]).tolist()
     (True, [0, 1, 2, 3, 4])
     """
+    return _cached_mesh("vase", _vase, profile, n_theta, n_profile_samples, wall_thickness,
+                        n_rim_samples, interpolation)
+
+
+def _vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples, interpolation):
+    """:func:`vase`, built (no cache)."""
     if interpolation not in VASE_INTERPOLATION_METHODS:
         raise ValueError(
             f"unknown vase interpolation {interpolation!r}; "

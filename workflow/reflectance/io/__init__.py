@@ -2,7 +2,8 @@
 
 Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), progress (of long work, on
 standard error), figures (the shared matplotlib
-style and saving), paths (paths from data: inside the project; names that are names).
+style and saving), paths (paths from data: inside the project; names that are names), cache (the
+small on-disk cache of values computed once: colour tables, meshes).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -11,7 +12,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("atomic", "figures", "images", "paths", "progress", "provenance", "tables")
+_MODULES = ("atomic", "cache", "figures", "images", "paths", "progress", "provenance", "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
