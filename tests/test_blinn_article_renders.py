@@ -105,6 +105,9 @@ def test_matched_phong_specular_is_p_s_times_normal_fresnel():
 def _fig7_config():
     fig = copy.deepcopy(B77["fig7"])
     fig["camera"].update(width=192, height=128, supersample=1)
+    # the close-up inset at a quarter of its size (the same aspect and field of view): only the
+    # PNG shows it; test_fig7_rim_closeup_shows_the_edge_lit_highlight checks it at full size
+    fig["rim_closeup"].update(width=160, height=48, supersample=1)
     return fig
 
 
