@@ -105,6 +105,9 @@ def test_matched_phong_specular_is_p_s_times_normal_fresnel():
 def _fig7_config():
     fig = copy.deepcopy(B77["fig7"])
     fig["camera"].update(width=192, height=128, supersample=1)
+    # the close-up inset at a quarter of its size (the same aspect and field of view): only the
+    # PNG shows it; test_fig7_rim_closeup_shows_the_edge_lit_highlight checks it at full size
+    fig["rim_closeup"].update(width=160, height=48, supersample=1)
     return fig
 
 
@@ -392,13 +395,14 @@ def test_fig7_rim_closeup_shows_the_edge_lit_highlight():
     E = np.subtract(c["position"], c["look_at"]) / np.linalg.norm(np.subtract(c["position"],
                                                                             c["look_at"]))
     np.testing.assert_allclose(n, (L + E) / np.linalg.norm(L + E), atol=1e-12)
-    peaks = {}
+    peaks, traced = {}, {}  # one trace for the four renders, as the script shares it (bit for bit)
     for panel in "ab":
         q = fig7["panels"][panel]
         m = materials_Blinn1977(q["p_s"], q["p_d"], q["c3"], q["n"], "matched")
         for model in ("phong", "torrance_sparrow"):
             Y = render(scene_from_dict(blinn_scene_Blinn1977(fig7, m[model], edge,
-                                                             CONFIG["wavelengths"], cam))).XYZ[..., 1]
+                                                             CONFIG["wavelengths"], cam)),
+                       traced=traced).XYZ[..., 1]
             peaks[panel, model] = Y.max()
             if model == "torrance_sparrow":
                 bright = Y > 1  # brighter than display white

@@ -231,23 +231,32 @@ def test_fig8_parts_and_materials_come_from_config(fig8):
     assert (table.pixels > 0).all()  # every part is in view
 
 
-def led_pixels(scene_path):
-    """Pixels whose every sample sees an LED segment (the scene's own visibility)."""
+@pytest.fixture(scope="module")
+def fig8_seen(fig8):
+    """The camera samples of Fig. 8's scene file (the scene's own visibility, traced once for
+    every test below that picks pixels by watch part) and the part each sample sees (-1: none)."""
     from reflectance.render.scene import load_scene
     from reflectance.render.visibility import visibility
-    from reflectance.geometry.watch import WATCH_PARTS
 
-    scene = load_scene(scene_path)
+    scene = load_scene(fig8.scene)
     samples = visibility(scene.mesh, scene.camera)
     part = np.where(samples.hit, scene.mesh.cell_data["part"][np.maximum(samples.triangle, 0)], -1)
-    return samples.to_pixels((part == WATCH_PARTS["led"]).astype(float)) == 1.0
+    return samples, part
 
 
-def test_fig8_led_pixels_show_dominant_wavelength_640(fig8):
+def part_pixels(seen, part):
+    """Pixels whose every sample sees the watch part ``part``."""
+    from reflectance.geometry.watch import WATCH_PARTS
+
+    samples, code = seen
+    return samples.to_pixels((code == WATCH_PARTS[part]).astype(float)) == 1.0
+
+
+def test_fig8_led_pixels_show_dominant_wavelength_640(fig8, fig8_seen):
     """The displayed LED colour keeps the 640 nm dominant wavelength (colour-science's)."""
     from PIL import Image
 
-    mask = led_pixels(fig8.scene)
+    mask = part_pixels(fig8_seen, "led")
     assert mask.sum() > 50
     encoded = np.asarray(Image.open(fig8.render_png), dtype=float)[mask] / 255
     RGB = colour.cctf_decoding(encoded, function="sRGB")
@@ -464,18 +473,11 @@ def test_fig7_default_rows_keep_their_materials_lightness_order(fig7_published):
     assert medians["Obsidian"] <= 20, medians  # still black glass
 
 
-def watch_part_lab(fig8, part):
+def watch_part_lab(fig8, seen, part):
     """(8-bit codes, CIELAB) of the pixels of fig8_render.png whose every sample sees ``part``."""
     from PIL import Image
 
-    from reflectance.geometry.watch import WATCH_PARTS
-    from reflectance.render.scene import load_scene
-    from reflectance.render.visibility import visibility
-
-    scene = load_scene(fig8.scene)
-    samples = visibility(scene.mesh, scene.camera)
-    code = np.where(samples.hit, scene.mesh.cell_data["part"][np.maximum(samples.triangle, 0)], -1)
-    mask = samples.to_pixels((code == WATCH_PARTS[part]).astype(float)) == 1.0
+    mask = part_pixels(seen, part)
     codes = np.asarray(Image.open(fig8.render_png).convert("RGB"), dtype=float)[mask]
     sRGB = colour.RGB_COLOURSPACES["sRGB"]
     XYZ = colour.RGB_to_XYZ(colour.cctf_decoding(codes / 255, function="sRGB"), sRGB,
@@ -483,31 +485,31 @@ def watch_part_lab(fig8, part):
     return codes, colour.XYZ_to_Lab(XYZ, sRGB.whitepoint)
 
 
-def test_fig8_default_reads_as_the_papers_watch(fig8):
+def test_fig8_default_reads_as_the_papers_watch(fig8, fig8_seen):
     """Issue 13: one light; the polished link borders shine against the rough insets; the gold
     case reads gold (the CIELAB hue of gold's F0 under D65), the steel band neutral and bright
     where lit; both bands visible."""
     scene = yaml.safe_load(Path(fig8.scene).read_text())
     assert len(scene["lights"]) == 1  # "illuminated by a single light source"
-    _, border = watch_part_lab(fig8, "band_outer_border")
-    _, interior = watch_part_lab(fig8, "band_outer_interior")
+    _, border = watch_part_lab(fig8, fig8_seen, "band_outer_border")
+    _, interior = watch_part_lab(fig8, fig8_seen, "band_outer_interior")
     # the frames catch the light: their brightest pixels well above the insets' brightest, and
     # a run of them (not a few glints) brighter than 90 % of the inset pixels
     assert np.percentile(border[:, 0], 95) >= np.percentile(interior[:, 0], 95) + 8
     assert (border[:, 0] > np.percentile(interior[:, 0], 90)).mean() >= 0.05
-    codes, case = watch_part_lab(fig8, "case")
+    codes, case = watch_part_lab(fig8, fig8_seen, "case")
     lit = case[:, 0] >= 20
     assert lit.mean() >= 0.5  # most of the case is lit, not a silhouette
     L, a, b = colour.XYZ_to_Lab(F0_colour_science("Au"), D65_xy())
     hue = np.degrees(np.arctan2(case[lit, 2], case[lit, 1]))
     assert abs((np.median(hue) - np.degrees(np.arctan2(b, a)) + 180) % 360 - 180) <= 10
     assert np.median(np.hypot(case[lit, 1], case[lit, 2])) >= 15  # gold, not khaki or grey
-    _, steel = watch_part_lab(fig8, "band_inner")
+    _, steel = watch_part_lab(fig8, fig8_seen, "band_inner")
     lit = steel[:, 0] >= 20
     assert np.median(np.hypot(steel[lit, 1], steel[lit, 2])) <= 6  # steel is neutral
     assert np.percentile(steel[:, 0], 90) >= 60  # and has its sheen
     for part in ("band_inner", "band_outer_border", "band_outer_interior"):
-        codes, _ = watch_part_lab(fig8, part)
+        codes, _ = watch_part_lab(fig8, fig8_seen, part)
         assert (codes.max(axis=-1) >= 20).mean() >= 0.2, part  # both bands visible
 
 
@@ -527,11 +529,13 @@ def test_every_ambient_reference_the_schema_allows_has_its_caption(fig):
 
 def test_fig8_of_several_bands_gives_the_one_band_table(fig8, tmp_path, monkeypatch):
     """An image too large for one band keeps no trace (pipeline.render); Fig. 8 then traces it
-    whole for its part table, which must be the one-band table (here forced: one-row bands)."""
+    whole for its part table, which must be the one-band table (here forced: bands of 60 rows,
+    the last one of 16; that banded renders equal one pass is test_render_tiles' claim)."""
     import reflectance.render.pipeline as pipeline
 
     monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 1)
-    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 1)
-    assert len(pipeline.tiles(SimpleNamespace(shape=(256, 320), supersample=1))) > 1
+    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 60 * 320)
+    bands = pipeline.tiles(SimpleNamespace(shape=(256, 320), supersample=1))
+    assert bands == [(0, 60), (60, 120), (120, 180), (180, 240), (240, 256)]
     banded = run_fig8(tmp_path)
     pd.testing.assert_frame_equal(pd.read_csv(banded.csv), pd.read_csv(fig8.csv))

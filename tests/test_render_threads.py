@@ -24,10 +24,17 @@ def same_bits(a, b):
     return a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes()
 
 
-@pytest.mark.parametrize("threads", [2, 3])
-def test_threads_render_the_serial_images_bit_for_bit(root, threads):
+@pytest.fixture(scope="module")
+def serial_render(root):
+    """The hard scene and its serial render (threads=1): the one reference of both thread
+    counts below, computed once."""
     scene = hard_scene(root)
-    serial = render(scene, components=True, threads=1)
+    return scene, render(scene, components=True, threads=1)
+
+
+@pytest.mark.parametrize("threads", [2, 3])
+def test_threads_render_the_serial_images_bit_for_bit(serial_render, threads):
+    scene, serial = serial_render
     parallel = render(scene, components=True, threads=threads)
     assert serial.stats["refined"] > 0 and 0 < min(serial.stats["shadowed"])
     assert same_bits(parallel.XYZ, serial.XYZ)
