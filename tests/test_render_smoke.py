@@ -20,10 +20,14 @@ def test_bench_runs_on_a_tiny_size(root, capsys):
     """`reflectance bench` with one tiny size and one run of each kind: the report's numbers are
     there and sane (brute-force shading agrees with the table, grids compared)."""
     assert main(["bench", "--sizes", "24", "--runs", "1", "--brute-force-runs", "1",
-                 "--grids", "5", "--grid-size", "16", "--spectra-dir", str(root / "spectra"),
+                 "--grids", "5", "--grid-size", "24", "--spectra-dir", str(root / "spectra"),
                  "--json"]) == 0
     out = capsys.readouterr().out
     results = json.loads(out)
+    # the grid comparison runs at --grid-size when it is among --sizes (24: it is)
+    (grid,) = results[0]["grids"]
+    assert grid["step_nm"] == 5.0 and grid["wavelengths"] == 95
+    assert grid["table_s"] > 0 and grid["brute-force_s"] > 0
     text = json.dumps(results)
     assert "24" in text
     numbers = [v for v in _leaves(results) if isinstance(v, (int, float))
