@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 from scipy import integrate
 from scipy.optimize import brentq
@@ -152,10 +152,14 @@ def test_paper_to_physical_factors():
 # --- Blinn's beta and D(0) = 1 ----------------------------------------------------------------------
 
 @given(st.floats(0.005, 1.5))
+@example(0.005859375)  # a draw that a fixed 1e-12 refused (0.4999999999988933)
 def test_blinn_distributions_fall_to_half_at_beta(beta):
     c = np.cos(beta)
-    assert distribution_Phong1975(c, beta_to_c1_Blinn1977(beta)) == pytest.approx(0.5, rel=1e-12)
-    assert distribution_TorranceSparrow1967(c, beta_to_c2_Blinn1977(beta)) == pytest.approx(0.5, rel=1e-12)
+    # cos(beta) is rounded near 1, and 1 - cos(beta), about beta^2 / 2, carries that rounding
+    # magnified by 2 / beta^2 into the exponents: the tolerance follows that conditioning
+    rel = 1e-12 + 8 * np.finfo(float).eps / beta**2
+    assert distribution_Phong1975(c, beta_to_c1_Blinn1977(beta)) == pytest.approx(0.5, rel=rel)
+    assert distribution_TorranceSparrow1967(c, beta_to_c2_Blinn1977(beta)) == pytest.approx(0.5, rel=rel)
     assert distribution_TrowbridgeReitz1975(c, beta_to_c3_Blinn1977(beta)) == pytest.approx(0.5, rel=1e-9)
 
 
