@@ -258,3 +258,42 @@ def test_display_meters_on_the_object_or_a_white_card_not_both(spectra):
                            "white": {"luminance": 1.0}})
     assert "display" in errors_of(doc, spectra)
     scene_from_dict(minimal(display={"white": {"luminance": 2.0}}), spectra_dir=spectra)
+
+
+def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
+    """Scenes that differ only in material share one composition (a deep copy each, so a scene
+    that changes its mesh changes no other); another transform or object is composed anew."""
+    from reflectance.geometry.shapes import compose, sphere
+    from reflectance.render import scene as scene_module
+
+    def arrays(mesh):
+        return {**{f"p.{k}": np.asarray(mesh.point_data[k]) for k in mesh.point_data},
+                **{f"c.{k}": np.asarray(mesh.cell_data[k]) for k in mesh.cell_data},
+                **{f"f.{k}": np.asarray(mesh.field_data[k]) for k in mesh.field_data},
+                "points": np.asarray(mesh.points), "faces": np.asarray(mesh.faces)}
+
+    scene_module._COMPOSED.clear()
+    two = [{"geometry": {"type": "sphere", "radius": 1.0}, "material": {"name": "Cu", "m": 0.3}},
+           {"geometry": {"type": "sphere", "radius": 0.5, "center": [2, 0, 0]},
+            "material": {"name": "Au", "m": 0.2}}]
+    first = scene_from_dict(minimal(objects=two), spectra_dir=spectra)
+    other = copy.deepcopy(two)
+    other[0]["material"], other[1]["material"] = {"name": "Ag", "m": 0.1}, {"name": "Cu", "m": 0.4}
+    second = scene_from_dict(minimal(objects=other), spectra_dir=spectra)
+    assert len(scene_module._COMPOSED) == 1 and second.mesh is not first.mesh
+    # the same bytes as composing the objects directly
+    direct = compose([(sphere((0, 0, 0), 1.0, 96, 48), 0), (sphere((2, 0, 0), 0.5, 96, 48), 1)])
+    expected = arrays(direct)
+    for scene in (first, second):
+        got = arrays(scene.mesh)
+        assert got.keys() == expected.keys()
+        for key, value in expected.items():
+            assert got[key].dtype == value.dtype and np.array_equal(got[key], value), key
+    first.mesh.points[:] = 0.0  # a copy: the next scene's mesh is untouched
+    third = scene_from_dict(minimal(objects=two), spectra_dir=spectra)
+    assert np.array_equal(np.asarray(third.mesh.points), expected["points"])
+    moved = copy.deepcopy(two)
+    moved[1]["transform"] = {"offset": [0, 0, 1]}
+    placed = scene_from_dict(minimal(objects=moved), spectra_dir=spectra)
+    assert len(scene_module._COMPOSED) == 2
+    assert not np.array_equal(np.asarray(placed.mesh.points), expected["points"])

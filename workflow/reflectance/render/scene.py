@@ -406,6 +406,31 @@ def _build_geometry(g, base):
     return _BUILT[key].copy(deep=True)
 
 
+#: Composed meshes (:func:`reflectance.geometry.shapes.compose`) built in this process, by the
+#: objects' geometry and transform keys (JSON): scenes that differ only in materials, lights or
+#: camera (Cook & Torrance's Fig. 7 vases and their variants) compose their objects once. Each
+#: scene gets a deep copy; scenes with a mesh read from a file are not kept (as :data:`_BUILT`).
+_COMPOSED = {}
+_COMPOSED_MAX = 4
+
+
+def _compose(objects, documents):
+    """:func:`compose` of ``objects`` (SceneObjects in the order of ``documents``, the scene's
+    object mappings), or a deep copy of the mesh composed earlier from the same documents."""
+    meshes = [(o.mesh, i) for i, o in enumerate(objects)]
+    if len(objects) != len(documents) or any(obj["geometry"]["type"] == "mesh"
+                                             for obj in documents):
+        return compose(meshes)
+    key = json.dumps([(obj["geometry"], obj.get("transform")) for obj in documents],
+                     sort_keys=True, default=str)
+    if key not in _COMPOSED:
+        composed = compose(meshes)
+        if len(_COMPOSED) >= _COMPOSED_MAX:
+            _COMPOSED.pop(next(iter(_COMPOSED)))
+        _COMPOSED[key] = composed
+    return _COMPOSED[key].copy(deep=True)
+
+
 def _geometry(check, path, g, transform, base):
     mesh = check.run(path + ["geometry"], _build_geometry, g, base)
     if mesh is None or transform is None:
@@ -506,7 +531,7 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
         if ok and mesh is not None:
             objects.append(SceneObject(obj.get("name", f"object {i}"), mesh, material, parts))
     check.raise_if_any()
-    composed = check.run(["objects"], compose, [(o.mesh, i) for i, o in enumerate(objects)])
+    composed = check.run(["objects"], _compose, objects, doc["objects"])
     check.raise_if_any()
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
                  display=display, wavelengths=grid, observer=observer, spectral=doc["spectral"],
