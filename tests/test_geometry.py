@@ -196,25 +196,54 @@ def test_damaged_or_unwritable_mesh_cache_builds_again(mesh_cache, tmp_path, mon
     with open(stored, "wb") as file:
         np.savez(file, **data)
     assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 3
+    # nor a lone array (.npy) under the archive's name, nor a vertex that is not finite
+    with open(stored, "wb") as file:
+        np.save(file, np.zeros(3))
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 4
+    data = dict(np.load(stored))
+    data["normals"][0, 0] = np.nan
+    with open(stored, "wb") as file:
+        np.savez(file, **data)
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 5
     # a cache folder that cannot be made: every call builds, nothing is raised
     blocker = tmp_path / "blocker"
     blocker.write_text("a file where the folder would be")
     monkeypatch.setenv("REFLECTANCE_CACHE", str(blocker))
-    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 4
-    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 5
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 6
+    assert same_mesh(vase(VASE_PROFILE, 16, 10, 0.03), first) and len(builds) == 7
 
 
-def test_mesh_cache_of_another_code_version_is_dropped(mesh_cache):
+def test_stale_mesh_cache_of_another_version_is_dropped_and_nothing_else(mesh_cache):
+    import os
+    import time
+
     folder, builds = mesh_cache
-    old = folder / "meshes-0000000000000000-numpy-0-scipy-0"
-    old.mkdir(parents=True)
-    (old / "vase-x.npz").write_bytes(b"old")
-    tables = folder / "colour-science-0.0"  # another user of the cache: kept
-    tables.mkdir()
+    week = shapes.MESH_CACHE_STALE_DAYS * 86400
+
+    def made(name, age_s):
+        path = folder / name
+        path.mkdir(parents=True)
+        (path / "vase-x.npz").write_bytes(b"old")
+        os.utime(path, (time.time() - age_s, time.time() - age_s))
+        return path
+
+    stale = made("meshes-0000000000000000-numpy-0-scipy-0-pyvista-0", week + 3600)
+    recent = made("meshes-1111111111111111-numpy-0-scipy-0-pyvista-0", week - 3600)  # in use
+    mine = made("meshes-of-my-own", 10 * week)  # not a name of the cache's: not touched
+    tables = made("colour-science-0.0", 10 * week)  # another user of the cache
     vase(VASE_PROFILE, 16, 10, 0.03)
-    assert not old.exists() and tables.exists()
-    assert [p.name for p in folder.iterdir() if p.name.startswith("meshes-")] == [
-        shapes._mesh_cache_name()]
+    assert not stale.exists() and recent.exists() and mine.exists() and tables.exists()
+    assert (folder / shapes._mesh_cache_name()).is_dir()
+
+
+def test_mesh_cache_unreachable_builds(monkeypatch, mesh_cache):
+    """No home folder to put the cache in (some containers, batch jobs): the vase is built."""
+    folder, builds = mesh_cache
+    monkeypatch.delenv("REFLECTANCE_CACHE")
+    monkeypatch.delenv("XDG_CACHE_HOME", raising=False)
+    monkeypatch.setattr(shapes, "_mesh_cache_directory",
+                        lambda: (_ for _ in ()).throw(RuntimeError("no home directory")))
+    assert vase(VASE_PROFILE, 16, 10, 0.03).n_cells > 0 and len(builds) == 1
 
 
 def test_bad_vase_input_is_refused_whatever_the_cache_holds(mesh_cache):

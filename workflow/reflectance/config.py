@@ -664,28 +664,34 @@ RENDER_PEAK_MEMORY = {256: 606904 * 2**10, 512: 835764 * 2**10, 1024: 855748 * 2
                       2048: 1142600 * 2**10, 4096: 1557504 * 2**10}
 
 
-def render_memory_bytes(width, height, supersample):
+def render_memory_bytes(width, height, supersample, whole=False):
     """Estimated peak memory (bytes) of rendering an image of this size and writing it.
 
     An image of at most :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples is traced
     in one pass, and its per-sample arrays (ID buffer, float64 positions, normals, the shadow
     pass's candidates) set the peak: a line in the number of samples through the measured 256
-    and 512 px peaks (:data:`RENDER_PEAK_MEMORY`; 0.51 GiB fixed, 298 bytes per sample). A
-    larger one is traced in bands of at most :data:`~reflectance.render.camera.TILE_SAMPLES`
-    samples, so what grows is the image itself (XYZ, display, EXR and PNG buffers): a line in
-    the number of pixels through the 2048 and 4096 px peaks (0.96 GiB fixed, 34 bytes per
-    pixel), above the 1024 px peak (it predicts 0.99 GiB against the measured 0.82).
+    and 512 px peaks (:data:`RENDER_PEAK_MEMORY`; 0.51 GiB fixed, 298 bytes per sample); so is
+    any image of a figure that traces it ``whole`` besides its render (C&T Fig. 8's part table,
+    Blinn's light sweep). A larger image is traced in bands of at most
+    :data:`~reflectance.render.camera.TILE_SAMPLES` samples, so what grows is the image itself
+    (XYZ, display, EXR and PNG buffers): a line in the number of pixels through the 2048 and
+    4096 px peaks (0.96 GiB fixed, 34 bytes per pixel), and never below the one-pass line at its
+    largest image, so that the estimate grows with the image across the two (it over-estimates
+    the 1024 px peak: 1.09 against 0.82 GiB).
     """
     from reflectance.render.camera import SINGLE_TILE_SAMPLES
 
     def line(x0, m0, x1, m1, x):
         return m0 + (m1 - m0) * (x - x0) / (x1 - x0)
 
+    def one_pass(samples):
+        return line(256**2 * 4, m[256], 512**2 * 4, m[512], samples)
+
     m, pixels = RENDER_PEAK_MEMORY, width * height
     samples = pixels * supersample**2
-    if samples <= SINGLE_TILE_SAMPLES:
-        return line(256**2 * 4, m[256], 512**2 * 4, m[512], samples)
-    return line(2048**2, m[2048], 4096**2, m[4096], pixels)
+    if whole or samples <= SINGLE_TILE_SAMPLES:
+        return one_pass(samples)
+    return max(one_pass(SINGLE_TILE_SAMPLES), line(2048**2, m[2048], 4096**2, m[4096], pixels))
 
 
 def physical_memory_bytes():
@@ -696,20 +702,27 @@ def physical_memory_bytes():
         return None
 
 
+#: the cameras whose figures also trace their whole image at once, however large
+#: (:func:`render_memory_bytes`'s ``whole``): C&T Fig. 8's part table, Blinn's light sweep
+WHOLE_IMAGE_TRACES = ("figures.cook_torrance_1982.fig8.camera", "figures.blinn_1977.fig7_sweep")
+
+
 def render_sizes(config):
-    """(keys, width, height, supersample) of every render of the figures, keys naming the size."""
+    """(keys, width, height, supersample, whole) of every render of the figures, keys naming the
+    size; ``whole``: the figure traces its whole image at once (:data:`WHOLE_IMAGE_TRACES`)."""
     figures = config["figures"]
     ct, b77 = figures["cook_torrance_1982"], figures["blinn_1977"]
     out = []
     for key, cam in _cameras(config):
         out.append((f"{key}.width, .height, .supersample", cam["width"], cam["height"],
-                    cam["supersample"]))
+                    cam["supersample"], key in WHOLE_IMAGE_TRACES))
     vi = ct["fig7"]["vase_image"]
     out.append(("figures.cook_torrance_1982.fig7.vase_image.width, .height, .supersample",
-                vi["width"], vi["height"], vi["supersample"]))
+                vi["width"], vi["height"], vi["supersample"], False))
     sweep, cam = b77["fig7_sweep"], b77["fig7"]["camera"]
     out.append(("figures.blinn_1977.fig7_sweep.size, .supersample", sweep["size"],
-                max(1, round(sweep["size"] * cam["height"] / cam["width"])), sweep["supersample"]))
+                max(1, round(sweep["size"] * cam["height"] / cam["width"])), sweep["supersample"],
+                "figures.blinn_1977.fig7_sweep" in WHOLE_IMAGE_TRACES))
     return out
 
 
@@ -718,12 +731,12 @@ def _render_memory(config, memory=None):
 
     memory = physical_memory_bytes() if memory is None else memory
     problems = []
-    for keys, width, height, ss in render_sizes(config):
+    for keys, width, height, ss, whole in render_sizes(config):
         if max(width, height) * ss > MAX_BUFFER_SIDE:
             problems.append(f"{keys}: the ID buffer would be {width * ss} x {height * ss} pixels; "
                             f"at most {MAX_BUFFER_SIDE} per side: lower the size or supersample")
             continue
-        need = render_memory_bytes(width, height, ss)
+        need = render_memory_bytes(width, height, ss, whole)
         if memory is not None and need > memory:
             problems.append(f"{keys}: a {width} x {height} render with {ss} x {ss} samples needs "
                             f"about {need / 2**30:.1f} GiB; this machine has "

@@ -129,14 +129,23 @@ _MESH_ARRAYS = {"points": (np.float64, 3), "normals": (np.float64, 3), "uv": (np
 """The arrays of a cached mesh: dtype and columns (None: one value per triangle)."""
 
 
+MESH_CACHE_PATTERN = r"meshes-[0-9a-f]{16}-numpy-[^/]+-scipy-[^/]+-pyvista-[^/]+"
+"""The names of the cached meshes' folders (:func:`_mesh_cache_name`): the only folders pruned."""
+
+MESH_CACHE_STALE_DAYS = 7
+"""A folder of meshes for another code or library version is removed once it has gone this
+many days without a new mesh (another checkout in use keeps its own)."""
+
+
 @functools.lru_cache(maxsize=1)
 def _mesh_cache_name():
-    """The cached meshes' folder name: this module's source and the numpy and scipy that built
-    them, so that a change of either builds them again."""
+    """The cached meshes' folder name: this module's source and the numpy, scipy and pyvista that
+    built them, so that a change of any builds them again."""
     from reflectance.io.cache import distribution_version, source_digest
 
     return (f"meshes-{source_digest(__file__)}-numpy-{distribution_version('numpy', 'numpy')}"
-            f"-scipy-{distribution_version('scipy', 'scipy')}")
+            f"-scipy-{distribution_version('scipy', 'scipy')}"
+            f"-pyvista-{distribution_version('pyvista', 'pyvista')}")
 
 
 def _mesh_cache_directory():
@@ -164,9 +173,10 @@ def _cached_mesh(kind, build, *args):
 
     try:
         key = json.dumps([_MESH_FORMAT, kind, args], default=_json_value)
-    except (TypeError, ValueError):
+        name = f"{kind}-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
+        path = _mesh_cache_directory() / name
+    except (TypeError, ValueError, OSError, RuntimeError):  # not plain values; no home folder
         return build(*args)
-    path = _mesh_cache_directory() / f"{kind}-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
     try:
         with np.load(path, allow_pickle=False) as data:
             arrays = {name: data[name] for name in _MESH_ARRAYS}
@@ -178,18 +188,23 @@ def _cached_mesh(kind, build, *args):
                 raise ValueError(f"{path}: {name} is not {dtype.__name__} {shape}")
         if n_tris and not 0 <= arrays["tris"].min() <= arrays["tris"].max() < n_points:
             raise ValueError(f"{path}: a triangle's vertex is out of range")
+        if not all(np.isfinite(arrays[name]).all() for name in ("points", "normals", "uv")):
+            raise ValueError(f"{path}: a vertex that is not finite")
         return _mesh_from_arrays(**arrays)
-    except (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile):
+    except (OSError, ValueError, EOFError, KeyError, TypeError, AttributeError,
+            zipfile.BadZipFile):  # (an .npy there: np.load gives an array, not an archive)
         pass
     mesh = build(*args)
-    if set(mesh.point_data.keys()) == {"Normals", "uv"} and not mesh.field_data.keys():
+    if (set(mesh.point_data.keys()) == {"Normals", "uv"}
+            and set(mesh.cell_data.keys()) == {"part", "sphere_index"}
+            and not mesh.field_data.keys()):
         arrays = {"points": np.asarray(mesh.points, np.float64),
                   "normals": np.asarray(mesh.point_data["Normals"]),
                   "uv": np.asarray(mesh.point_data["uv"]), "tris": _triangles(mesh),
                   "part": np.asarray(mesh.cell_data["part"]),
                   "sphere_index": np.asarray(mesh.cell_data["sphere_index"])}
-        if not path.parent.exists():  # a new code or library version: drop the older meshes
-            prune(path.parent)
+        if not path.parent.exists():  # a new code or library version: drop the stale meshes
+            prune(path.parent, MESH_CACHE_PATTERN, MESH_CACHE_STALE_DAYS)
         store(path, lambda file: np.savez(file, **arrays))
     return mesh
 

@@ -72,16 +72,21 @@ def source_digest(*paths):
     return digest.hexdigest()[:16]
 
 
-def prune(current):
-    """Remove the folders beside ``current`` whose names share its prefix (up to the first "-"):
-    the same kind of values, cached for another code or library version. Best effort."""
+def prune(current, pattern, days):
+    """Remove the folders beside ``current`` whose whole names match ``pattern`` (a regular
+    expression), other than ``current``, that have gone ``days`` days without a change: values
+    of the same kind, cached for a code or library version no longer in use. Best effort."""
+    import re
     import shutil
+    import time
 
-    prefix = current.name.split("-", 1)[0] + "-"
+    matches = re.compile(pattern).fullmatch
+    oldest = time.time() - days * 86400
     try:
-        siblings = [p for p in current.parent.iterdir()
-                    if p.is_dir() and p.name.startswith(prefix) and p.name != current.name]
+        stale = [p for p in current.parent.iterdir()
+                 if p.name != current.name and matches(p.name) and p.is_dir()
+                 and p.stat().st_mtime < oldest]
     except OSError:
         return
-    for folder in siblings:
+    for folder in stale:
         shutil.rmtree(folder, ignore_errors=True)
