@@ -52,12 +52,9 @@ def early(request, root, tmp_path_factory):
     items = request.session.items
     # one run more than the cores (side_by_side.workers: at most 4): the build and the SLURM
     # runs (mostly waiting) take two for most of the session; the short runs get the third
-    # (the runs nobody waits for soon at niceness 5, so that the build, which the last modules'
-    # runs wait for, and the tests themselves come first; the build and its readers are urgent)
-    with SideBySide(workers() + 1, nice=5) as runs:
+    with SideBySide(workers() + 1) as runs:
         if any("built" in getattr(item, "fixturenames", ()) for item in items):
-            runs.start_once("built", runs.urgent(_build), runs,
-                            tmp_path_factory.mktemp("workflow"), root)
+            runs.start_once("built", _build, runs, tmp_path_factory.mktemp("workflow"), root)
         # a test module's own background runs: its function start_with_session(runs, root,
         # tmp_path_factory, its selected tests) starts those they need
         modules = {}
@@ -92,7 +89,7 @@ def _after_build(built, runs, readers, tmp_path_factory):
     for module, selected in readers.items():
         starts += module.after_build(runs, built, tmp_path_factory, selected)
     for _, key, function, args in sorted(starts, key=lambda start: -start[0]):
-        runs.start(key, runs.urgent(function), *args)
+        runs.start(key, function, *args)
     return built
 
 
@@ -121,7 +118,7 @@ def built(early, root, tmp_path_factory):
     of the project (``_build``); shared by every end-to-end test that reads (never changes) its
     results. Started with the session (``early``), taken here."""
     if not early.started("built"):  # (``early`` starts it whenever a selected test needs it)
-        early.start("built", early.urgent(_build), early, tmp_path_factory.mktemp("workflow"), root)
+        early.start("built", _build, early, tmp_path_factory.mktemp("workflow"), root)
     return early.result("built")
 
 

@@ -40,12 +40,8 @@ class SideBySide:
     """``start(key, function, *args)`` in a thread pool; ``result(key)`` waits for that one
     (and raises what it raised)."""
 
-    def __init__(self, n=None, nice=0):
+    def __init__(self, n=None):
         self._pool = ThreadPoolExecutor(n or workers())
-        # the niceness of the processes its runs start, but for runs made ``urgent``: the
-        # session's pool starts what no test waits for soon a little nicer than the build
-        self.nice = nice
-        self._local = threading.local()
         self._runs = {}
         self._lock = threading.Lock()
         self._processes = []
@@ -90,18 +86,6 @@ class SideBySide:
 
         self._runs[key].add_done_callback(chain)
 
-    def urgent(self, function):
-        """``function`` as a run whose processes start at the niceness of this process, not the
-        pool's: a run that others wait on (the session's build, the runs that read it)."""
-        def run(*args, **kwargs):
-            self._local.urgent = True
-            try:
-                return function(*args, **kwargs)
-            finally:
-                self._local.urgent = False
-
-        return run
-
     def started(self, key):
         return key in self._runs
 
@@ -117,12 +101,6 @@ class SideBySide:
             kwargs.setdefault("env", self.environ)
             proc = subprocess.Popen(*args, start_new_session=True, **kwargs)
             self._processes.append(proc)
-        if self.nice and not getattr(self._local, "urgent", False):
-            try:  # before it starts processes of its own (they inherit it): Python starts first
-                os.setpriority(os.PRIO_PROCESS, proc.pid, os.getpriority(os.PRIO_PROCESS, 0)
-                               + self.nice)
-            except OSError:
-                pass
         return proc
 
     def run(self, args, timeout=None, **kwargs):
