@@ -45,13 +45,28 @@ def test_threads_render_the_serial_images_bit_for_bit(serial_render, threads):
 
 
 def test_threads_render_bands_bit_for_bit(root, monkeypatch):
+    import reflectance.render.shading as shading
+    import reflectance.render.shadows as shadows
+
     scene = hard_scene(root, size=40, adaptive=False)
     monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 0)
     monkeypatch.setattr(pipeline, "TILE_SAMPLES", 40 * 2 * 2 * 7)  # bands of 7 pixel rows
     assert len(pipeline.tiles(scene.camera)) == 6
+    # a band here holds 1,120 samples, fewer than pieces' least (4,096): split them anyway, into
+    # pieces of at least 16, so that each band's shadows and shading are shared between threads
+    split = []
+
+    def small_pieces(n, threads, most, least=None):
+        out = pieces(n, threads, most, 16)
+        split.append((threads, len(out)))
+        return out
+
+    for module in (shading, shadows):
+        monkeypatch.setattr(module, "pieces", small_pieces)
     serial = render(scene, threads=1)
     assert serial.stats["hit"] > 0
     assert same_bits(render(scene, threads=2).XYZ, serial.XYZ)
+    assert max(count for threads, count in split if threads == 2) > 1
 
 
 def test_thread_count_from_argument_environment_or_cores(monkeypatch):
