@@ -57,11 +57,7 @@ def early(request, root, tmp_path_factory):
             runs.start_once("built", _build, runs, tmp_path_factory.mktemp("workflow"), root)
         # a test module's own background runs: its function start_with_session(runs, root,
         # tmp_path_factory, its selected tests) starts those they need
-        modules = {}
-        for item in items:
-            module = getattr(item, "module", None)
-            if module is not None and hasattr(module, "start_with_session"):
-                modules.setdefault(module, []).append(item)
+        modules = _modules_with(items, "start_with_session")
         # the modules that read the build first (the SLURM runs are long, mostly waiting; the
         # others short), then the others in the order their tests come
         late = {module for module, selected in modules.items()
@@ -71,14 +67,20 @@ def early(request, root, tmp_path_factory):
         # the runs that read the finished build (a module's function after_build(runs, built,
         # tmp_path_factory, its selected tests)): started the moment the build ends, instead of
         # one after another when the last modules' tests come to them
-        readers = {}
-        for item in items:
-            module = getattr(item, "module", None)
-            if module is not None and hasattr(module, "after_build"):
-                readers.setdefault(module, []).append(item)
+        readers = _modules_with(items, "after_build")
         if readers and runs.started("built"):
             runs.after("built", "after build", _after_build, runs, readers, tmp_path_factory)
         yield runs
+
+
+def _modules_with(items, function):
+    """{test module that defines ``function``: its tests among ``items``}, in the items' order."""
+    modules = {}
+    for item in items:
+        module = getattr(item, "module", None)
+        if module is not None and hasattr(module, function):
+            modules.setdefault(module, []).append(item)
+    return modules
 
 
 def _after_build(built, runs, readers, tmp_path_factory):

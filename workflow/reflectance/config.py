@@ -712,18 +712,17 @@ def render_sizes(config):
     size; ``whole``: the figure traces its whole image at once (:data:`WHOLE_IMAGE_TRACES`)."""
     figures = config["figures"]
     ct, b77 = figures["cook_torrance_1982"], figures["blinn_1977"]
-    out = []
-    for key, cam in _cameras(config):
-        out.append((f"{key}.width, .height, .supersample", cam["width"], cam["height"],
-                    cam["supersample"], key in WHOLE_IMAGE_TRACES))
+    sizes = [(key, ".width, .height, .supersample", cam["width"], cam["height"],
+              cam["supersample"]) for key, cam in _cameras(config)]
     vi = ct["fig7"]["vase_image"]
-    out.append(("figures.cook_torrance_1982.fig7.vase_image.width, .height, .supersample",
-                vi["width"], vi["height"], vi["supersample"], False))
+    sizes.append(("figures.cook_torrance_1982.fig7.vase_image", ".width, .height, .supersample",
+                  vi["width"], vi["height"], vi["supersample"]))
     sweep, cam = b77["fig7_sweep"], b77["fig7"]["camera"]
-    out.append(("figures.blinn_1977.fig7_sweep.size, .supersample", sweep["size"],
-                max(1, round(sweep["size"] * cam["height"] / cam["width"])), sweep["supersample"],
-                "figures.blinn_1977.fig7_sweep" in WHOLE_IMAGE_TRACES))
-    return out
+    sizes.append(("figures.blinn_1977.fig7_sweep", ".size, .supersample", sweep["size"],
+                  max(1, round(sweep["size"] * cam["height"] / cam["width"])),
+                  sweep["supersample"]))
+    return [(f"{key}{fields}", w, h, ss, key in WHOLE_IMAGE_TRACES)
+            for key, fields, w, h, ss in sizes]
 
 
 def _render_memory(config, memory=None):

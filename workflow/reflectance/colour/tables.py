@@ -25,12 +25,12 @@ three variant tables are colour-science's own (``lower_keys``, ``slugified_keys`
 from __future__ import annotations
 
 import functools
-import hashlib
 import json
 
 import numpy as np
 
-from reflectance.io.cache import CACHE_ENVIRONMENT_VARIABLE, cache_root, distribution_version
+from reflectance.io.cache import (CACHE_ENVIRONMENT_VARIABLE, cache_root, distribution_version,
+                                  file_name)
 from reflectance.io.cache import store as _store
 
 __all__ = [
@@ -68,8 +68,7 @@ def cache_directory():
 
 
 def _path(kind, parts, suffix):
-    digest = hashlib.sha256(json.dumps([_FORMAT, kind, parts]).encode()).hexdigest()[:24]
-    return cache_directory() / f"{kind}-{digest}{suffix}"
+    return cache_directory() / file_name(_FORMAT, kind, parts, suffix)
 
 
 def _array(kind, parts, compute, ndim):

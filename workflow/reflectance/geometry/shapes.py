@@ -161,20 +161,18 @@ def _json_value(value):
 
 
 def _cached_mesh(kind, build, *args):
-    """``build(*args)``, built once per arguments, code and numpy and scipy versions, then read
-    back from the cache: the very arrays the build gave, bit for bit, without the build's
-    imports (the vase's splines import scipy.interpolate, about 0.5 s). Arguments that are not
-    plain values, or a cache that cannot be read or written, just build."""
-    import hashlib
-    import json
+    """``build(*args)``, built once per arguments, code and numpy, scipy and pyvista versions
+    (:func:`_mesh_cache_name`), then read back from the cache: the very arrays the build gave,
+    bit for bit, without the build's imports (the vase's splines import scipy.interpolate, about
+    0.5 s). Arguments that are not plain values, or a cache that cannot be located, read or
+    written, just build."""
     import zipfile
 
-    from reflectance.io.cache import prune, store
+    from reflectance.io.cache import file_name, prune, store
 
     try:
-        key = json.dumps([_MESH_FORMAT, kind, args], default=_json_value)
-        name = f"{kind}-{hashlib.sha256(key.encode()).hexdigest()[:24]}.npz"
-        path = _mesh_cache_directory() / name
+        path = _mesh_cache_directory() / file_name(_MESH_FORMAT, kind, args, ".npz",
+                                                   default=_json_value)
     except (TypeError, ValueError, OSError, RuntimeError):  # not plain values; no home folder
         return build(*args)
     try:

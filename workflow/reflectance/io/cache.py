@@ -15,8 +15,8 @@ import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["CACHE_ENVIRONMENT_VARIABLE", "cache_root", "store", "distribution_version",
-           "source_digest", "prune"]
+__all__ = ["CACHE_ENVIRONMENT_VARIABLE", "cache_root", "file_name", "store",
+           "distribution_version", "source_digest", "prune"]
 
 CACHE_ENVIRONMENT_VARIABLE = "REFLECTANCE_CACHE"
 """Environment variable naming the cache folder (default ``${XDG_CACHE_HOME:-~/.cache}/reflectance``)."""
@@ -28,6 +28,16 @@ def cache_root():
     if not root:
         root = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "reflectance"
     return Path(root)
+
+
+def file_name(layout, kind, parts, suffix, default=None):
+    """``KIND-HASH.SUFFIX``: the name of a cached value of ``kind``, HASH a digest of the JSON of
+    ``[layout, kind, parts]`` (``layout``: the user's file-layout version; ``default`` as
+    :func:`json.dumps` takes it, for values JSON does not know)."""
+    import json
+
+    digest = hashlib.sha256(json.dumps([layout, kind, parts], default=default).encode())
+    return f"{kind}-{digest.hexdigest()[:24]}{suffix}"
 
 
 def store(path, write):

@@ -391,27 +391,32 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
 #: of one object (Cook & Torrance's thirteen Fig. 7 vases) builds it once. Each scene gets a deep
 #: copy; meshes read from files are not kept (the file may change).
 _BUILT = {}
-_BUILT_MAX = 4
-
-
-def _build_geometry(g, base):
-    if g["type"] == "mesh":
-        return GEOMETRY_BUILDERS["mesh"](g, base)
-    key = json.dumps(g, sort_keys=True, default=str)
-    if key not in _BUILT:
-        mesh = GEOMETRY_BUILDERS[g["type"]](g, base)
-        if len(_BUILT) >= _BUILT_MAX:
-            _BUILT.pop(next(iter(_BUILT)))
-        _BUILT[key] = mesh
-    return _BUILT[key].copy(deep=True)
-
 
 #: Composed meshes (:func:`reflectance.geometry.shapes.compose`) built in this process, by the
 #: objects' geometry and transform keys (JSON): scenes that differ only in materials, lights or
 #: camera (Cook & Torrance's Fig. 7 vases and their variants) compose their objects once. Each
 #: scene gets a deep copy; scenes with a mesh read from a file are not kept (as :data:`_BUILT`).
 _COMPOSED = {}
-_COMPOSED_MAX = 4
+
+_KEPT_MAX = 4
+"""Meshes each of :data:`_BUILT` and :data:`_COMPOSED` keeps (the oldest is dropped first)."""
+
+
+def _kept(kept, key, build):
+    """A deep copy of the mesh kept in ``kept`` under ``key`` (JSON), ``build()`` the first time."""
+    if key not in kept:
+        mesh = build()
+        if len(kept) >= _KEPT_MAX:
+            kept.pop(next(iter(kept)))
+        kept[key] = mesh
+    return kept[key].copy(deep=True)
+
+
+def _build_geometry(g, base):
+    if g["type"] == "mesh":
+        return GEOMETRY_BUILDERS["mesh"](g, base)
+    return _kept(_BUILT, json.dumps(g, sort_keys=True, default=str),
+                 lambda: GEOMETRY_BUILDERS[g["type"]](g, base))
 
 
 def _compose(objects, documents):
@@ -423,12 +428,7 @@ def _compose(objects, documents):
         return compose(meshes)
     key = json.dumps([(obj["geometry"], obj.get("transform")) for obj in documents],
                      sort_keys=True, default=str)
-    if key not in _COMPOSED:
-        composed = compose(meshes)
-        if len(_COMPOSED) >= _COMPOSED_MAX:
-            _COMPOSED.pop(next(iter(_COMPOSED)))
-        _COMPOSED[key] = composed
-    return _COMPOSED[key].copy(deep=True)
+    return _kept(_COMPOSED, key, lambda: compose(meshes))
 
 
 def _geometry(check, path, g, transform, base):
