@@ -145,14 +145,17 @@ def test_derived_spectrum_reproduces_munsell_colour(name):
     XYZ = colour.sd_to_XYZ(sd, cmfs, illuminant_C, method="Integration") / 100
     target = colour.xyY_to_XYZ(colour.munsell_colour_to_xyY(MATERIALS[name]["notation"]))
     dE = colour.delta_E(_lab_under_C(target), _lab_under_C(XYZ), method="CIE 2000")
-    assert dE < 0.5
+    # README's promise: the exact recovery meets the notation's XYZ; what is left is the CSV's
+    # 6 significant digits (3.5e-5 at most on today's materials)
+    assert dE < 1e-4
 
 
-def test_fresh_derivation_matches_committed_csv():
-    entry = MATERIALS["OliveDrab"]
+@pytest.mark.parametrize("name", DERIVED)
+def test_fresh_derivation_is_the_committed_csv(name):
+    """On this machine, as under every OpenBLAS kernel (tests/test_recovery.py)."""
+    entry = MATERIALS[name]
     fresh = reflectance_from_munsell(entry["notation"], method=entry["recovery"])
-    committed = read_spectrum_csv(SPECTRA / "OliveDrab.csv")
-    np.testing.assert_allclose(fresh["reflectance"], committed["reflectance"], rtol=0, atol=1e-4)
+    assert format_spectrum_csv(fresh) == (SPECTRA / f"{name}.csv").read_text()
 
 
 def test_unknown_recovery_method_lists_known():

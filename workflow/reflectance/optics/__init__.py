@@ -1,7 +1,8 @@
 """Optics: measured spectra and the physics of reflection, knowing nothing of pixels.
 
-Modules: spectra (measured n, k and derived reflectances), fresnel (exact and the papers" shortcuts),
-microfacet (D), shadowing (G), brdf (the models of the four texts, assembled from D, G and F).
+Modules: spectra (measured n, k and derived reflectances), recovery (a reflectance from XYZ),
+fresnel (exact and the papers' shortcuts), microfacet (D), shadowing (G), brdf (the models of the
+four texts, assembled from D, G and F).
 
 Public names are loaded on first use (``from reflectance.optics import name``), so importing
 the package stays cheap.
@@ -10,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("brdf", "fresnel", "microfacet", "shadowing", "spectra")
+_MODULES = ("brdf", "fresnel", "microfacet", "recovery", "shadowing", "spectra")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -72,6 +73,8 @@ _EXPORTS = {
     "refidx_columns": "spectra",
     "refidx_dataset_info": "spectra",
     "reflectance_from_munsell": "spectra",
+    "reflectance_Meng2015": "recovery",
+    "RecoveryError": "recovery",
     "format_spectrum_csv": "spectra",
     "write_spectrum_csv": "spectra",
     "write_spectrum_csvs": "spectra",

@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 from reflectance.optics.fresnel import F0_from_nk, n_from_F0_CookTorrance1982
+from reflectance.optics.recovery import RecoveryError, reflectance_Meng2015
 from reflectance.io.atomic import atomic_write
 
 __all__ = [
@@ -592,8 +593,9 @@ def reflectance_from_munsell(notation, method=DEFAULT_RECOVERY, wavelengths=None
     """A smooth reflectance spectrum with the colour of a Munsell notation.
 
     The notation's xyY (Munsell renotation, relative to CIE Illuminant C) is turned into XYZ and
-    a reflectance recovered with colour-science's ``XYZ_to_sd`` under Illuminant C and the CIE
-    1931 2 degree observer, then clipped to [0, 1).
+    a reflectance recovered under Illuminant C and the CIE 1931 2 degree observer, then clipped
+    to [0, 1): 'Meng 2015' by its exact minimum (:func:`reflectance.optics.recovery.
+    reflectance_Meng2015`, the same on any CPU), the others by colour-science's ``XYZ_to_sd``.
 
     Parameters
     ----------
@@ -628,8 +630,22 @@ def reflectance_from_munsell(notation, method=DEFAULT_RECOVERY, wavelengths=None
     except Exception as err:  # colour raises several types for a malformed notation
         raise ValueError(f"Munsell notation {notation!r} is not usable: {err}") from None
     cmfs, illuminant = _munsell_conditions(wavelengths)
-    sd = colour.XYZ_to_sd(colour.xyY_to_XYZ(xyY), method=method, cmfs=cmfs, illuminant=illuminant)
-    values = sd.copy().align(cmfs.shape).values
+    XYZ = colour.xyY_to_XYZ(xyY)
+    if method == "Meng 2015":
+        # Meng et al. 2015's minimisation solved exactly (reflectance.optics.recovery says why
+        # not by colour-science's SLSQP); its constraint is colour's own integration, which is
+        # linear in the spectrum: the weights are the XYZ of each unit spectrum (Y of white = 1)
+        from colour.colorimetry import sd_to_XYZ_integration
+
+        weights = sd_to_XYZ_integration(np.eye(len(wavelengths)), cmfs, illuminant,
+                                        shape=cmfs.shape).T / 100.0
+        try:
+            values = reflectance_Meng2015(XYZ, weights)
+        except RecoveryError as err:
+            raise ValueError(f"Munsell notation {notation!r}: {err}") from None
+    else:
+        sd = colour.XYZ_to_sd(XYZ, method=method, cmfs=cmfs, illuminant=illuminant)
+        values = sd.copy().align(cmfs.shape).values
     reflectance = np.clip(values, 0.0, np.nextafter(1.0, 0.0))
     return pd.DataFrame({"wavelength_nm": wavelengths, "reflectance": reflectance})
 
@@ -669,8 +685,9 @@ def sources_table(materials, spectra_dir="spectra"):
         elif entry["source"] == "munsell":
             method = entry.get("recovery", DEFAULT_RECOVERY)
             reference = (f"Munsell renotation (Newhall, Nickerson & Judd 1943) via colour-science "
-                         f"{_colour_version()}; reflectance recovered with {method} under CIE "
-                         f"Illuminant C and the CIE 1931 2 degree observer")
+                         f"{_colour_version()}; reflectance recovered with {method}"
+                         f"{' (its minimum solved exactly)' if method == 'Meng 2015' else ''} "
+                         f"under CIE Illuminant C and the CIE 1931 2 degree observer")
             notes = f"Munsell {entry['notation']}: {entry['reason'].strip()} {extent}"
             rows.append((name, f"Munsell {entry['notation']}", reference,
                          f"{_MUNSELL_DOI}; {_RECOVERY_DOI[method]}", "derived", notes))
