@@ -194,7 +194,7 @@ CORPUS = [
     ("torus-value", set_(f"{B77}.fig7.object.minor_radius", 2.0),
      r"figures\.blinn_1977\.fig7\.object \(scene fig7a_phong_edge_as_printed and \d+ more\): minor_radius"),
     ("vase-value", set_(f"{CT}.fig6.vase.profile", [[0, 0], [0, 1], [0, 2]]),
-     r"^config\.yaml: figures\.cook_torrance_1982\.fig6\.vase \(scene fig6a_as_printed and \d+ more\): the rim"),
+     r"^config\.yaml: figures\.cook_torrance_1982\.fig6\.vase \(scene fig6a as printed and \d+ more\): the rim"),
     ("panel-m-and-lobes", set_(f"{CT}.fig6.panels.a.lobes", [{"m": 0.2, "w": 1.0}]),
      r"figures\.cook_torrance_1982\.fig6\.panels\.a: must be a panel with one Beckmann slope m or several \(lobes\), not both"),
     ("material-missing-key", delete("materials.Cu.page"), r"^config\.yaml: materials\.Cu: 'page' is a required property$"),

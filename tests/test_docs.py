@@ -15,8 +15,9 @@ def test_every_module_has_a_page(root):
     text = "\n".join(p.read_text() for p in (root / "workflow" / "docs" / "api").glob("*.rst"))
     documented = set(re.findall(r"^\.\. automodule:: (\S+)$", text, re.M))
     assert modules - documented == set(), "modules missing from workflow/docs/api"
-    assert documented - modules - {f"reflectance.{p.name}" for p in package.iterdir()
-                                   if (p / "__init__.py").exists()} == set()
+    packages = {".".join(("reflectance",) + p.parent.relative_to(package).parts)
+                for p in package.rglob("__init__.py") if p.parent != package}
+    assert documented - modules - packages == set()
 
 
 def start_with_session(runs, root, tmp_path_factory, items):

@@ -758,7 +758,7 @@ _STAND_IN = {"type": "sphere", "radius": 1.0, "n_theta": 3, "n_phi": 2}
 
 
 def _figure_scene_problems(config, spectra_dir):
-    """Build every figure's scene as its job will (reflectance.papers.scenes.figure_scenes) and
+    """Build every figure's scene as its job will (reflectance.papers.figures.figure_scenes) and
     validate it (reflectance.render.scene.scene_from_dict), without rendering.
 
     A geometry is built once per process (the same vase serves 30 scenes); later scenes with it
@@ -768,7 +768,7 @@ def _figure_scene_problems(config, spectra_dir):
     import copy
     import re
 
-    from reflectance.papers.scenes import figure_scenes
+    from reflectance.papers.figures import figure_scenes
     from reflectance.render.scene import SceneError, scene_from_dict
 
     spectra_dir = Path(spectra_dir)

@@ -8,7 +8,7 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["script_log", "peak_memory", "figure_variants", "command_line_job"]
+__all__ = ["script_log", "peak_memory", "params_dict", "command_line_job"]
 
 
 def peak_memory():
@@ -74,19 +74,14 @@ def script_log(snakemake):
             logger.removeHandler(handler)
 
 
-def figure_variants(params):
-    """The variants one figure-family job writes (C&T Figs. 6 and 7, workflow/rules/renders.smk):
-    ``[(prefix of its output names, ambient reference, published settings or None), ...]``, the
-    default figure first (unprefixed; only if ``params.published``), then each reading of
-    ``params.readings`` (``{reading: reference}``), prefixed ``<reading>_``.
+def params_dict(params):
+    """A job's params as a plain dict: Snakemake's ``Params`` (named items), a mapping, or a
+    namespace (the tests' stand-in for Snakemake's object).
 
     Examples
     --------
     >>> from types import SimpleNamespace
-    >>> figure_variants(SimpleNamespace(published={"k": 1}, reference="irradiance",
-    ...                                 readings={"as_printed": "intensity"}))
-    [('', 'irradiance', {'k': 1}), ('as_printed_', 'intensity', None)]
+    >>> params_dict(SimpleNamespace(fig={"k": 1}, colour="sRGB"))
+    {'fig': {'k': 1}, 'colour': 'sRGB'}
     """
-    default = [("", params.reference, params.published)] if params.published else []
-    return default + [(f"{reading}_", reference, None)
-                      for reading, reference in params.readings.items()]
+    return dict(params.items()) if hasattr(params, "items") else dict(vars(params))

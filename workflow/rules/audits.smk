@@ -103,24 +103,22 @@ rule audit_rgb_rendering:
         mem_mb=1500,  # script peak 575 MB
         runtime=10,  # measured 13 s
     params:
-        audit=AUDITS["rgb_rendering"],
-        fig7=CT82["fig7"],
-        table1=CT82["table1"]["rows"],
-        fig6=CT82["fig6"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        # the keys it reads, declared beside C&T Fig. 7's (reflectance.papers.figures.READERS)
+        **reader_params("audit_rgb_rendering", config),
     script:
         "../scripts/audit_rgb_rendering.py"
 
 
 # Audit 3 reads the default (unsuffixed) figure of every rendered figure: its EXRs, one per image.
 GAMUT_FIGURES = {
-    "C&T 1982 Fig. 6": [f"{CT82_OUT}/fig6{panel}.exr" for panel in "ab"],
-    "C&T 1982 Fig. 7": [f"{CT82_OUT}/fig7/{vase}.exr" for vase in CT82_FIG7_VASES],
-    "C&T 1982 Fig. 8": [f"{CT82_OUT}/fig8.exr"],
+    "C&T 1982 Fig. 6": [CT82_FIG6_OUTPUTS[f"{panel}_exr"] for panel in "ab"],
+    "C&T 1982 Fig. 7": CT82_FIG7_OUTPUTS["exrs"],
+    "C&T 1982 Fig. 8": [CT82_FIG8_OUTPUTS["exr"]],
     "Blinn 1977 Fig. 7": [f"{stem}.exr" for stem in B77_FIG7_STEMS.values()],
-    "Blinn 1977 Fig. 8": [f"{B77_RENDER_OUT}/fig8{part}.exr" for part in "ab"],
-    "Article spheres": [f"{ARTICLE_SPHERES_OUT}/spheres.exr"],
+    "Blinn 1977 Fig. 8": [
+        B77_FIG8_OUTPUTS[f"{part}_exr"] for part in B77_FIG8_PARAMS["fig"]["patterns"]
+    ],
+    "Article spheres": [SPHERES_OUTPUTS["exr"]],
 }
 
 

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 from reflectance.config import ConfigError, check_config, check_once, validate_schema
+from reflectance.papers.figures import figure, params_of, reader_params
 
 # The costly checks (each dataset's range, every figure's scene, memory) run once, in the main
 # process: a job that Snakemake re-parses the workflow for (cluster, subprocess) skips them.
@@ -78,61 +79,51 @@ def all_spectra():
     return [spectrum_csv(name) for name in sorted(config["materials"])] + ["spectra/sources.csv"]
 
 
+def flat_outputs(outputs):
+    """The paths of a figure module's outputs ({name: path or list of paths}), in order."""
+    return [p for value in outputs.values() for p in ([value] if isinstance(value, str) else value)]
+
+
 #: Every output `snakemake --cores 2` builds. Each rules file adds its own figures and tables
 #: (``TARGETS += [...]``); the Snakefile's rule all asks for them all.
 TARGETS = all_spectra()
 
 
-# Outputs and captions of C&T Figs. 6 and 7 (workflow/rules/renders.smk, one job per figure family):
-# here because Snakemake's lint wants functions and rules in separate files; they read the
-# CT82_* constants renders.smk defines before its rules call them.
-def ct82_fig6_outputs(reading):
-    """{name: path} of one variant (None: the default figure), its names prefixed by the reading."""
-    suffix, prefix = ("", "") if reading is None else (f"_{reading}", f"{reading}_")
-    return {
-        f"{prefix}{key}": f"{CT82_OUT}/{name.format(suffix)}"
-        for key, name in CT82_FIG6_FILES.items()
-    }
+# The report marks of a rendered figure's outputs (workflow/rules/renders.smk): here because
+# Snakemake's lint wants functions and rules in separate files.
+def figure_rule(name):
+    """(module, params, outputs) of the rendered figure ``name``
+    (reflectance.papers.figures): its rule takes all three from it."""
+    definition = figure(name)
+    params = params_of(definition, config)
+    return definition, params, definition.outputs(params)
 
 
 def ct82_caption(fig, reading):
     """The caption of one variant: a reading's caption is its ambient reference's."""
     if reading is None:
         return f"../report/ct82_{fig}_published.rst"
-    return f"../report/ct82_{fig}_{CT82_FIG6['ambient_readings'][reading]}.rst"
+    return f"../report/ct82_{fig}_{CT82['fig6']['ambient_readings'][reading]}.rst"
 
 
-def ct82_reported(outputs, fig, reading, subcategory):
-    """outputs, the figure and its table marked for the report, with the variant's caption."""
-    prefix = "" if reading is None else f"{reading}_"
+def ct82_reported(definition, params, outputs, fig, subcategory):
+    """``outputs`` of C&T Fig. 6 or 7 with each variant's figure and table marked for the
+    report, with the variant's caption (the variants: the definition's ``variants``)."""
     marked = dict(outputs)
-    for key, caption in (
-        ("png", ct82_caption(fig, reading)),
-        ("csv", f"../report/ct82_{fig}_table.rst"),
-    ):
-        marked[prefix + key] = report(
-            outputs[prefix + key],
-            caption=caption,
-            category="Cook & Torrance 1982",
-            subcategory=subcategory,
-            labels={
-                "variant": reading or "published",
-                "file": {"png": "figure", "csv": "table"}[key],
-            },
-        )
+    for prefix, _, _ in definition.variants(params):
+        reading = prefix[:-1] or None
+        for key, caption in (
+            ("png", ct82_caption(fig, reading)),
+            ("csv", f"../report/ct82_{fig}_table.rst"),
+        ):
+            marked[prefix + key] = report(
+                outputs[prefix + key],
+                caption=caption,
+                category="Cook & Torrance 1982",
+                subcategory=subcategory,
+                labels={
+                    "variant": reading or "published",
+                    "file": {"png": "figure", "csv": "table"}[key],
+                },
+            )
     return marked
-
-
-def ct82_fig7_outputs(reading):
-    """{name: path or paths} of one variant of Fig. 7 (None: the default figure, which alone
-    writes each vase's PNG), its names prefixed by the reading."""
-    stem, prefix = ("fig7", "") if reading is None else (f"fig7_{reading}", f"{reading}_")
-    files = {
-        "png": f"{CT82_OUT}/{stem}.png",
-        "csv": f"{CT82_OUT}/{stem}.csv",
-        "exrs": [f"{CT82_OUT}/{stem}/{vase}.exr" for vase in CT82_FIG7_VASES],
-        "scenes": [f"{CT82_OUT}/{stem}/{vase}.scene.yaml" for vase in CT82_FIG7_VASES],
-    }
-    if reading is None:
-        files["pngs"] = [f"{CT82_OUT}/{stem}/{vase}.png" for vase in CT82_FIG7_VASES]
-    return {prefix + key: value for key, value in files.items()}

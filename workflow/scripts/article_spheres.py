@@ -12,8 +12,8 @@ from reflectance.colour.display import display_tag
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import spheres_scene_article
-from reflectance.scripting import script_log
+from reflectance.papers.figures import article_spheres as definition
+from reflectance.scripting import params_dict, script_log
 from reflectance.optics.spectra import DEFAULT_RECOVERY, load_material, wavelength_grid
 from reflectance.io.tables import write_csv
 
@@ -22,9 +22,9 @@ with script_log(snakemake) as log:
     pigments, w = snakemake.params.pigments, snakemake.params.wavelengths
     grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
     folder = Path(snakemake.input.spectra[0]).parent  # spectra/: the clear coat and the pigments
-    doc = spheres_scene_article(cfg, w, colour, str(folder))
+    spheres, = definition.scenes(params_dict(snakemake.params), str(folder))  # as checked
     metal = cfg["metal_sphere"]  # the article: "on metallic materials such as gold ..."
-    scene = scene_from_dict(doc, source="config.yaml figures.article.spheres")
+    scene = scene_from_dict(spheres.document, source=f"config.yaml {spheres.source}")
     result = render_to_files(scene, out.scene, out.exr, out.render)
     image, scale = result.display  # Cook & Torrance exposure over all three spheres
     log.info("timings %s; exposure scale %.6g", result.timings, scale)

@@ -3,6 +3,8 @@ and front lit, (a) aluminium and (b) magnesium oxide with Blinn's measured param
 from the beta of c3. Grey images whose Y is Blinn's intensity i = p_a + d p_d + s p_s (no exposure:
 i = 1 is display white). One figure per reading of Phong's p_s; a table of the differences."""
 
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 from reflectance.colour.display import display_tag, encode
@@ -10,54 +12,52 @@ from reflectance.colour.display import display_tag, encode
 from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import render, render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
-                                       materials_Blinn1977, mirror_highlight_Blinn1977,
-                                       rim_camera_Blinn1977)
-from reflectance.scripting import script_log
+from reflectance.papers.figures import blinn77_fig7 as definition
+from reflectance.papers.scenes import (highlight_crossover_Blinn1977, materials_Blinn1977,
+                                       mirror_highlight_Blinn1977)
+from reflectance.scripting import params_dict, script_log
 from reflectance.io.tables import write_csv
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
           "b": "Figure 7b  Simulation of magnesium oxide surface"}
-MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
+MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}  # definition.MODELS, titled
 
 
 with script_log(snakemake) as log:
-    fig_cfg, stems, out = snakemake.params.fig, snakemake.params.stems, snakemake.output
-    w = snakemake.params.wavelengths
+    params = params_dict(snakemake.params)
+    fig_cfg, out = params["fig"], snakemake.output
+    folder = str(Path(out.csv).parent)  # the rule's outputs' folder
+    stems, lights = definition.stems(params, folder), fig_cfg["lights"]
+    closeup = definition.rim_light(fig_cfg)
     images, Y, rows, rims = {}, {}, [], {}
     traced = {}  # the renders share the object: one trace per camera and light (pipeline.render)
-    rim_camera = rim_camera_Blinn1977(fig_cfg, fig_cfg["lights"]["edge"])
-    for panel in ("a", "b"):
-        p = fig_cfg["panels"][panel]
+    for item in definition.scenes(params, folder=folder):  # the scenes the check validated
+        key = item.tags["key"]
+        scene = scene_from_dict(item.document, source=f"config.yaml figures.blinn_1977.fig7 {key}")
+        if item.written:
+            stem = stems[key]
+            result = render_to_files(scene, item.file, f"{stem}.exr", f"{stem}.png",
+                                     traced=traced)
+            images[key], Y[key] = result.display[0], result.XYZ[..., 1]
+            log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
+        else:  # the highlight close up (fig7.rim_closeup), for the inset
+            rims[key] = render(scene, traced=traced).XYZ[..., 1]
+            log.info("%s close up: max i = %.4f", key, rims[key].max())
+    for panel, p in fig_cfg["panels"].items():
         for reading in fig_cfg["phong_specular_readings"]:
             m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
-            for light in ("edge", "front"):
-                for model in MODELS:
-                    key = (f"{panel}_torrance_sparrow_{light}" if model == "torrance_sparrow"
-                           else f"{panel}_phong_{light}_{reading}")
-                    if key in images:
-                        continue  # the Torrance-Sparrow renders do not depend on the reading
-                    doc = blinn_scene_Blinn1977(fig_cfg, m[model], fig_cfg["lights"][light], w)
-                    scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
-                    result = render_to_files(scene, f"{stems[key]}.scene.yaml",
-                                             f"{stems[key]}.exr", f"{stems[key]}.png", traced=traced)
-                    images[key], Y[key] = result.display[0], result.XYZ[..., 1]
-                    log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
-                    if light == "edge":  # the highlight close up (fig7.rim_closeup), for the inset
-                        rims[key] = render(scene_from_dict(blinn_scene_Blinn1977(
-                            fig_cfg, m[model], fig_cfg["lights"]["edge"], w, rim_camera)),
-                                           traced=traced).XYZ[..., 1]
-                        log.info("%s close up: max i = %.4f", key, rims[key].max())
-                ph, ts = Y[f"{panel}_phong_{light}_{reading}"], Y[f"{panel}_torrance_sparrow_{light}"]
+            for light in lights:
+                ph = Y[definition.render_key(panel, "phong", light, reading)]
+                ts = Y[definition.render_key(panel, "torrance_sparrow", light, reading)]
                 diff, lit = np.abs(ph - ts), (ph > 0) | (ts > 0)
                 rows.append({"panel": panel, "label": p["label"], "phong_specular": reading,
-                             "light": light, **fig_cfg["lights"][light], "p_a": fig_cfg["p_a"],
+                             "light": light, **lights[light], "p_a": fig_cfg["p_a"],
                              "p_s": p["p_s"], "p_d": p["p_d"], "n": p["n"], "c3": p["c3"],
                              "beta_deg": m["beta_deg"], "c1": m["c1"], "phong_s": m["phong_s"],
                              "phong_max": ph.max(), "torrance_sparrow_max": ts.max(),
                              "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean(),
                              "mirror_highlight": float(mirror_highlight_Blinn1977(
-                                 p["p_s"], p["n"], fig_cfg["lights"][light]["angle_deg"]))})
+                                 p["p_s"], p["n"], lights[light]["angle_deg"]))})
     table = pd.DataFrame(rows)
     # Blinn: MgO "even more [specular] than the aluminum" edge lit: from which light angle on
     crossover = highlight_crossover_Blinn1977(fig_cfg["panels"]["a"], fig_cfg["panels"]["b"])
@@ -75,22 +75,23 @@ with script_log(snakemake) as log:
     # renders of a row side by side, pixel for pixel at DPI, the light-angle plot under them.
     T = TEXT_SIZE
     DPI = 230
-    h, wd = (n / DPI for n in images["a_torrance_sparrow_edge"].shape[:2])  # inches
+    h, wd = (n / DPI for n in next(iter(images.values())).shape[:2])  # inches
     gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
     W = 4 * wd + 2 * gap + block + 0.12
     top, heads, foot = 0.5, 0.7, 0.24  # suptitle; panel title and column names; difference line
     plot_h, plot_foot = 1.9, 0.5
-    H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
+    H = top + heads + len(lights) * (h + foot) + 0.3 + plot_h + plot_foot
     sweep = np.linspace(90.0, 178.0, 881)
-    lights = fig_cfg["lights"]
+    named = [f"{lights[name]['angle_deg']:g}\u00b0 ({name})" for name in lights]
+    named = " and ".join([", ".join(named[:-1]), named[-1]] if len(named) > 1 else named)
     for reading, png in zip(fig_cfg["phong_specular_readings"], out.figures):
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
             x0 = 0.06 + k * (2 * wd + gap + block)
-            for j, light in enumerate(("edge", "front")):
+            for j, light in enumerate(lights):
                 y0 = H - top - heads - j * (h + foot) - h  # bottom of the image
                 for i, model in enumerate(MODELS):
-                    key = (f"{panel}_{model}_{light}" + (f"_{reading}" if model == "phong" else ""))
+                    key = definition.render_key(panel, model, light, reading)
                     ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
                     ax.imshow(images[key], interpolation="nearest")
                     ax.set_xticks([]), ax.set_yticks([])
@@ -98,7 +99,7 @@ with script_log(snakemake) as log:
                         ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
                     ax.text(0.03, 0.95, f"{light} lit", transform=ax.transAxes, color="white",
                             fontsize=T["annotation"], va="top")
-                    if light == "edge":
+                    if light == closeup:
                         grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
                         rh, rw = rims[key].shape
                         iw = 0.9  # the close-up across 90 % of the image, its aspect kept
@@ -126,8 +127,8 @@ with script_log(snakemake) as log:
             p = fig_cfg["panels"][panel]
             ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep), color=colour,
                     label=f"{p['label']}\n(p_s = {p['p_s']:g}, n = {p['n']:g})")
-            edge = table[(table.panel == panel) & (table.light == "edge")].iloc[0]
-            ax.plot(lights["edge"]["angle_deg"], edge.torrance_sparrow_max, "o", mfc="none",
+            edge = table[(table.panel == panel) & (table.light == closeup)].iloc[0]
+            ax.plot(lights[closeup]["angle_deg"], edge.torrance_sparrow_max, "o", mfc="none",
                     color=colour, ms=6)
         ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
         ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
@@ -137,11 +138,10 @@ with script_log(snakemake) as log:
         ax.grid(True, which="major")
         ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
         ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nbrightest rendered i,\n"
-                f"edge lit (circles)", transform=ax.transAxes, va="bottom",
+                f"{closeup} lit (circles)", transform=ax.transAxes, va="bottom",
                 fontsize=T["annotation"], linespacing=1.3)
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 Phong's p_s {reading.replace('_', ' ')}; light "
-                     f"{lights['edge']['angle_deg']:g}\u00b0 (edge) and {lights['front']['angle_deg']:g}"
-                     f"\u00b0 (front)\nfrom the eye; p_a = {fig_cfg['p_a']:g}, i = 1 is white; "
+                     f"{named}\nfrom the eye; p_a = {fig_cfg['p_a']:g}, i = 1 is white; "
                      f"close-ups: white = i {rim_scale:.1f}",
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
         savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))

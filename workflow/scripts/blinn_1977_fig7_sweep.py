@@ -15,10 +15,10 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import RenderResult, display_image, shade_samples
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import (blinn_scene_Blinn1977, highlight_crossover_Blinn1977,
-                                       materials_Blinn1977, mirror_highlight_Blinn1977,
+from reflectance.papers.figures import blinn77_fig7_sweep as definition
+from reflectance.papers.scenes import (highlight_crossover_Blinn1977, mirror_highlight_Blinn1977,
                                        sweep_camera_Blinn1977)
-from reflectance.scripting import script_log
+from reflectance.scripting import params_dict, script_log
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
 from reflectance.io.tables import write_csv
@@ -26,18 +26,16 @@ from reflectance.io.tables import write_csv
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 
 with script_log(snakemake) as log:
-    cfg, fig7, out = snakemake.params.sweep, snakemake.params.fig7, snakemake.output
+    params = params_dict(snakemake.params)
+    cfg, fig7, out = params["sweep"], params["fig7"], snakemake.output
     panels = [fig7["panels"][key] for key in cfg["panels"]]
     cam = sweep_camera_Blinn1977(fig7, cfg)
     angles = np.linspace(*cfg["angles_deg"], cfg["n_frames"])
-    lights = [{"angle_deg": a, "azimuth_deg": cfg["azimuth_deg"]} for a in angles]
     scenes = {}
-    for key, p in zip(cfg["panels"], panels):
-        m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], cfg["phong_specular"])
-        for model in MODELS:
-            scenes[key, model] = scene_from_dict(
-                blinn_scene_Blinn1977(fig7, m[model], lights, snakemake.params.wavelengths, cam),
-                source=f"figures.blinn_1977.fig7_sweep (panel {key}, {model})")
+    for item in definition.scenes(params):  # the scenes the config check validated
+        scenes[item.tags["panel"], item.tags["model"]] = scene_from_dict(
+            item.document, source=f"{item.source} (panel {item.tags['panel']}, "
+                                  f"{item.tags['model']})")
     first = next(iter(scenes.values()))
     samples = visibility(first.mesh, first.camera)  # the same object and camera in every frame
     shadowed = shadow_masks(samples, first.mesh, [light.source for light in first.lights])

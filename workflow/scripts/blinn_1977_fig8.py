@@ -13,27 +13,22 @@ from reflectance.optics.microfacet import c3_texture_Blinn1977
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import blinn_scene_Blinn1977
-from reflectance.scripting import script_log
+from reflectance.papers.figures import blinn77_fig8 as definition
+from reflectance.scripting import params_dict, script_log
 from reflectance.geometry.texture import texture
 from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
-    cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output
+    params = params_dict(snakemake.params)
+    cfg, fig7, out = params["fig"], params["fig7"], snakemake.output
     u, v = np.meshgrid(np.linspace(0, 1, 721), np.linspace(0, 1, 201))
     images, maps, rows = {}, {}, []
     traced = {}  # both patterns on one object, camera and light: traced once (pipeline.render)
-    for part in ("a", "b"):
+    for item in definition.scenes(params):  # the scenes the config check validated
+        part = item.tags["pattern"]
         pattern = cfg["patterns"][part]
-        material = {"index": {"n": float(snakemake.params.n), "k": 0.0},
-                    "model": "TorranceSparrow_Blinn1977",
-                    "distribution": "TrowbridgeReitz1975", "convention": "paper", "fresnel": "exact",
-                    "s": cfg["p_s"], "d": cfg["p_d"], "albedo": 1.0,
-                    "roughness_texture": {"method": pattern["method"],
-                                          "parameters": dict(pattern["parameters"]),
-                                          "min": cfg["c_min"], "max": 1.0}}
-        doc = blinn_scene_Blinn1977(fig7, material, cfg["light"], snakemake.params.wavelengths)
-        scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
+        scene = scene_from_dict(item.document,
+                                source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
         result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
                                  out[f"{part}_png"], traced=traced)
         images[part] = result.display[0]

@@ -17,13 +17,13 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material
-from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
+from reflectance.papers.figures import ct82_fig6 as definition
 from reflectance.render.composite import appearance, covered_rows
 from reflectance.render.pipeline import display_image, render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.render.shading import ambient_intensity
 from reflectance.io.tables import write_csv
-from reflectance.scripting import figure_variants, script_log
+from reflectance.scripting import params_dict, script_log
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
@@ -31,37 +31,33 @@ READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
             "weighted": "ambient = {f} of the lights as they enter the model: I_ia = {f} \u03a3 I_i d\u03c9_i"}
 
 
-OUTPUTS = ["png", "csv"] + [f"{part}_{kind}" for part in "ab" for kind in ("exr", "png", "scene")]
-
-
 def departure_text(change):
     return ", ".join(f"{k} = {v:g}" for k, v in change.items())
 
 
-def variant(log, out, reference, published, traced):
-    """One variant of the figure: its panels, table and figure written to ``out``."""
+def title_of(item, fig_cfg):
+    """The panel's title: a departed panel's two renders say which is which."""
+    part, departure = item.tags["part"], item.tags["departure"]
+    if item.written and departure is None:
+        return TITLES[part]
+    if not item.written:
+        return f"{TITLES[part]}\nas printed"
+    printed = {k: fig_cfg["panels"][part][k] for k in departure}
+    return (f"{TITLES[part]}\n{departure_text(departure)} "
+            f"(departure;\nprinted: {departure_text(printed)})")
+
+
+def variant(log, out, reference, published, traced, items):
+    """One variant of the figure (its scenes ``items``): panels, table and figure to ``out``."""
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
     exposure = published["exposure"] if published else None
-    departures = published["departures"] if published else {}
-    # (panel, label, material, written?): a departed panel is shown beside its printed version
-    renders = []
-    for part in ("a", "b"):
-        panel = fig_cfg["panels"][part]
-        if part in departures:
-            renders.append((part, f"{TITLES[part]}\nas printed", panel, False))
-            renders.append((part, f"{TITLES[part]}\n{departure_text(departures[part])} "
-                                  f"(departure;\nprinted: {departure_text({k: panel[k] for k in departures[part]})})",
-                            {**panel, **departures[part]}, True))
-        else:
-            renders.append((part, TITLES[part], panel, True))
+    renders = [(item.tags["part"], title_of(item, fig_cfg), item.tags["panel"], item.written,
+                item) for item in items]
     rows, images, covered = [], [], []
-    for part, title, panel, written in renders:
-        document = vase_scene_CookTorrance1982(fig_cfg, panel_material(panel), reference,
-                                               snakemake.params.wavelengths, colour_cfg,
-                                               spectra_dir, exposure=exposure)
-        scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
-                                                 f"panel {part}")
+    for part, title, panel, written, item in renders:
+        scene = scene_from_dict(item.document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
+                                                      f"panel {part}")
         result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
                                   out[f"{part}_png"], components=True, traced=traced) if written
                   else render(scene, components=True, traced=traced))
@@ -121,9 +117,12 @@ def variant(log, out, reference, published, traced):
 with script_log(snakemake) as log:
     traced = {}  # the variants' panels share vase, camera and lights: traced once (pipeline.render)
     # the default figure (if params.published; unprefixed outputs), then each reading
-    variants = figure_variants(snakemake.params)
+    params = params_dict(snakemake.params)
+    variants = definition.variants(params)
+    scenes = definition.scenes(params, str(Path(snakemake.input.spectra[0]).parent))
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
-        variant(log, {key: getattr(snakemake.output, prefix + key) for key in OUTPUTS},
-                reference, published, traced)
+        variant(log, {key: getattr(snakemake.output, prefix + key) for key in definition.FILES},
+                reference, published, traced,
+                [item for item in scenes if item.tags["prefix"] == prefix])
     log.info("%d distinct traces for %d variants", len(traced), len(variants))

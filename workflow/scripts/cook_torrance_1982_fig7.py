@@ -19,12 +19,11 @@ from reflectance.colour.display import display_tag, XYZ_to_display
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
-from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982, fig7_vases_CookTorrance1982,
-                                       vase_scene_CookTorrance1982)
+from reflectance.papers.figures import ct82_fig7 as definition
 from reflectance.render.composite import appearance, common_exposure, covered_rows, image_grid
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
-from reflectance.scripting import figure_variants, script_log
+from reflectance.scripting import params_dict, script_log
 
 GROUPS = {"metal": "six metals: Fig. 6b's s, d, D; F from measured n, k",
           "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "variant, not in the paper"}
@@ -42,20 +41,18 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
-def variant(log, out, reference, published, traced):
-    """One variant of the figure: its vases, table and grid written to ``out``."""
+def variant(log, out, reference, published, traced, items):
+    """One variant of the figure (its vases' scenes ``items``): table and grid written to
+    ``out``."""
     p = snakemake.params
     colour_cfg = p.colour
     spectra_dir = str(Path(snakemake.input.sources).parent)
     sources = list_materials(spectra_dir).set_index("material")
     rows, images, shown, groups, labels = [], [], [], [], []
-    for k, (vase, group, material) in enumerate(fig7_vases_CookTorrance1982(p.fig, p.fig6, p.table1)):
-        document = vase_scene_CookTorrance1982(p.fig6, material, reference, p.wavelengths,
-                                               colour_cfg, spectra_dir, p.fig["vase_image"],
-                                               exposure=fig7_exposure_CookTorrance1982(
-                                                   p.fig, vase, group) if published else None)
-        scene = scene_from_dict(document,
-                                source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
+    for item in items:
+        k, vase, group, material = (item.tags[key] for key in ("index", "vase", "group",
+                                                               "material"))
+        scene = scene_from_dict(item.document, source=f"config.yaml {item.source} {vase}")
         result = render_to_files(scene, out["scenes"][k], out["exrs"][k],
                                  out["pngs"][k] if published else None, traced=traced)
         rgb, scale = result.display  # the vase alone, as its scene file shows it
@@ -135,11 +132,14 @@ def variant(log, out, reference, published, traced):
 with script_log(snakemake) as log:
     traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
     # the default figure (if params.published; unprefixed outputs), then each reading
-    variants = figure_variants(snakemake.params)
+    params = params_dict(snakemake.params)
+    variants = definition.variants(params)
+    scenes = definition.scenes(params, str(Path(snakemake.input.sources).parent))
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}
         if published:  # the default figure alone writes each vase's PNG
             out["pngs"] = getattr(snakemake.output, "pngs")
-        variant(log, out, reference, published, traced)
+        variant(log, out, reference, published, traced,
+                [item for item in scenes if item.tags["prefix"] == prefix])
     log.info("%d distinct traces for %d variants", len(traced), len(variants))

@@ -14,8 +14,8 @@ from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import render_to_files, trace_once
 from reflectance.render.scene import scene_from_dict
-from reflectance.papers.scenes import watch_scene_CookTorrance1982
-from reflectance.scripting import script_log
+from reflectance.papers.figures import ct82_fig8 as definition
+from reflectance.scripting import params_dict, script_log
 from reflectance.optics.spectra import load_material
 from reflectance.geometry.watch import WATCH_PARTS
 from reflectance.io.tables import write_csv
@@ -25,9 +25,8 @@ with script_log(snakemake) as log:
     p, out = snakemake.params, snakemake.output
     colour_cfg = p.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
-    document = watch_scene_CookTorrance1982(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg,
-                                            spectra_dir)
-    scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
+    watch, = definition.scenes(params_dict(p), spectra_dir)  # the scene the check validated
+    scene = scene_from_dict(watch.document, source=f"config.yaml {watch.source}")
     traced = {}  # the render's camera samples, reused below (pipeline.render)
     result = render_to_files(scene, out.scene, out.exr, out.render_png, traced=traced)
     rgb, scale = result.display
@@ -45,7 +44,7 @@ with script_log(snakemake) as log:
     W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
     rows = []
     for part, number in WATCH_PARTS.items():
-        spec = document["objects"][0]["parts"][part]
+        spec = watch.document["objects"][0]["parts"][part]
         F0 = load_material(spec["name"], scene.wavelengths, spectra_dir).F0 @ W \
             if "name" in spec else np.full(3, np.nan)
         emission = spec.get("emission", {})

@@ -10,11 +10,11 @@ its outputs (so that ``reflectance render`` re-renders it alone). The shared par
   (the default scene of ``reflectance bench``);
 - :func:`light_direction`, :func:`materials_Blinn1977` and :func:`blinn_scene_Blinn1977`:
   Blinn 1977 Figs. 7 and 8;
-- :func:`figure_scenes`: every scene of every rendered figure (C&T Figs. 6-8, Blinn Figs. 7, 8
-  and the sweep, the article's spheres), which :mod:`reflectance.config` builds and validates
-  when the workflow is parsed, with the per-figure pieces :func:`fig7_vases_CookTorrance1982`,
-  :func:`watch_scene_CookTorrance1982`, :func:`texture_material_Blinn1977`,
-  :func:`sweep_camera_Blinn1977` and :func:`spheres_scene_article`.
+- the per-figure pieces :func:`fig7_vases_CookTorrance1982`, :func:`watch_scene_CookTorrance1982`,
+  :func:`texture_material_Blinn1977`, :func:`sweep_camera_Blinn1977` and
+  :func:`spheres_scene_article`, from which the figure modules of :mod:`reflectance.papers.figures`
+  build every scene of every rendered figure (what :mod:`reflectance.config` validates when the
+  workflow is parsed, and what the jobs render).
 
 Blinn's models are scalar: ``i = p_a + d p_d + s p_s`` with ``d = N.L``, Phong's ``s = (N.H)^c1``
 or the Torrance-Sparrow ``s = D3 G F / (N.E)``, F the dielectric Fresnel reflectance of one index
@@ -69,7 +69,6 @@ __all__ = [
     "texture_material_Blinn1977",
     "sweep_camera_Blinn1977",
     "spheres_scene_article",
-    "figure_scenes",
 ]
 
 CONFIG_PATH = Path(__file__).resolve().parents[3] / "config.yaml"
@@ -389,13 +388,13 @@ def rim_camera_Blinn1977(fig7, light):
     ring = unit_vector(np.array([H[0], H[1], 0.0]), "H projected on the ring's plane")
     point = (np.asarray(obj.get("center", (0.0, 0.0, 0.0)), dtype=np.float64)
              + obj["major_radius"] * ring + obj["minor_radius"] * H)
-    cam.update(look_at=[float(x) for x in point], **fig7["rim_closeup"])
+    cam.update(look_at=[float(x) for x in point],
+               **{k: v for k, v in fig7["rim_closeup"].items() if k != "light"})
     return cam
 
 
 # --------------------------------------------------------------------------------------------
-# Every rendered figure's scenes, straight from config.yaml (what the figure scripts render;
-# reflectance.config builds and validates them all when the workflow is parsed)
+# The pieces of the rendered figures' scenes (reflectance.papers.figures assembles them)
 # --------------------------------------------------------------------------------------------
 
 def table1_material(row, material=None):
@@ -533,75 +532,3 @@ def spheres_scene_article(spheres, wavelengths, colour, spectra_dir):
                           spectra_dir, observer=colour["observer"],
                           ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
                           display=display_from_colour(colour, illuminant=False))
-
-
-def figure_scenes(config, spectra_dir="spectra"):
-    """Every scene the rendered figures of ``config`` render, without rendering anything.
-
-    Yields ``(key, label, document)``: the config key the scene comes from, a label of the
-    render, and the scene mapping (workflow/schemas/scene.schema.yaml). The Blinn 1977 light
-    sweep is one scene per model holding every frame's light.
-    """
-    figures, w, colour = config["figures"], config["wavelengths"], config["colour"]
-    spectra_dir = str(spectra_dir)
-    ct = figures["cook_torrance_1982"]
-    fig6, table1 = ct["fig6"], ct["table1"]["rows"]
-    for reading, reference in fig6["ambient_readings"].items():
-        for panel, spec in fig6["panels"].items():
-            yield (f"figures.cook_torrance_1982.fig6.panels.{panel}", f"fig6{panel}_{reading}",
-                   vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
-                                               spectra_dir))
-        for vase, _, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
-            yield ("figures.cook_torrance_1982.fig7", f"fig7_{reading}/{vase}",
-                   vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
-                                               ct["fig7"]["vase_image"]))
-    # the default figures (fig6.published): the published reading, the labelled departures, the
-    # metered exposure; Fig. 7's vases as rendered alone
-    published = fig6.get("published")
-    if published:
-        reference, exposure = published["ambient_reference"], published["exposure"]
-        for panel, spec in fig6["panels"].items():
-            spec = {**spec, **published.get("departures", {}).get(panel, {})}
-            yield (f"figures.cook_torrance_1982.fig6.published (panel {panel})", f"fig6{panel}",
-                   vase_scene_CookTorrance1982(fig6, panel_material(spec), reference, w, colour,
-                                               spectra_dir, exposure=exposure))
-        for vase, group, material in fig7_vases_CookTorrance1982(ct["fig7"], fig6, table1):
-            yield ("figures.cook_torrance_1982.fig7", f"fig7/{vase}",
-                   vase_scene_CookTorrance1982(fig6, material, reference, w, colour, spectra_dir,
-                                               ct["fig7"]["vase_image"],
-                                               exposure=fig7_exposure_CookTorrance1982(
-                                                   ct["fig7"], vase, group)))
-    yield ("figures.cook_torrance_1982.fig8", "fig8",
-           watch_scene_CookTorrance1982(ct["fig8"], fig6, table1, w, colour, spectra_dir))
-
-    b77 = figures["blinn_1977"]
-    fig7, sweep, fig8 = b77["fig7"], b77["fig7_sweep"], b77["fig8"]
-    for panel, p in fig7["panels"].items():
-        for reading in fig7["phong_specular_readings"]:
-            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
-            for light in fig7["lights"]:
-                for model in ("phong", "torrance_sparrow"):
-                    yield (f"figures.blinn_1977.fig7.panels.{panel}",
-                           f"fig7{panel}_{model}_{light}_{reading}",
-                           blinn_scene_Blinn1977(fig7, m[model], fig7["lights"][light], w))
-            for model in ("phong", "torrance_sparrow"):  # the edge-lit highlight, close up
-                yield ("figures.blinn_1977.fig7.rim_closeup", f"fig7{panel}_{model}_rim_{reading}",
-                       blinn_scene_Blinn1977(fig7, m[model], fig7["lights"]["edge"], w,
-                                             rim_camera_Blinn1977(fig7, fig7["lights"]["edge"])))
-    angles = np.linspace(*sweep["angles_deg"], sweep["n_frames"])
-    lights = [{"angle_deg": float(a), "azimuth_deg": sweep["azimuth_deg"]} for a in angles]
-    for key in sweep["panels"]:
-        p = fig7["panels"][key]
-        m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], sweep["phong_specular"])
-        for model in ("phong", "torrance_sparrow"):
-            yield ("figures.blinn_1977.fig7_sweep", f"fig7_sweep (panel {key}, {model})",
-                   blinn_scene_Blinn1977(fig7, m[model], lights, w,
-                                         sweep_camera_Blinn1977(fig7, sweep)))
-    n = fig7["panels"][fig8["panel"]]["n"]
-    for part, pattern in fig8["patterns"].items():
-        yield (f"figures.blinn_1977.fig8.patterns.{part}", f"fig8{part}",
-               blinn_scene_Blinn1977(fig7, texture_material_Blinn1977(fig8, pattern, n),
-                                     fig8["light"], w))
-
-    yield ("figures.article.spheres", "spheres",
-           spheres_scene_article(figures["article"]["spheres"], w, colour, spectra_dir))

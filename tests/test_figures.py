@@ -1,0 +1,201 @@
+"""One definition per rendered figure (reflectance.papers.figures): what the config check
+validates is what the job writes; a one-key edit of config.yaml reruns exactly the figures whose
+definitions declare that key; adding a light to Blinn's Fig. 7 is an edit of config.yaml alone."""
+
+from __future__ import annotations
+
+import copy
+import shutil
+from pathlib import Path
+
+import pytest
+import yaml
+
+from reflectance.papers.figures import (FIGURES, READERS, config_value, figure, figure_scenes,
+                                        params_of, rule_keys, select)
+from test_workflow import SNAKEMAKE, _planned_jobs
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIG = yaml.safe_load((ROOT / "config.yaml").read_text())
+
+
+def _scene_files(outputs):
+    return sorted(p for value in outputs.values()
+                  for p in ([value] if isinstance(value, str) else value)
+                  if p.endswith(".scene.yaml"))
+
+
+@pytest.mark.parametrize("name", FIGURES)
+def test_each_scene_file_output_is_one_scene(name):
+    """Every .scene.yaml among a figure's outputs is written by exactly one of its scenes."""
+    module = figure(name)
+    params = params_of(module, CONFIG)
+    written = [item.file for item in module.scenes(params, "spectra") if item.written]
+    assert sorted(written) == _scene_files(module.outputs(params))
+
+
+def test_the_config_check_sees_every_figures_scenes():
+    labels = [label for _, label, _ in figure_scenes(CONFIG)]
+    assert len(labels) == len(set(labels))  # each render named once
+    assert sum(len(figure(name).scenes(params_of(figure(name), CONFIG), "spectra"))
+               for name in FIGURES) == len(labels)
+    assert {"fig6a", "fig6a_as_printed", "fig7/Cu", "fig8", "fig8a", "spheres",
+            "fig7a_torrance_sparrow_edge"} <= set(labels)
+
+
+def test_a_figure_is_handed_only_its_declared_keys():
+    """C&T Fig. 7's params hold the parts of Fig. 6 its vases are rendered with, not Fig. 6a's
+    panel: a key a figure's code reads without declaring it is a KeyError at the config check."""
+    params = params_of(figure("ct82_fig7"), CONFIG)
+    assert set(params["fig6"]["panels"]) == {"b"}
+    assert "published" not in params["fig6"]
+    broken = {**params, "fig6": {k: v for k, v in params["fig6"].items() if k != "camera"}}
+    with pytest.raises(KeyError, match="camera"):
+        figure("ct82_fig7").scenes(broken, "spectra")
+
+
+def test_select_names_a_missing_key():
+    with pytest.raises(KeyError, match="figures.cook_torrance_1982.fig6.nothing"):
+        select({"x": ("figures.cook_torrance_1982.fig6.nothing",)}, CONFIG)
+
+
+def test_scenes_the_check_validates_are_the_scenes_the_jobs_write(built, monkeypatch):
+    """In the session's build, every .scene.yaml a rendered figure wrote is the validated form of
+    the scene its definition gives (what reflectance.config checked at parse time)."""
+    from reflectance.render.scene import scene_from_dict
+
+    monkeypatch.chdir(built)  # the scenes name spectra/ relative to the project
+    config = yaml.safe_load((built / "config.yaml").read_text())
+    compared = 0
+    for name in FIGURES:
+        module = figure(name)
+        for item in module.scenes(params_of(module, config), "spectra"):
+            if not item.written:
+                continue
+            expected = scene_from_dict(copy.deepcopy(item.document), source=item.name).document
+            assert yaml.safe_load((built / item.file).read_text()) == expected, item.file
+            compared += 1
+    assert compared >= 40  # C&T Fig. 7 alone writes 39 (13 vases x 3 variants)
+
+
+# --- exact rebuilds -------------------------------------------------------------------------------
+
+#: the rules that read a figure's files (not its keys): they run again whenever it does
+READ_BY = {"ct82_fig6": {"audit_gamut_mapping", "readme_strip"},
+           "ct82_fig7": {"audit_gamut_mapping", "readme_strip"},
+           "ct82_fig8": {"audit_gamut_mapping"}, "blinn77_fig7": {"audit_gamut_mapping"},
+           "blinn77_fig8": {"audit_gamut_mapping"}, "article_spheres": {"audit_gamut_mapping"},
+           "blinn77_fig7_sweep": set(), "audit_rgb_rendering": set()}
+#: provenance hashes every output: it runs again after any job
+AGGREGATING = {"provenance"}
+
+#: one-key edits of config.yaml: (dotted key, new value)
+EDITS = [
+    ("figures.cook_torrance_1982.fig6.panels.a.m", 0.25),
+    ("figures.cook_torrance_1982.fig6.camera.fov_deg", 26),
+    ("figures.cook_torrance_1982.fig6.published.exposure.highlight_knee", 0.7),
+    ("figures.cook_torrance_1982.fig7.vase_exposure.Obsidian", 2.0),
+    ("figures.cook_torrance_1982.fig8.light.intensity", 0.9),
+    ("figures.blinn_1977.fig7.panels.b.c3", 0.4),
+    ("figures.blinn_1977.fig7.lights.front.angle_deg", 20),
+    ("figures.blinn_1977.fig7.rim_closeup.fov_deg", 0.3),
+    ("figures.blinn_1977.fig7_sweep.n_frames", 29),
+    ("figures.blinn_1977.fig8.p_s", 0.8),
+    ("figures.article.spheres.m", 0.2),
+]
+
+
+def _overlaps(key, declared):
+    return any(key == d or key.startswith(d + ".") or d.startswith(key + ".") for d in declared)
+
+
+def expected_plan(key, config):
+    """The jobs a dry run must plan after editing ``key``: every rule whose definition declares
+    the key (or a key above or below it), what reads their files, and the aggregating rules."""
+    readers = {rule for rule in (*FIGURES, *READERS) if _overlaps(key, rule_keys(rule, config))}
+    return readers | {r for rule in readers for r in READ_BY[rule]} | AGGREGATING
+
+
+def _edit(config, key, value):
+    parts = key.split(".")
+    node = config_value(config, ".".join(parts[:-1]))
+    assert parts[-1] in node and node[parts[-1]] != value, key
+    node[parts[-1]] = value
+
+
+def test_every_edit_is_read_by_some_figure():
+    for key, _ in EDITS:
+        assert expected_plan(key, CONFIG) - AGGREGATING, key
+
+
+#: adding a light to Blinn's Fig. 7, and smaller renders so that the rebuild is quick
+NEW_LIGHT = {"side": {"angle_deg": 95, "azimuth_deg": 0}}
+
+
+def after_build(runs, built, tmp_path_factory, items):
+    """tests/conftest.py's ``early`` calls this when the session's build is done: a dry run in
+    a copy of the build per edit of EDITS, and a run of Blinn Fig. 7 with a third light."""
+    names = {item.originalname for item in items}
+    starts = []
+    if "test_a_one_key_edit_plans_exactly_what_the_definitions_say" in names:
+        selected = {item.callspec.params["edit"] for item in items
+                    if item.originalname == "test_a_one_key_edit_plans_exactly_what_the_"
+                                            "definitions_say"}
+        for i in sorted(selected):
+            cwd = _copy(built, tmp_path_factory)
+            config = yaml.safe_load((cwd / "config.yaml").read_text())
+            _edit(config, *EDITS[i])
+            (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+            starts.append((5, ("figure edit", i), _dry_run, (runs, cwd)))
+    if "test_a_light_added_in_config_is_rendered" in names:
+        cwd = _copy(built, tmp_path_factory)
+        config = yaml.safe_load((cwd / "config.yaml").read_text())
+        fig7 = config["figures"]["blinn_1977"]["fig7"]
+        fig7["lights"].update(NEW_LIGHT)
+        fig7["camera"].update(width=96, height=64, supersample=1)
+        fig7["rim_closeup"].update(width=64, height=24, supersample=1)
+        (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+        starts.append((30, "new light", _new_light, (runs, cwd)))
+    return starts
+
+
+def _copy(built, tmp_path_factory):
+    cwd = tmp_path_factory.mktemp("figure-edit") / "copy"
+    shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+    return cwd
+
+
+def _dry_run(runs, cwd):
+    return runs.run(SNAKEMAKE + ["-n", "--cores", "2"], cwd=cwd)
+
+
+def _new_light(runs, cwd):
+    target = "results/blinn_1977/fig7.csv"
+    return cwd, runs.run(SNAKEMAKE + ["--cores", "2", target], cwd=cwd)
+
+
+@pytest.mark.parametrize("edit", range(len(EDITS)), ids=[key for key, _ in EDITS])
+def test_a_one_key_edit_plans_exactly_what_the_definitions_say(after_build, edit):
+    """README: after editing one key, Snakemake reruns exactly the outputs that depend on it."""
+    proc = after_build(("figure edit", edit))
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text
+    assert set(_planned_jobs(text)) == expected_plan(EDITS[edit][0], CONFIG) | {"all"}, text
+
+
+def test_a_light_added_in_config_is_rendered(after_build):
+    """Blinn Fig. 7 with a third light, an edit of config.yaml alone: the config check passes,
+    the job renders one more row (its files, its table rows) and nothing else is needed."""
+    cwd, proc = after_build("new light")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    import pandas as pd
+
+    table = pd.read_csv(cwd / "results/blinn_1977/fig7.csv")
+    assert set(table.light) == {"edge", "front", "side"}
+    assert len(table[table.light == "side"]) == 4  # 2 panels x 2 readings of Phong's p_s
+    for stem in ("fig7a_torrance_sparrow_side", "fig7b_phong_side_matched"):
+        for ext in ("exr", "png", "scene.yaml"):
+            assert (cwd / "results/blinn_1977" / f"{stem}.{ext}").is_file(), stem
+    side = yaml.safe_load((cwd / "results/blinn_1977/fig7a_torrance_sparrow_side.scene.yaml")
+                          .read_text())
+    assert side["camera"]["width"] == 96

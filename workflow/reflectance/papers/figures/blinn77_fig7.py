@@ -1,0 +1,89 @@
+"""Blinn 1977, Fig. 7: an object with Phong's and the Torrance-Sparrow highlight under each light.
+
+Panels (a) aluminium and (b) magnesium oxide with Blinn's measured parameters; one figure per
+reading of Phong's p_s; one row of renders per light of ``fig7.lights`` (Blinn: edge lit and
+front lit), and a close-up of the highlight of ``fig7.rim_closeup.light``'s renders.
+"""
+
+from __future__ import annotations
+
+from reflectance.papers.figures import FigureScene
+from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977, rim_camera_Blinn1977
+
+RULE = "blinn77_fig7"
+OUT = "results/blinn_1977"
+PARAMS = {"fig": "figures.blinn_1977.fig7", "wavelengths": "wavelengths"}
+MODELS = ("phong", "torrance_sparrow")
+
+
+def spectra(params):
+    """Blinn's materials are indices and constants: no spectrum file."""
+    return []
+
+
+def render_key(panel, model, light, reading):
+    """The key of one written render; Torrance-Sparrow's do not depend on Phong's reading."""
+    if model == "torrance_sparrow":
+        return f"{panel}_torrance_sparrow_{light}"
+    return f"{panel}_phong_{light}_{reading}"
+
+
+def stems(params, folder=OUT):
+    """{render key: output stem} of every written render (in ``folder``: the job's, the rule's
+    outputs' folder)."""
+    fig = params["fig"]
+    return {key: f"{folder}/fig7{key}" for key in dict.fromkeys(
+        render_key(panel, model, light, reading)
+        for panel in fig["panels"] for light in fig["lights"]
+        for model in reversed(MODELS) for reading in fig["phong_specular_readings"])}
+
+
+def outputs(params):
+    fig = params["fig"]
+    return {"figures": [f"{OUT}/fig7_{r}.png" for r in fig["phong_specular_readings"]],
+            "csv": f"{OUT}/fig7.csv",
+            "renders": [f"{stem}.{ext}" for stem in stems(params).values()
+                        for ext in ("exr", "png", "scene.yaml")]}
+
+
+def rim_light(fig):
+    """The name of the light whose highlight the close-up shows (``rim_closeup.light``)."""
+    name = fig["rim_closeup"].get("light", "edge")
+    if name not in fig["lights"]:
+        raise ValueError(f"config.yaml figures.blinn_1977.fig7.rim_closeup.light: {name!r} is "
+                         f"not a light; known: {', '.join(fig['lights'])}")
+    return name
+
+
+def scenes(params, spectra_dir=None, folder=OUT):
+    """Every render: per panel, reading, light and model (written once per key, in ``folder``),
+    and the close-up of each model's highlight under the close-up's light (rendered, not
+    written)."""
+    fig, w = params["fig"], params["wavelengths"]
+    closeup = rim_light(fig)
+    camera = rim_camera_Blinn1977(fig, fig["lights"][closeup])
+    files = {key: f"{stem}.scene.yaml" for key, stem in stems(params, folder).items()}
+    out, seen = [], set()
+    for panel, p in fig["panels"].items():
+        for reading in fig["phong_specular_readings"]:
+            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
+            for light in fig["lights"]:
+                for model in MODELS:
+                    key = render_key(panel, model, light, reading)
+                    tags = {"key": key, "panel": panel, "reading": reading, "light": light,
+                            "model": model}
+                    if key not in seen:
+                        seen.add(key)
+                        out.append(FigureScene(f"fig7{key}", f"figures.blinn_1977.fig7.panels.{panel}",
+                                               blinn_scene_Blinn1977(fig, m[model],
+                                                                     fig["lights"][light], w),
+                                               files[key], tags))
+                    if light == closeup and f"fig7{key} close-up" not in seen:
+                        seen.add(f"fig7{key} close-up")
+                        out.append(FigureScene(f"fig7{key} close-up",
+                                               "figures.blinn_1977.fig7.rim_closeup",
+                                               blinn_scene_Blinn1977(fig, m[model],
+                                                                     fig["lights"][light], w,
+                                                                     camera),
+                                               None, tags))
+    return out
