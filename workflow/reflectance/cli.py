@@ -466,10 +466,10 @@ def _run_brdf(args):
 def _add_render(sub):
     p = sub.add_parser(
         "render", help=COMMAND_HELP["render"],
-        description="Render SCENE (YAML, keys in workflow/schemas/scene.schema.yaml) spectrally "
-                    "into linear CIE XYZ (OpenEXR, scene and package versions in the header), "
-                    "a display PNG (Cook & Torrance exposure, gamut clipping; tagged with its "
-                    "colour space) and a display-referred linear RGB OpenEXR, any of them (at "
+        description="Render SCENE (YAML, keys in the package's reflectance/data/scene.schema.yaml) "
+                    "spectrally into linear CIE XYZ (OpenEXR, scene and package versions in the "
+                    "header), a display PNG (Cook & Torrance exposure, gamut clipping; tagged with "
+                    "its colour space) and a display-referred linear RGB OpenEXR, any of them (at "
                     "least one). A bad scene is reported, by file and key, before anything is "
                     "rendered or written. Progress goes to standard error (a bar on a terminal, "
                     "one line per phase otherwise).")

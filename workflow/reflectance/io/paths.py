@@ -1,15 +1,32 @@
 """Paths taken from data: a file named in config.yaml stays inside the project; a material is a
-name, not a path."""
+name, not a path. And where the package's own data (``reflectance/data``) is."""
 
 from __future__ import annotations
 
 import re
 from pathlib import Path
 
-__all__ = ["project_file", "check_name"]
+__all__ = ["package_data", "project_file", "check_name"]
 
 #: a name: no path separator ('/' or '\\'), no control character, not starting with '.'
 _NAME = re.compile(r"[^/\\\x00-\x1f.][^/\\\x00-\x1f]*")
+
+
+def package_data(*parts):
+    """The file or folder ``reflectance/data/<parts>`` of the installed package.
+
+    Found with :mod:`importlib.resources`, so that it is the package's own copy wherever the
+    package was installed (package data in a wheel; in a source checkout ``data/config.yaml``
+    and ``data/spectra`` are links to the project's).
+
+    Examples
+    --------
+    >>> package_data("scene.schema.yaml").name
+    'scene.schema.yaml'
+    """
+    from importlib.resources import files
+
+    return files("reflectance").joinpath("data", *parts)
 
 
 def project_file(value, key, root):

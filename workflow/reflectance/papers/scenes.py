@@ -46,6 +46,7 @@ import yaml
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.geometry.vectors import unit_vector
+from reflectance.io.paths import package_data
 
 __all__ = [
     "CONFIG_PATH",
@@ -72,8 +73,10 @@ __all__ = [
     "figure_scenes",
 ]
 
-CONFIG_PATH = Path(__file__).resolve().parents[3] / "config.yaml"
-"""The project's config.yaml."""
+CONFIG_PATH = package_data("config.yaml")
+"""The project's config.yaml as the package ships it (package data; in a source checkout a link to
+the project's own), so that :func:`fig6_scene_CookTorrance1982` (``reflectance bench``'s scene)
+works from an installed wheel; the spectra beside it are the bundled ones."""
 
 PHONG_SPECULAR_READINGS = {
     "as_printed": "Phong's s p_s with Blinn's p_s: the highlight of a white mirror (F = 1)",
@@ -98,7 +101,7 @@ def display_from_colour(colour, illuminant=True):
 
 def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, observer=None,
                    spectral=None, ambient=None, display=None):
-    """A scene mapping (workflow/schemas/scene.schema.yaml); keys left None take the defaults.
+    """A scene mapping (reflectance/data/scene.schema.yaml); keys left None take the defaults.
 
     Parameters
     ----------
@@ -539,7 +542,7 @@ def figure_scenes(config, spectra_dir="spectra"):
     """Every scene the rendered figures of ``config`` render, without rendering anything.
 
     Yields ``(key, label, document)``: the config key the scene comes from, a label of the
-    render, and the scene mapping (workflow/schemas/scene.schema.yaml). The Blinn 1977 light
+    render, and the scene mapping (reflectance/data/scene.schema.yaml). The Blinn 1977 light
     sweep is one scene per model holding every frame's light.
     """
     figures, w, colour = config["figures"], config["wavelengths"], config["colour"]

@@ -1,4 +1,5 @@
-"""Scene files: read, validate against ``workflow/schemas/scene.schema.yaml``, resolve.
+"""Scene files: read, validate against the scene schema (``reflectance/data/scene.schema.yaml``,
+package data), resolve.
 
 A scene (YAML) names a camera, objects (a geometry and a material each), lights, the ambient
 term and the display; the schema documents every key and its default. :func:`load_scene` checks
@@ -33,6 +34,7 @@ from reflectance.render.adaptive import Refinement
 from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
+from reflectance.io.paths import package_data
 
 __all__ = [
     "SceneError",
@@ -49,8 +51,8 @@ __all__ = [
     "constant_index_material",
 ]
 
-SCENE_SCHEMA_PATH = Path(__file__).resolve().parents[2] / "schemas" / "scene.schema.yaml"
-"""The JSON schema of scene files."""
+SCENE_SCHEMA_PATH = package_data("scene.schema.yaml")
+"""The JSON schema of scene files (package data: the workflow's config check reads it too)."""
 
 
 class SceneError(ValueError):
