@@ -175,6 +175,17 @@ def test_spectra_dir_adds_materials(tmp_path, capsys, monkeypatch):
     assert float(rows[0]["Y"]) == pytest.approx(0.04, abs=1e-9)  # ((1.5 - 1)/(1.5 + 1))^2
     rows = audit(["Cu", "--angle", "0", "--spectra-dir", str(tmp_path / "mine")], capsys)
     assert rows[0]["material"] == "Cu"  # the bundled ones stay available
+    bundled_Y = float(rows[0]["Y"])
+    # a folder's own Cu hides the bundled one; repeated, the folders are searched in order
+    (tmp_path / "other").mkdir()
+    (tmp_path / "other" / "Cu.csv").write_text("wavelength_nm,n,k\n300,3,0\n900,3,0\n")
+    (tmp_path / "other" / "Mine.csv").write_text("wavelength_nm,n,k\n300,2,0\n900,2,0\n")
+    for folders, material, Y in ((["mine", "other"], "Cu", 0.25), (["mine", "other"], "Mine", 0.04),
+                                 (["other", "mine"], "Mine", 1 / 9)):
+        dirs = [a for folder in folders for a in ("--spectra-dir", str(tmp_path / folder))]
+        rows = audit([material, "--angle", "0", "--methods", "exact", *dirs], capsys)
+        assert float(rows[0]["Y"]) == pytest.approx(Y, rel=1e-7)  # (8 significant digits)
+    assert bundled_Y != pytest.approx(0.25, abs=0.01)
 
 
 def test_output_folder_gets_csv_and_figure(tmp_path, capsys, monkeypatch):
@@ -208,6 +219,7 @@ BAD = "bad.csv"
     (["Cu", "--observer", "5"], {}, ["unknown observer '5'", "2, 10"]),
     (["Cu", "--angle", "95"], {}, ["--angle", "[0, 90]"]),
     (["Cu", "--space", "P3"], {}, ["unknown display space 'P3'", "sRGB"]),
+    (["Cu", "--spectra-dir", "nope"], {}, ["--spectra-dir: no such folder 'nope'"]),
 ])
 def test_bad_input_one_line_nothing_written(args, files, says, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)

@@ -85,6 +85,12 @@ BAD = [
     (["bench", "--grids", "0"], "--grids"),
     (["bench", "--grids", "nan"], "--grids"),
     (["bench", "--grid-size", "0"], "--grid-size"),
+    # --spectra-dir, a folder that does not exist, in every command that looks a material up
+    *[(args + ["--spectra-dir", "nope"], "--spectra-dir: no such folder 'nope'")
+      for args in (["colour", "Cu", "--angle", "0"], ["spectra"],
+                   ["brdf", "lambert", "--material", "Cu", "--incidence", "0", "--angles", "0"],
+                   ["render", "s.yaml", "-o", "out.exr"], ["bench", "--sizes", "8"],
+                   ["audit", "Cu", "--angle", "0"])],
 ]
 
 # --config files: (file content, what the message must name besides the file)

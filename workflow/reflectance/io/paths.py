@@ -1,12 +1,13 @@
-"""Paths taken from data: a file named in config.yaml stays inside the project; a material is a
-name, not a path. And where the package's own data (``reflectance/data``) is."""
+"""Paths taken from data: a file named in config.yaml stays inside the project, one named in a
+scene inside the scene file's folder; a material is a name, not a path. And where the package's
+own data (``reflectance/data``) is."""
 
 from __future__ import annotations
 
 import re
 from pathlib import Path
 
-__all__ = ["package_data", "project_file", "check_name"]
+__all__ = ["package_data", "file_inside", "project_file", "check_name"]
 
 #: a name: no path separator ('/' or '\\'), no control character, not starting with '.'
 _NAME = re.compile(r"[^/\\\x00-\x1f.][^/\\\x00-\x1f]*")
@@ -29,6 +30,32 @@ def package_data(*parts):
     return files("reflectance").joinpath("data", *parts)
 
 
+def file_inside(value, root, where="the project folder"):
+    """``value`` (a relative path read from data) as a POSIX path, if it stays inside ``root``.
+
+    ValueError otherwise (an absolute path, or one that leaves ``root`` through ``..`` or a
+    symbolic link), saying so with ``where``, the name of ``root`` in the message.
+
+    Examples
+    --------
+    >>> file_inside("mats/my_metal.csv", ".", "the scene file's folder")
+    'mats/my_metal.csv'
+    >>> file_inside("/etc/passwd", ".", "the scene file's folder")
+    Traceback (most recent call last):
+    ...
+    ValueError: '/etc/passwd' is absolute; give a path inside the scene file's folder
+    """
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError(f"{value!r} is not a file path")
+    path = Path(value)
+    if path.is_absolute() or path.drive:
+        raise ValueError(f"{value!r} is absolute; give a path inside {where}")
+    root = Path(root).resolve()
+    if ".." in path.parts or not (root / path).resolve().is_relative_to(root):
+        raise ValueError(f"{value!r} leaves {where}; give a path inside it")
+    return path.as_posix()
+
+
 def project_file(value, key, root):
     """``value`` (a path from config ``key``) as a path relative to the project folder ``root``.
 
@@ -44,15 +71,10 @@ def project_file(value, key, root):
     ...
     ValueError: figures.errata.rows: '../x.yaml' leaves the project folder; give a path inside it
     """
-    if not isinstance(value, str) or not value.strip():
-        raise ValueError(f"{key}: {value!r} is not a file path")
-    path = Path(value)
-    if path.is_absolute() or path.drive:
-        raise ValueError(f"{key}: {value!r} is absolute; give a path inside the project folder")
-    root = Path(root).resolve()
-    if ".." in path.parts or not (root / path).resolve().is_relative_to(root):
-        raise ValueError(f"{key}: {value!r} leaves the project folder; give a path inside it")
-    return path.as_posix()
+    try:
+        return file_inside(value, root)
+    except ValueError as err:
+        raise ValueError(f"{key}: {err}") from None
 
 
 def check_name(name, what="material"):
