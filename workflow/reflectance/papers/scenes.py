@@ -177,9 +177,10 @@ def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, sp
     reading : str
         A key of ``fig6.ambient_readings``.
     config : dict or str or Path, optional
-        The configuration or its file (default :data:`CONFIG_PATH`).
+        The configuration or its file (default :data:`CONFIG_PATH`, the package's).
     spectra_dir : str, optional
-        Default: ``spectra`` beside config.yaml.
+        Default: ``spectra`` beside the config file (for the package's own, the bundled
+        spectra); for a dict, ``spectra``.
     """
     if not isinstance(config, dict):
         path = Path(config or CONFIG_PATH)
