@@ -779,13 +779,14 @@ def _run_audit(args):
                          f"{' '.join(f'{a:g}' for a in angles)}")
     if args.output is not None and Path(args.output).exists() and not Path(args.output).is_dir():
         raise SystemExit(f"reflectance: -o {args.output}: exists and is not a folder")
+    spectra_dirs = _spectra_dirs(args)
     try:
         from reflectance.colour.display import display_space
 
         display_space(args.space)
         grid = wavelength_grid(*args.wavelengths)
         W, observer = audit_weights(grid, args.illuminant, args.observer)
-        material = resolve_material(args.material, grid, _spectra_dirs(args))
+        material = resolve_material(args.material, grid, spectra_dirs)
         table = audit_table(material, angles, W, methods=args.methods or tuple(AUDIT_METHODS),
                             space=args.space, average_range_nm=args.average_range,
                             observer=observer)
