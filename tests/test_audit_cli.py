@@ -6,8 +6,12 @@ tristimulus weights), ``XYZ_to_Lab`` and ``delta_E``.
 """
 
 import csv
+import functools
 import io
+import json
+import os
 import shutil
+import site
 import subprocess
 import sys
 from pathlib import Path
@@ -175,6 +179,17 @@ def test_spectra_dir_adds_materials(tmp_path, capsys, monkeypatch):
     assert float(rows[0]["Y"]) == pytest.approx(0.04, abs=1e-9)  # ((1.5 - 1)/(1.5 + 1))^2
     rows = audit(["Cu", "--angle", "0", "--spectra-dir", str(tmp_path / "mine")], capsys)
     assert rows[0]["material"] == "Cu"  # the bundled ones stay available
+    bundled_Y = float(rows[0]["Y"])
+    # a folder's own Cu hides the bundled one; repeated, the folders are searched in order
+    (tmp_path / "other").mkdir()
+    (tmp_path / "other" / "Cu.csv").write_text("wavelength_nm,n,k\n300,3,0\n900,3,0\n")
+    (tmp_path / "other" / "Mine.csv").write_text("wavelength_nm,n,k\n300,2,0\n900,2,0\n")
+    for folders, material, Y in ((["mine", "other"], "Cu", 0.25), (["mine", "other"], "Mine", 0.04),
+                                 (["other", "mine"], "Mine", 1 / 9)):
+        dirs = [a for folder in folders for a in ("--spectra-dir", str(tmp_path / folder))]
+        rows = audit([material, "--angle", "0", "--methods", "exact", *dirs], capsys)
+        assert float(rows[0]["Y"]) == pytest.approx(Y, rel=1e-7)  # (8 significant digits)
+    assert bundled_Y != pytest.approx(0.25, abs=0.01)
 
 
 def test_output_folder_gets_csv_and_figure(tmp_path, capsys, monkeypatch):
@@ -208,6 +223,7 @@ BAD = "bad.csv"
     (["Cu", "--observer", "5"], {}, ["unknown observer '5'", "2, 10"]),
     (["Cu", "--angle", "95"], {}, ["--angle", "[0, 90]"]),
     (["Cu", "--space", "P3"], {}, ["unknown display space 'P3'", "sRGB"]),
+    (["Cu", "--spectra-dir", "nope"], {}, ["--spectra-dir: no such folder 'nope'"]),
 ])
 def test_bad_input_one_line_nothing_written(args, files, says, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)
@@ -230,17 +246,44 @@ def test_bad_input_exits_1_from_the_shell(tmp_path):
     assert result.stderr.count("\n") == 1 and "known: " in result.stderr
 
 
+# --- the installed wheel: every command that needs no workflow, in any folder -----------------
+
+#: the tests that take the installed wheel's runs (``start_with_session`` starts them if any is
+#: selected)
+INSTALLED_TESTS = ("test_installed_package_works_in_any_folder",
+                   "test_installed_render_and_bench_work_in_any_folder",
+                   "test_installed_readme_blocks_run_in_any_folder")
+
+#: each command run from the installed wheel, in an empty folder of its own: name -> its
+#: arguments after `reflectance` (render and bench as small and short as their options allow)
+INSTALLED_COMMANDS = {
+    "audit": ["audit", "Cu", "--angle", "0"],
+    "colour": ["colour", "Cu", "--angle", "0", "60"],
+    "brdf": ["brdf", "cook-torrance", "--material", "Cu", "--m", "0.3", "--incidence", "30",
+             "--angles", "-30", "0", "30"],
+    "spectra": ["spectra"],
+    "render": ["render", "scenes/example_spheres.yaml", "-o", "spheres.exr", "--png",
+               "spheres.png", "--width", "32", "--height", "20", "--quiet"],
+    "bench": ["bench", "--sizes", "16", "--runs", "1", "--brute-force-runs", "0", "--grids",
+              "--reference-supersample", "0", "--crosscheck-size", "0", "--json", "--quiet"],
+}
+
+
 def start_with_session(runs, root, tmp_path_factory, items):
-    """The wheel's build, install and run start with the session, on its pool
-    (tests/conftest.py's ``early`` calls this), if the test is selected: they need nothing of the
-    session's build, and so overlap the other tests; the test takes their result."""
-    if any(item.originalname == "test_installed_package_works_in_any_folder" for item in items):
+    """The wheel's build, install and runs start with the session, on its pool
+    (tests/conftest.py's ``early`` calls this), if one of :data:`INSTALLED_TESTS` is selected:
+    they need nothing of the session's build, and so overlap the other tests; the tests take
+    their results."""
+    if any(item.originalname in INSTALLED_TESTS for item in items):
         _start_installed(runs, root, tmp_path_factory)
 
 
 def _start_installed(runs, root, tmp_path_factory):
     if not runs.started("installed"):
         runs.start("installed", _installed, runs, root, tmp_path_factory.mktemp("installed"))
+        # once installed, each command (and README's blocks) on the pool, side by side
+        for name in (*INSTALLED_COMMANDS, "readme"):
+            runs.after("installed", f"installed {name}", _installed_run, runs, name, root)
 
 
 def _run(runs, args, timeout, **kwargs):
@@ -249,11 +292,12 @@ def _run(runs, args, timeout, **kwargs):
 
 
 def _installed(runs, root, tmp_path):
-    """A wheel built from a copy of the project, installed alone (--target), its command run in
-    an empty folder: (the install folder, the command's finished process)."""
+    """A wheel built from a copy of the project and installed into a fresh venv, which gets
+    this environment's packages (not its editable reflectance) from a .pth file: the venv's
+    paths, the environment its commands run in, and an empty folder outside the checkout."""
     src = tmp_path / "src"
     src.mkdir()
-    for name in ("pyproject.toml", "README.md"):
+    for name in ("pyproject.toml", "README.md", "config.yaml"):
         shutil.copy(root / name, src / name)
     shutil.copytree(root / "spectra", src / "spectra")
     shutil.copytree(root / "workflow" / "reflectance", src / "workflow" / "reflectance",
@@ -263,27 +307,129 @@ def _installed(runs, root, tmp_path):
                         str(wheels), str(src)], timeout=600)
     if built.returncode != 0:
         pytest.skip(f"cannot build a wheel here: {built.stderr.strip().splitlines()[-1:]}")
-    site = tmp_path / "site"
-    installed = _run(runs, [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target",
-                            str(site), *map(str, wheels.glob("*.whl"))], timeout=600)
+    venv = tmp_path / "venv"
+    made = _run(runs, [sys.executable, "-m", "venv", "--without-pip", str(venv)], timeout=300)
+    assert made.returncode == 0, made.stdout + made.stderr
+    python = venv / "bin" / "python"
+    # the wheel alone first (pip then sees no other reflectance), from this environment's pip
+    installed = _run(runs, [sys.executable, "-m", "pip", "--python", str(python), "install",
+                            "--no-deps", "--no-index", "-q", *map(str, wheels.glob("*.whl"))],
+                     timeout=600)
     assert installed.returncode == 0, installed.stdout + installed.stderr
+    asked = _run(runs, [str(python), "-c",
+                        "import sysconfig; print(sysconfig.get_path('purelib'))"], timeout=300)
+    assert asked.returncode == 0, asked.stderr
+    site_dir = Path(asked.stdout.strip())
+    # this environment's dependencies as plain path lines: site does not run the .pth files of
+    # a folder named so, so the editable reflectance's (which points at the checkout) stays out
+    (site_dir / "test-environment.pth").write_text(
+        "".join(f"{folder}\n" for folder in site.getsitepackages()))
+    ours = str(Path(sys.executable).parent)  # this environment's scripts: not on the venv's PATH
+    path = [venv / "bin", *(p for p in runs.environ.get("PATH", "").split(os.pathsep)
+                            if p and p != ours)]
+    env = {k: v for k, v in runs.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env.update(PATH=os.pathsep.join(map(str, path)), VIRTUAL_ENV=str(venv))
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
-    env = dict(runs.environ, PYTHONPATH=str(site))
-    result = _run(runs, [sys.executable, "-c", "import sys, reflectance, reflectance.cli as c; "
-                         "print(reflectance.__file__, file=sys.stderr); sys.exit(c.main())",
-                         "audit", "Cu", "--angle", "0"], timeout=300, cwd=elsewhere, env=env)
-    return site, result
+    return {"venv": venv, "site": site_dir, "env": env, "elsewhere": elsewhere}
+
+
+def _installed_run(installed, runs, name, root):
+    """Command ``name`` of :data:`INSTALLED_COMMANDS` (the venv's `reflectance` script), or
+    README's blocks (``"readme"``), in an empty folder of its own outside the checkout."""
+    from test_readme import quick_start, shell_commands
+
+    folder = installed["elsewhere"] / name
+    folder.mkdir()
+    run = functools.partial(_run, runs, timeout=600, env=installed["env"])
+    if name == "readme":
+        paths, command = quick_start(root / "README.md", folder,
+                                     str(installed["venv"] / "bin" / "python"))
+        quick = paths, run(command, cwd=folder)
+        return quick, [(block, run(command, cwd=block))
+                       for block, command in shell_commands(root / "README.md", folder)]
+    if name == "render":  # a scene file of the checkout, copied: the folder is not the checkout
+        (folder / "scenes").mkdir()
+        shutil.copy(root / "workflow" / "scenes" / "example_spheres.yaml", folder / "scenes")
+    where = run([str(installed["venv"] / "bin" / "python"), "-c",
+                 "import reflectance; print(reflectance.__file__)"], cwd=folder)
+    command = [str(installed["venv"] / "bin" / "reflectance"), *INSTALLED_COMMANDS[name]]
+    return folder, where.stdout.strip(), run(command, cwd=folder)
+
+
+def _installed_result(early, root, tmp_path_factory, name):
+    """(folder, where reflectance was imported from, finished process) of ``name``, run from
+    the installed wheel (``_installed_run``)."""
+    _start_installed(early, root, tmp_path_factory)  # (``early`` did, unless run without it)
+    installed = early.result("installed")
+    folder, where, proc = early.result(f"installed {name}")
+    assert proc.returncode == 0, proc.stderr
+    # the installed copy, not the checkout, in a folder outside it
+    assert Path(where).is_relative_to(installed["site"]), where
+    assert not folder.is_relative_to(root)
+    return folder, proc
+
+
+def csv_rows(proc):
+    return list(csv.DictReader(io.StringIO(proc.stdout)))
 
 
 def test_installed_package_works_in_any_folder(root, early, tmp_path_factory):
-    """Build a wheel from a copy of the project, install it alone (dependencies from this
-    environment) and run the command in an empty folder: the spectra come with the package.
-    The build, install and run (``_installed``) start with the session; taken here."""
-    _start_installed(early, root, tmp_path_factory)  # (``early`` did, unless run without it)
-    site, result = early.result("installed")
-    assert result.returncode == 0, result.stderr
-    assert str(site) in result.stderr  # the installed copy, not the checkout
-    assert not (site / "reflectance" / "data" / "spectra").is_symlink()
-    rows = list(csv.DictReader(io.StringIO(result.stdout)))
+    """Build a wheel from a copy of the project, install it into a fresh venv (dependencies
+    from this environment) and run each command in an empty folder: the spectra, the scene
+    schema and the config come with the package, as files, not links. The build, install and
+    runs (``_installed``, ``_installed_run``) start with the session; taken here."""
+    _, audit = _installed_result(early, root, tmp_path_factory, "audit")
+    site_dir = early.result("installed")["site"]
+    data = site_dir / "reflectance" / "data"
+    for path in (data / "spectra", data / "spectra" / "Cu.csv", data / "scene.schema.yaml",
+                 data / "config.yaml"):
+        assert path.exists() and not path.is_symlink(), path
+    assert (data / "config.yaml").read_bytes() == (root / "config.yaml").read_bytes()
+    rows = csv_rows(audit)
     assert rows[0]["material"] == "Cu" and float(rows[0]["Y"]) > 0.5
+    _, colour_ = _installed_result(early, root, tmp_path_factory, "colour")
+    rows = csv_rows(colour_)
+    assert [float(r["angle_deg"]) for r in rows] == [0, 60]
+    assert float(rows[0]["x"]) > 0.33 and float(rows[0]["Y"]) == pytest.approx(
+        float(csv_rows(audit)[0]["Y"]), rel=1e-5)  # copper's reddish normal colour, as audit's
+    _, brdf = _installed_result(early, root, tmp_path_factory, "brdf")
+    total = [float(r["total"]) for r in csv_rows(brdf)]
+    assert len(total) == 3 and max(range(3), key=total.__getitem__) == 2  # the mirror: +30
+    _, spectra = _installed_result(early, root, tmp_path_factory, "spectra")
+    listed = {r["material"]: r for r in csv_rows(spectra)}
+    assert {"Cu", "Au", "Ag"} <= set(listed) and listed["Cu"]["kind"] == "measured"
+
+
+def test_installed_render_and_bench_work_in_any_folder(root, early, tmp_path_factory):
+    """`reflectance render` of a scene file (its schema from the package, its materials the
+    bundled spectra) and `reflectance bench` (its default scene from the package's config.yaml:
+    the Fig. 6b vase), from the installed wheel."""
+    from PIL import Image
+
+    from reflectance.io.images import read_exr
+
+    folder, _ = _installed_result(early, root, tmp_path_factory, "render")
+    with Image.open(folder / "spheres.png") as im:
+        assert im.size == (32, 20)
+    XYZ, _ = read_exr(folder / "spheres.exr")
+    assert XYZ.shape == (20, 32, 3) and XYZ[..., 1].max() > 0.05
+    _, bench = _installed_result(early, root, tmp_path_factory, "bench")
+    (result,) = json.loads(bench.stdout)
+    assert result["size"] == 16 and result["lights"] == 2 and result["wavelengths"] == 95
+    assert result["triangles"] > 100_000  # the vase (221,408 triangles at config.yaml's sampling)
+    assert result["hit_samples"] > 0 and result["total_s"] > 0
+
+
+def test_installed_readme_blocks_run_in_any_folder(root, early, tmp_path_factory):
+    """README's quick-start blocks (Python) and its render block (bash) run as written from the
+    installed wheel, each in an empty folder outside the checkout, with what the prose says."""
+    from test_readme import check_quick_start, check_render_block
+
+    _start_installed(early, root, tmp_path_factory)
+    (paths, quick), shells = early.result("installed readme")
+    assert not paths[0].is_relative_to(root)
+    check_quick_start(paths, quick)
+    assert shells, "README has no block marked to run"
+    for block, proc in shells:
+        check_render_block(block, proc)

@@ -1,8 +1,11 @@
 """The `reflectance` command line."""
 
 import io
+import json
+import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import colour
 import numpy as np
@@ -102,8 +105,108 @@ def test_colour_and_spectra_work_outside_the_checkout(tmp_path):
     assert float(values["x"]) > 0.33
     listed = subprocess.run(run + ["spectra"], cwd=tmp_path, capture_output=True, text=True)
     assert listed.returncode == 0 and "\nCu," in listed.stdout
-    # an explicit --spectra-dir is honoured (an empty folder knows no materials)
+    # a --spectra-dir is searched first and hides nothing it does not hold: an empty folder
+    # leaves copper the bundled one
     (tmp_path / "empty").mkdir()
-    none = subprocess.run(run + ["colour", "Cu", "--angle", "0", "--spectra-dir", "empty"],
-                          cwd=tmp_path, capture_output=True, text=True)
-    assert none.returncode == 1 and "unknown material 'Cu'" in none.stderr
+    again = subprocess.run(run + ["colour", "Cu", "--angle", "0", "--spectra-dir", "empty"],
+                           cwd=tmp_path, capture_output=True, text=True)
+    assert again.returncode == 0 and again.stdout == here.stdout, again.stderr
+
+
+# --- the one lookup of a material name: --spectra-dir folders (in order), then the bundled ----
+
+def flat(folder, name, n):
+    """A material of constant index n (k = 0): F0 = ((n - 1)/(n + 1))^2 at every wavelength."""
+    folder.mkdir(exist_ok=True)
+    (folder / f"{name}.csv").write_text(f"wavelength_nm,n,k\n300,{n},0\n900,{n},0\n")
+
+
+def colour_Y(args, capsys):
+    table = pd.read_csv(io.StringIO(run_cli(["colour", *args, "--angle", "0"], capsys)))
+    return float(table.Y[0])
+
+
+def test_colour_and_brdf_search_the_folders_in_order_then_the_bundled(root, tmp_path, capsys,
+                                                                      monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    flat(tmp_path / "a", "Cu", 1.5)    # hides the bundled copper
+    flat(tmp_path / "b", "Cu", 2.0)    # hidden by a
+    flat(tmp_path / "b", "Mine", 3.0)
+    dirs = ["--spectra-dir", "a", "--spectra-dir", "b"]
+    # a flat spectrum at normal incidence: Y = F0 (the white has Y = 1)
+    assert colour_Y(["Cu", *dirs], capsys) == pytest.approx(0.04, rel=1e-5)
+    assert colour_Y(["Mine", *dirs], capsys) == pytest.approx(0.25, rel=1e-5)
+    assert colour_Y(["Cu", "--spectra-dir", "b", "--spectra-dir", "a"], capsys) == \
+        pytest.approx(1 / 9, rel=1e-5)
+    exact, _ = _copper_XYZ(root, 1.0)  # no folder: the bundled copper, the project's Cu.csv
+    assert colour_Y(["Cu"], capsys) == pytest.approx(exact[1], rel=1e-5)
+    # Au is in neither folder: the bundled gold, as without them
+    assert run_cli(["colour", "Au", "--angle", "0", "60", *dirs], capsys) == \
+        run_cli(["colour", "Au", "--angle", "0", "60"], capsys)
+    # brdf --material takes the same lookup: Y = total cos(incidence) (its epilog), and a
+    # Lambertian of albedo F0 = 0.04 has total = 0.04/pi
+    brdf = pd.read_csv(io.StringIO(run_cli(["brdf", "lambert", "--material", "Cu", *dirs,
+                                            "--incidence", "0", "--angles", "0"], capsys)))
+    assert brdf.total[0] == pytest.approx(0.04 / np.pi, rel=1e-5)
+
+
+def test_spectra_lists_what_each_name_finds(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    flat(tmp_path / "mine", "Cu", 1.5)
+    (tmp_path / "mine" / "Paint.csv").write_text("wavelength_nm,reflectance\n300,0.2\n900,0.4\n")
+    t = pd.read_csv(io.StringIO(run_cli(["spectra", "--spectra-dir", "mine"], capsys)),
+                    keep_default_na=False)
+    rows = t.set_index("material")
+    assert list(t.material[:2]) == ["Cu", "Paint"]  # the folder's first, then the bundled
+    assert list(t.material).count("Cu") == 1          # the bundled copper is hidden
+    assert rows.loc["Cu", "kind"] == "measured" and rows.loc["Paint", "kind"] == "derived"
+    assert rows.loc["Cu", "dataset"] == f"file {Path('mine') / 'Cu.csv'}"
+    assert {"Au", "Ag"} <= set(t.material) and rows.loc["Au", "reference"] != ""
+
+
+def test_render_in_a_fresh_folder_and_a_scenes_own_file(root, tmp_path, capsys, monkeypatch):
+    """No ./spectra: the names come from the bundled spectra (--spectra-dir adds folders in
+    front, hiding none it lacks), a material file from beside the scene file."""
+    from reflectance.io.images import read_exr
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "scenes" / "mats").mkdir(parents=True)
+    shutil.copy(root / "spectra" / "Cu.csv", tmp_path / "scenes" / "mats" / "my_copper.csv")
+    flat(tmp_path / "mine", "Other", 1.5)
+    images = {}
+    for label, material, extra in (("named", {"name": "Cu"}, []),
+                                   ("file", {"file": "mats/my_copper.csv"}, []),
+                                   ("named, a folder in front", {"name": "Cu"},
+                                    ["--spectra-dir", "mine"])):
+        scene = tmp_path / "scenes" / "s.yaml"
+        scene.write_text(SCENE.format(material=json.dumps({**material, "m": 0.3})))
+        out = tmp_path / f"{len(images)}.exr"
+        assert main(["render", "scenes/s.yaml", "-o", str(out), "--quiet", *extra]) == 0
+        images[label], _ = read_exr(out)
+    assert images["named"].max() > 0.05  # the copper sphere is lit
+    # the same data by name, by file and with a folder in front: the same image
+    np.testing.assert_array_equal(images["file"], images["named"])
+    np.testing.assert_array_equal(images["named, a folder in front"], images["named"])
+
+
+def test_render_refuses_a_bad_material_file_naming_it_and_its_key(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "s.yaml").write_text(SCENE.format(material='{"file": "../x.csv", "m": 0.3}'))
+    (tmp_path / "bad.yaml").write_text(SCENE.format(material='{"file": "bad.csv", "m": 0.3}'))
+    (tmp_path / "bad.csv").write_text("lambda,n,k\n400,1,1\n500,1,1\n")
+    for scene, says in (("s.yaml", "'../x.csv' leaves the scene file's folder"),
+                        ("bad.yaml", "bad.csv, line 1 (header)")):
+        with pytest.raises(SystemExit) as err:
+            main(["render", scene, "-o", "out.exr", "--quiet"])
+        assert f"{scene}: objects[0].material.file: " in str(err.value.code)
+        assert says in str(err.value.code)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.csv", "bad.yaml", "s.yaml"]
+
+
+SCENE = """\
+camera: {{position: [0, -5, 0], look_at: [0, 0, 0], fov_deg: 30, width: 12, height: 8}}
+objects:
+  - geometry: {{type: sphere, radius: 1.0}}
+    material: {material}
+lights: [{{type: directional, direction: [0, -1, 1]}}]
+"""

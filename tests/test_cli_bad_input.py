@@ -4,6 +4,7 @@ status 1, no traceback, and no file written. Issue 12, "Command line"."""
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -85,6 +86,12 @@ BAD = [
     (["bench", "--grids", "0"], "--grids"),
     (["bench", "--grids", "nan"], "--grids"),
     (["bench", "--grid-size", "0"], "--grid-size"),
+    # --spectra-dir, a folder that does not exist, in every command that looks a material up
+    *[(args + ["--spectra-dir", "nope"], "--spectra-dir: no such folder 'nope'")
+      for args in (["colour", "Cu", "--angle", "0"], ["spectra"],
+                   ["brdf", "lambert", "--material", "Cu", "--incidence", "0", "--angles", "0"],
+                   ["render", "s.yaml", "-o", "out.exr"], ["bench", "--sizes", "8"],
+                   ["audit", "Cu", "--angle", "0"])],
 ]
 
 # --config files: (file content, what the message must name besides the file)
@@ -191,12 +198,58 @@ def test_failed_png_leaves_no_exr(workdir, root, monkeypatch):
     assert (workdir / "old.exr").read_bytes() == b"earlier"
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root may write into any folder")
-def test_unwritable_folder_is_refused_before_rendering(workdir, root):
-    (workdir / "ro").mkdir(mode=0o555)
-    message = refused(["render", "s.yaml", "-o", "ro/out.exr"], root)
-    assert "-o ro/out.exr" in message and "cannot write" in message
-    assert listing(workdir / "ro") == []
+#: the command line, in a process that first makes sure it is not root (root may write anywhere)
+AS_A_USER = ("import os, sys\n"
+             "assert os.geteuid() != 0, 'still root: the refusal would not be tested'\n"
+             "from reflectance.cli import main\n"
+             "sys.exit(main())\n")
+
+
+def unprivileged(command):
+    """``command`` as an unprivileged user runs it: unchanged unless the tests run as root (CI
+    does), else under setpriv (util-linux) as the user nobody, with no supplementary groups."""
+    if os.geteuid() != 0:
+        return command
+    import pwd
+    import shutil
+
+    setpriv = shutil.which("setpriv")
+    if setpriv is None:
+        if os.environ.get("CI"):  # as tests/conftest.py reads it: CI must not skip this quietly
+            pytest.fail("the tests run as root, and setpriv (util-linux), which runs the check "
+                        "as the user nobody, is not installed")
+        pytest.skip("root may write into any folder, and setpriv is not installed")
+    nobody = pwd.getpwnam("nobody")
+    return [setpriv, f"--reuid={nobody.pw_uid}", f"--regid={nobody.pw_gid}", "--clear-groups",
+            *command]
+
+
+def test_unwritable_folder_is_refused_before_rendering():
+    """An output in a folder the user may not write into is refused, naming the option and the
+    folder, before the scene is read: one line, exit status 1, no progress (nothing rendered),
+    nothing written. An unprivileged process of its own (as root: the user nobody), in a folder
+    outside pytest's (which only root may enter)."""
+    import shutil
+    import tempfile
+
+    folder = Path(tempfile.mkdtemp(prefix="reflectance-unwritable-"))
+    try:
+        folder.chmod(0o755)  # nobody may enter it and read the scene, not write
+        (folder / "s.yaml").write_text(SCENE)
+        (folder / "ro").mkdir()
+        (folder / "ro").chmod(0o555)
+        proc = subprocess.run(unprivileged([sys.executable, "-c", AS_A_USER, "render", "s.yaml",
+                                            "-o", "ro/out.exr"]),
+                              cwd=folder, capture_output=True, text=True, timeout=300,
+                              env=dict(os.environ, HOME=str(folder)))
+        assert proc.returncode == 1, proc.stderr
+        # the refusal itself: not the failed write that rendering first would end in
+        assert proc.stderr == "reflectance: -o ro/out.exr: cannot write in folder ro\n"
+        assert proc.stdout == "" and listing(folder / "ro") == []
+    finally:
+        if (folder / "ro").exists():
+            (folder / "ro").chmod(0o755)  # (a folder of its own user may be removed only so)
+        shutil.rmtree(folder)
 
 
 @pytest.mark.parametrize("move, warning", [

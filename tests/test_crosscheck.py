@@ -281,7 +281,7 @@ def test_bench_crosscheck_measures_both_against_the_same_reference(root):
     from reflectance.cli import _default_bench_scene
     from reflectance.render.crosscheck import bench_crosscheck, format_crosscheck
 
-    doc = _default_bench_scene(root / "spectra")
+    doc = _default_bench_scene()
     doc["objects"][0]["geometry"].update(n_theta=48, n_profile_samples=40)  # a coarser vase
     r = bench_crosscheck(doc, 16, runs=1,
                          reference_supersample=4, reference_spp=64, ladder_spp=(1, 16),
@@ -379,3 +379,33 @@ def test_mitsubas_whole_command_renders_the_exported_scene(root, tmp_path):
     expected, _ = mitsuba_renderer(scene, "scalar_spectral")(16, seed=0)
     assert written.shape == expected.shape and written.max() > 0
     assert np.array_equal(written, expected)
+
+
+@needs_mitsuba
+def test_our_whole_command_takes_a_material_file_of_the_scene_along(root, tmp_path):
+    """Our whole command renders the scene from a folder of its own: a material file (which must
+    lie inside the scene file's folder) is copied there with it, and the image is the one the
+    same scene renders in this process."""
+    import shutil
+
+    import mitsuba as mi
+
+    from reflectance.render.crosscheck import whole_commands
+
+    mi.set_variant("scalar_spectral")  # (the bench's cross-check sets it before the export)
+    folder = tmp_path / "scenes"
+    (folder / "mats").mkdir(parents=True)
+    shutil.copy(root / "spectra" / "Cu.csv", folder / "mats" / "copper.csv")
+    material = {**{k: v for k, v in COPPER.items() if k != "name"}, "file": "mats/copper.csv"}
+    doc = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30, "width": 12,
+                      "height": 12, "supersample": 1},
+           "objects": [{"geometry": {"type": "sphere", "radius": 1.0}, "material": material}],
+           "lights": [{"type": "directional", "direction": SUN}]}
+    scene = scene_from_dict(doc, base_dir=folder)
+    reference = render(scene).XYZ
+    assert reference.max() > 0.05
+    out = whole_commands(doc, scene, 12, 1, 1, "scalar_spectral", reference, runs=1,
+                         base_dir=folder)
+    assert "error" not in out, out
+    mean, p95 = out["ours_vs_ours"]
+    assert p95 < 1e-3  # the same render (written as float32)

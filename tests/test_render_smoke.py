@@ -108,7 +108,7 @@ def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(ro
     from reflectance.cli import _default_bench_scene
     from reflectance.render.bench import bench_size
 
-    doc = _default_bench_scene(root / "spectra")
+    doc = _default_bench_scene()
     same = bench_size(doc, 16, supersample=2, runs=1, brute_force_runs=0,
                       spectra_dir=root / "spectra", reference_supersample=2)
     assert same["spp"] == 4 and same["dE_reference_mean"] == same["dE_reference_p95"] == 0.0

@@ -142,9 +142,12 @@ def test_wavelength_grid_outside_a_material_names_it(spectra):
     assert "objects[0].material.name: " in text and "leaves the data range" in text
 
 
-def test_missing_spectra_folder_is_reported(tmp_path):
+def test_missing_spectra_folder_is_reported(tmp_path, monkeypatch):
     text = errors_of(minimal(), tmp_path / "none")
-    assert "spectra_dir: no such folder" in text
+    assert f"s.yaml: spectra_dir: no such folder '{tmp_path / 'none'}'" in text
+    monkeypatch.chdir(tmp_path)  # the scene's own spectra_dir, relative to the working directory
+    text = errors_of(minimal(spectra_dir="spectra"), [])
+    assert "s.yaml: spectra_dir: no such folder 'spectra' (relative to the working" in text
 
 
 def test_transform_places_the_object(spectra):
@@ -232,13 +235,129 @@ def test_index_material_equals_a_flat_spectrum_file(tmp_path, n, k):
     np.testing.assert_allclose(b.albedo, ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2), rtol=1e-12)
 
 
-def test_index_and_name_together_are_an_error(spectra):
+@pytest.mark.parametrize("given", [("name", "index"), ("name", "file"), ("file", "index")])
+def test_two_spectra_for_one_material_are_an_error(spectra, tmp_path, given):
+    (tmp_path / "mine.csv").write_text("wavelength_nm,n,k\n300,1.5,0\n900,1.5,0\n")
+    keys = {"name": "Cu", "index": {"n": 1.5}, "file": "mine.csv"}
     document = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30,
                            "width": 8, "height": 8}, "lights": [],
                 "objects": [{"geometry": {"type": "sphere", "radius": 1},
-                             "material": {"name": "Cu", "index": {"n": 1.5}, "m": 0.2}}]}
-    with pytest.raises(SceneError, match="either 'name'.*or 'index'"):
-        scene_from_dict(document, spectra_dir=spectra)
+                             "material": {**{k: keys[k] for k in given}, "m": 0.2}}]}
+    with pytest.raises(SceneError, match=f"give one of 'name'.*'file'.*'index'.*, not "
+                                         f"'{given[0]}' and '{given[1]}'"):
+        scene_from_dict(document, spectra_dir=spectra, base_dir=tmp_path)
+
+
+# --- where a material comes from: the lookup of names, a scene's own files ---------------------
+
+def F0_of(path, grid, micrometres=False):
+    """Independent: the normal-incidence reflectance of a spectrum CSV on the grid, read with
+    numpy (n, k: ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2); a reflectance: itself)."""
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    wl = data[:, 0] * (1000.0 if micrometres else 1.0)
+    if data.shape[1] == 2:
+        return np.interp(grid, wl, data[:, 1])
+    n, k = np.interp(grid, wl, data[:, 1]), np.interp(grid, wl, data[:, 2])
+    return ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2)
+
+
+def flat(folder, name, n):
+    folder.mkdir(exist_ok=True)
+    (folder / f"{name}.csv").write_text(f"wavelength_nm,n,k\n300,{n},0\n900,{n},0\n")
+
+
+def sphere_of(material):
+    return [{"geometry": {"type": "sphere", "radius": 1.0}, "material": {**material, "m": 0.3}}]
+
+
+def test_names_are_looked_up_in_the_given_folders_then_spectra_dir_then_bundled(root,
+                                                                                tmp_path):
+    first, second, own = tmp_path / "first", tmp_path / "second", tmp_path / "own"
+    flat(first, "Cu", 1.5)           # hides the bundled copper
+    flat(second, "Cu", 2.0)          # hidden by first
+    flat(second, "Mine", 3.0)
+    flat(own, "Mine", 4.0)           # the scene's spectra_dir: after the folders given
+    flat(own, "Theirs", 2.5)
+    objects = [o for name in ("Cu", "Mine", "Theirs", "Au") for o in sphere_of({"name": name})]
+    scene = scene_from_dict(minimal(objects=objects, spectra_dir=str(own)),
+                            spectra_dir=[first, str(second)])
+    F0 = [obj.material.albedo for obj in scene.objects]  # the albedo is the F0 of `name`
+    for got, n in zip(F0[:3], (1.5, 3.0, 2.5)):
+        np.testing.assert_allclose(got, ((n - 1) / (n + 1)) ** 2, rtol=1e-12)
+    # Au is in none of them: the bundled one, i.e. the project's spectra/Au.csv
+    np.testing.assert_allclose(F0[3], F0_of(root / "spectra" / "Au.csv", scene.wavelengths),
+                               rtol=1e-12)
+    assert "spectra_dir" not in scene_from_dict(minimal(), spectra_dir=first).document
+
+
+def test_without_any_folder_the_bundled_spectra_serve(root, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # no ./spectra, no spectra_dir: nothing but the bundled ones
+    scene = scene_from_dict(minimal())
+    np.testing.assert_allclose(scene.objects[0].material.albedo,
+                               F0_of(root / "spectra" / "Cu.csv", scene.wavelengths),
+                               rtol=1e-12)
+
+
+def test_an_unknown_name_lists_the_folders_and_every_known_name(tmp_path):
+    flat(tmp_path / "mine", "Mine", 1.5)
+    text = errors_of(minimal(objects=sphere_of({"name": "Unobtainium"})), tmp_path / "mine")
+    assert "objects[0].material.name: unknown material 'Unobtainium' in " in text
+    assert f"{tmp_path / 'mine'}, the bundled spectra; known: " in text
+    known = text.split("known: ")[1].split(", ")
+    assert {"Mine", "Cu", "Au"} <= set(known) and known == sorted(known)
+
+
+@pytest.mark.parametrize("form", ["nk", "reflectance", "refractiveindex.info"])
+def test_a_material_file_beside_the_scene_file_in_each_form(root, tmp_path, monkeypatch, form):
+    scenes, mats = tmp_path / "scenes", tmp_path / "scenes" / "mats"
+    mats.mkdir(parents=True)
+    wl, n, k = np.loadtxt(root / "spectra" / "Cu.csv", delimiter=",", skiprows=1).T
+    text = {"nk": "wavelength_nm,n,k\n" + "".join(f"{a},{b},{c}\n" for a, b, c in zip(wl, n, k)),
+            "reflectance": "wavelength_nm,reflectance\n350,0.05\n550,0.30\n850,0.60\n",
+            "refractiveindex.info": "wl,n,k\n" + "".join(f"{a / 1000:.9g},{b},{c}\n"
+                                                          for a, b, c in zip(wl, n, k))}[form]
+    (mats / "my_metal.csv").write_text(text)
+    (scenes / "s.yaml").write_text(yaml.safe_dump(minimal(
+        objects=sphere_of({"file": "mats/my_metal.csv"}))))
+    monkeypatch.chdir(tmp_path)  # the file is found beside the scene file, not here
+    scene = load_scene(scenes / "s.yaml")
+    material = scene.objects[0].material
+    expected = F0_of(mats / "my_metal.csv", scene.wavelengths,
+                     micrometres=form == "refractiveindex.info")
+    np.testing.assert_allclose(material.albedo, expected, rtol=1e-9)
+    assert material.name == "my_metal"
+    if form == "reflectance":  # no k: Cook & Torrance's k = 0 and n from F0
+        root_F0 = np.sqrt(expected)
+        np.testing.assert_allclose(material.n, (1 + root_F0) / (1 - root_F0), rtol=1e-12)
+        assert np.all(material.k == 0)
+    else:  # the file's own n, k: copper's, as the bundled Cu gives them
+        np.testing.assert_allclose(material.k, np.interp(scene.wavelengths, wl, k), rtol=1e-9)
+
+
+@pytest.mark.parametrize("value, files, says", [
+    ("none.csv", {}, ["none.csv: no such file"]),
+    ("bad.csv", {"bad.csv": "lambda,n,k\n400,1,1\n500,1,1\n"},
+     ["bad.csv, line 1 (header)", "'wavelength_nm,n,k'", "'wl,n,k'"]),
+    ("bad.csv", {"bad.csv": "wavelength_nm,n,k\n400,1,1\n500,one,1\n"},
+     ["bad.csv, data row 2 (line 3)", "'one' is not a number"]),
+    ("bad.csv", {"bad.csv": "wavelength_nm,n,k\n400,1,1\n700,1,1\n"},
+     ["360-830 nm leaves the data range 400-700 nm"]),
+    ("../outside.csv", {"../outside.csv": "wavelength_nm,n,k\n300,1.5,0\n900,1.5,0\n"},
+     ["'../outside.csv' leaves the scene file's folder"]),
+    ("/etc/passwd", {}, ["'/etc/passwd' is absolute; give a path inside the scene file's folder"]),
+])
+def test_a_bad_material_file_is_named_with_its_key(tmp_path, value, files, says):
+    scenes = tmp_path / "scenes"
+    scenes.mkdir()
+    for name, text in files.items():
+        (scenes / name).write_text(text)
+    (scenes / "s.yaml").write_text(yaml.safe_dump(minimal(objects=sphere_of({"file": value}))))
+    with pytest.raises(SceneError) as info:
+        load_scene(scenes / "s.yaml")
+    text = str(info.value)
+    assert f"s.yaml: objects[0].material.file: " in text
+    for part in says:
+        assert part in text, text
 
 
 def test_cook_torrance_with_s_0_needs_no_m(spectra):

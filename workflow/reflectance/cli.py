@@ -127,27 +127,33 @@ def _common(parser):
     parser.add_argument("--config", default=DEFAULT_CONFIG,
                         help="config.yaml whose wavelength grid to use (default: ./config.yaml "
                              "if present, else 360-830 nm by 5 nm)")
-    parser.add_argument("--spectra-dir", default=None,
-                        help="folder of material CSVs and sources.csv (default: ./spectra if it "
-                             "exists, else the spectra that ship with the package)")
+    _spectra_dir_option(parser)
 
 
-def _spectra_dir(args):
-    """--spectra-dir, else ./spectra (a checkout), else the package's own spectra."""
-    if args.spectra_dir is not None:
-        return args.spectra_dir
-    if Path("spectra").is_dir():
-        return "spectra"
-    from reflectance.optics.spectra import bundled_spectra_dir
+def _spectra_dir_option(parser, before="the bundled spectra"):
+    """--spectra-dir, the one option of every command that looks a material name up."""
+    parser.add_argument("--spectra-dir", action="append", default=[], metavar="DIR",
+                        help=f"a further folder of <name>.csv materials, searched before {before} "
+                             "(repeatable: searched in the order given)")
 
-    return str(bundled_spectra_dir())
+
+def _spectra_dirs(args):
+    """The folders of --spectra-dir (each must exist), which the lookup of a material name
+    (:func:`reflectance.optics.spectra.find_material`) searches before the bundled spectra."""
+    from reflectance.optics.spectra import SpectraError, spectra_folders
+
+    try:
+        spectra_folders(args.spectra_dir)
+    except SpectraError as err:
+        raise SystemExit(f"reflectance: --spectra-dir: {err}") from None
+    return args.spectra_dir
 
 
 def _load(args, name, grid):
-    from reflectance.optics.spectra import load_material
+    from reflectance.optics.spectra import find_material
 
     try:
-        return load_material(name, grid, spectra_dir=_spectra_dir(args))
+        return find_material(name, grid, _spectra_dirs(args))
     except (ValueError, FileNotFoundError) as err:
         raise SystemExit(f"reflectance: {err}") from None
 
@@ -164,7 +170,7 @@ def _add_colour(sub):
                     "light; the illuminant's white has Y = 1), x, y, dominant_nm, purity, R, G, "
                     "B (display values after gamut clipping; not rescaled: white is Y = 1), "
                     "dE2000_vs_exact (CIEDE2000 against the exact spectral Fresnel colour).")
-    p.add_argument("material", help="a material of spectra/ (see `reflectance spectra`)")
+    p.add_argument("material", help="a material name (see `reflectance spectra`)")
     p.add_argument("--angle", nargs="+", type=ANGLE_0_90, required=True, metavar="DEG",
                    help="incidence angles in degrees, 0 to 90")
     p.add_argument("--fresnel", default="exact", choices=list(COLOUR_METHODS),
@@ -217,17 +223,21 @@ def _print_float_csv(columns):
 
 def _add_spectra(sub):
     p = sub.add_parser("spectra", help=COMMAND_HELP["spectra"],
-                       description="List every material of spectra/sources.csv: material, kind "
-                                   "(measured n,k or derived reflectance), dataset and reference.")
+                       description="List every material a name finds, in the order of the "
+                                   "lookup (the --spectra-dir folders, then the bundled "
+                                   "spectra; a name found earlier hides the same name later): "
+                                   "material, kind (measured n,k or derived reflectance), "
+                                   "dataset and reference (a folder's sources.csv, else the "
+                                   "file).")
     _common(p)
     p.set_defaults(run=_run_spectra)
 
 
 def _run_spectra(args):
-    from reflectance.optics.spectra import list_materials
+    from reflectance.optics.spectra import materials_table
 
     try:
-        table = list_materials(_spectra_dir(args))
+        table = materials_table(_spectra_dirs(args))
     except (ValueError, FileNotFoundError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     cols = [c for c in ("material", "kind", "dataset", "reference", "DOI") if c in table.columns]
@@ -307,7 +317,8 @@ def _add_brdf(sub):
                    help="azimuth of the viewing plane from the plane of incidence, -360..360 "
                         "(default 0)")
     source = p.add_mutually_exclusive_group()
-    source.add_argument("--material", help="a material of spectra/ (spectral: X, Y, Z columns)")
+    source.add_argument("--material",
+                        help="a material name (`reflectance spectra`; spectral: X, Y, Z columns)")
     source.add_argument("--n", type=INDEX_N,
                         help="refractive index (one for all wavelengths), 0 < n <= 1000")
     p.add_argument("--k", type=INDEX_K, default=0.0,
@@ -466,10 +477,10 @@ def _run_brdf(args):
 def _add_render(sub):
     p = sub.add_parser(
         "render", help=COMMAND_HELP["render"],
-        description="Render SCENE (YAML, keys in workflow/schemas/scene.schema.yaml) spectrally "
-                    "into linear CIE XYZ (OpenEXR, scene and package versions in the header), "
-                    "a display PNG (Cook & Torrance exposure, gamut clipping; tagged with its "
-                    "colour space) and a display-referred linear RGB OpenEXR, any of them (at "
+        description="Render SCENE (YAML, keys in the package's reflectance/data/scene.schema.yaml) "
+                    "spectrally into linear CIE XYZ (OpenEXR, scene and package versions in the "
+                    "header), a display PNG (Cook & Torrance exposure, gamut clipping; tagged with "
+                    "its colour space) and a display-referred linear RGB OpenEXR, any of them (at "
                     "least one). A bad scene is reported, by file and key, before anything is "
                     "rendered or written. Progress goes to standard error (a bar on a terminal, "
                     "one line per phase otherwise).")
@@ -491,8 +502,7 @@ def _add_render(sub):
     p.add_argument("--spectral", choices=["table", "brute-force"],
                    help="override the scene's wavelength integration (default: the scene's, "
                         "table)")
-    p.add_argument("--spectra-dir", help="folder of material CSVs (default: the scene's "
-                                         "spectra_dir, else ./spectra)")
+    _spectra_dir_option(p, "the scene's spectra_dir and the bundled spectra")
     p.add_argument("--quiet", action="store_true", help="print nothing (no progress either)")
     p.set_defaults(run=_run_render)
 
@@ -531,6 +541,7 @@ def _run_render(args):
         raise SystemExit("reflectance: render: the outputs must be different files")
     for option, path, _ in outputs:
         _writable(option, path)
+    spectra_dirs = _spectra_dirs(args)
     progress = Progress(5, "reflectance render", enabled=not args.quiet)
     phases = ["scene", "visibility", "shadows", "shading", "writing"]
     # a band's or the refinement's phase is named "rows a-b: shading" and so on
@@ -538,7 +549,7 @@ def _run_render(args):
         phases.index(phase.rsplit(": ", 1)[-1]), phase)
     try:
         step("scene")
-        scene = load_scene(args.scene, spectra_dir=args.spectra_dir, width=args.width,
+        scene = load_scene(args.scene, spectra_dir=spectra_dirs, width=args.width,
                            height=args.height, supersample=args.supersample,
                            spectral=args.spectral)
         result = render(scene, progress=step)
@@ -631,7 +642,7 @@ def _add_bench(sub):
                         "errors, the fastest meeting the accuracy goal compared with Mitsuba "
                         "at that goal (1 to 16; default "
                         f"{' '.join(map(str, CROSSCHECK_SUPERSAMPLES))})")
-    p.add_argument("--spectra-dir", help="folder of material CSVs (default: the project's)")
+    _spectra_dir_option(p, "the scene's spectra_dir and the bundled spectra")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",
                    help="no progress on standard error (by default: each size and phase, a bar "
@@ -639,11 +650,12 @@ def _add_bench(sub):
     p.set_defaults(run=_run_bench)
 
 
-def _default_bench_scene(spectra_dir):
-    """The copper vase of Cook & Torrance 1982 Fig. 6b (irradiance reading), from config.yaml."""
+def _default_bench_scene():
+    """The copper vase of Cook & Torrance 1982 Fig. 6b (irradiance reading), from the config.yaml
+    that ships with the package (in a checkout: the project's), its spectra the bundled ones."""
     from reflectance.papers.scenes import fig6_scene_CookTorrance1982
 
-    doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra_dir)
+    doc = fig6_scene_CookTorrance1982("b", "irradiance")
     doc["_source"] = "config.yaml figures.cook_torrance_1982.fig6 panel b (irradiance)"
     return doc
 
@@ -656,11 +668,12 @@ def _run_bench(args):
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")
+    spectra_dirs = _spectra_dirs(args)
     try:
-        scene = args.scene or _default_bench_scene(args.spectra_dir)
+        scene = args.scene or _default_bench_scene()
         progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
-                            args.brute_force_runs, args.grids, args.grid_size, args.spectra_dir,
+                            args.brute_force_runs, args.grids, args.grid_size, spectra_dirs,
                             args.reference_supersample, progress=progress,
                             adaptive={"scene": None, "on": True, "off": False}[args.adaptive],
                             crosscheck_size=args.crosscheck_size,
@@ -737,9 +750,7 @@ def _add_audit(sub):
                    metavar=("LO", "HI"),
                    help="range (nm) of the average F0 of the approximation method "
                         "(default 380 780)")
-    p.add_argument("--spectra-dir", action="append", default=[], metavar="DIR",
-                   help="a further folder of <name>.csv materials (repeatable; searched before "
-                        "the bundled spectra)")
+    _spectra_dir_option(p)
     p.add_argument("-o", "--output", metavar="DIR",
                    help="also write DIR/audit.csv and the figure DIR/audit.png, .pdf")
     p.set_defaults(run=_run_audit)
@@ -768,13 +779,14 @@ def _run_audit(args):
                          f"{' '.join(f'{a:g}' for a in angles)}")
     if args.output is not None and Path(args.output).exists() and not Path(args.output).is_dir():
         raise SystemExit(f"reflectance: -o {args.output}: exists and is not a folder")
+    spectra_dirs = _spectra_dirs(args)
     try:
         from reflectance.colour.display import display_space
 
         display_space(args.space)
         grid = wavelength_grid(*args.wavelengths)
         W, observer = audit_weights(grid, args.illuminant, args.observer)
-        material = resolve_material(args.material, grid, args.spectra_dir)
+        material = resolve_material(args.material, grid, spectra_dirs)
         table = audit_table(material, angles, W, methods=args.methods or tuple(AUDIT_METHODS),
                             space=args.space, average_range_nm=args.average_range,
                             observer=observer)

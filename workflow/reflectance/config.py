@@ -34,6 +34,8 @@ from pathlib import Path
 
 import yaml
 
+from reflectance.io.paths import package_data
+
 __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unknown_keys",
            "non_finite_numbers", "validate_schema", "check_config", "load_config",
            "wavelengths_from_config", "render_sizes", "render_memory_bytes"]
@@ -41,9 +43,9 @@ __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unk
 #: The JSON schema of config.yaml (also used by the Snakefile's ``validate()``).
 SCHEMA_PATH = Path(__file__).resolve().parents[1] / "schemas" / "config.schema.json"
 
-#: The JSON schema of scene files (reflectance.render.scene reads it too; named here so that
-#: checking keys needs no renderer).
-SCENE_SCHEMA_PATH = SCHEMA_PATH.parent / "scene.schema.yaml"
+#: The JSON schema of scene files, package data (reflectance.render.scene reads it too; named
+#: here so that checking keys needs no renderer).
+SCENE_SCHEMA_PATH = package_data("scene.schema.yaml")
 
 SOURCE = "config.yaml"
 

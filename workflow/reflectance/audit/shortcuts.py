@@ -118,18 +118,19 @@ def _looks_like_path(spec):
 
 
 def resolve_material(spec, wavelengths, spectra_dirs=()):
-    """A material by bundled name or from a CSV file, on the grid ``wavelengths``.
+    """A material by name or from a CSV file, on the grid ``wavelengths``.
 
     Parameters
     ----------
     spec : str
-        A material name, looked up in ``spectra_dirs`` (first) and then in the spectra that ship
-        with the package; or a path to a CSV file of any form
-        :func:`reflectance.optics.spectra.read_spectrum_csv` reads (detected from the header).
+        A material name, looked up as :func:`reflectance.optics.spectra.find_material` does (in
+        ``spectra_dirs``, then in the spectra that ship with the package); or a path to a CSV
+        file of any form :func:`reflectance.optics.spectra.read_spectrum_csv` reads (detected
+        from the header).
     wavelengths : array_like
         Grid in nm.
     spectra_dirs : sequence of str or Path
-        Further folders of ``<name>.csv`` files.
+        Further folders of ``<name>.csv`` files, searched first.
 
     Returns
     -------
@@ -138,31 +139,14 @@ def resolve_material(spec, wavelengths, spectra_dirs=()):
     Raises
     ------
     reflectance.optics.spectra.SpectraError
-        Unknown name (with every known name), unreadable or malformed file (file, row, forms),
-        or a grid outside the data.
+        Unknown name (with every known name), a folder that does not exist, unreadable or
+        malformed file (file, row, forms), or a grid outside the data.
     """
-    from reflectance.optics.spectra import (
-        SpectraError,
-        bundled_spectra_dir,
-        load_material,
-        material_from_table,
-        read_spectrum_csv,
-    )
+    from reflectance.optics.spectra import find_material, material_from_file
 
     if _looks_like_path(spec):
-        path = Path(spec)
-        if not path.is_file():
-            raise SpectraError(f"{spec}: no such file (a material is a bundled name or a CSV "
-                               f"file)")
-        return material_from_table(path.stem, read_spectrum_csv(path), wavelengths, source=path)
-    folders = [Path(d) for d in spectra_dirs] + [bundled_spectra_dir()]
-    for folder in folders:
-        if (folder / f"{spec}.csv").is_file():
-            return load_material(spec, wavelengths, spectra_dir=folder)
-    known = sorted({p.stem for folder in folders if folder.is_dir()
-                    for p in folder.glob("*.csv") if p.stem != "sources"})
-    raise SpectraError(f"unknown material {spec!r}; known: {', '.join(known) or 'none'} (or give "
-                       f"a CSV file)")
+        return material_from_file(spec, wavelengths)
+    return find_material(spec, wavelengths, spectra_dirs)
 
 
 def _read_spd(path, wavelengths):

@@ -1,8 +1,8 @@
 """Output: deterministic, atomic files.
 
 Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), progress (of long work, on
-standard error), figures (the shared matplotlib
-style and saving), paths (paths from data: inside the project; names that are names), cache (the
+standard error), figures (the shared matplotlib style and saving), paths (paths from data: inside
+the project or the scene file's folder; names that are names; the package's own data), cache (the
 small on-disk cache of values computed once: colour tables, meshes).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
@@ -36,6 +36,8 @@ _EXPORTS = {
     "Progress": "progress",
     "worker_main": "progress",
     "write_provenance": "provenance",
+    "package_data": "paths",
+    "file_inside": "paths",
     "project_file": "paths",
     "check_name": "paths",
 }

@@ -59,9 +59,14 @@ __all__ = [
     "sources_table",
     "write_sources_csv",
     "list_materials",
+    "materials_table",
     "load_material",
+    "find_material",
+    "material_from_file",
     "material_from_table",
     "bundled_spectra_dir",
+    "folder_list",
+    "spectra_folders",
     "WAVELENGTH_HEADERS",
     "WAVELENGTH_UNITS",
     "SPECTRUM_FORMS",
@@ -739,6 +744,41 @@ def list_materials(spectra_dir="spectra"):
     return table
 
 
+def materials_table(spectra_dirs=()):
+    """Every material a name finds (:func:`find_material`), in the order of the lookup: one row
+    per ``<name>.csv`` of :func:`spectra_folders`, a name in an earlier folder hiding the same
+    name later.
+
+    A row is the folder's ``sources.csv`` row for the material where it has one (the bundled
+    spectra do), else the material, its ``kind`` from the file's header (``measured`` n, k or
+    ``derived`` reflectance) and ``dataset`` ``file <path>``.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The columns of :data:`SOURCES_COLUMNS`.
+    """
+    import pandas as pd
+
+    rows, seen = [], set()
+    for folder in spectra_folders(spectra_dirs):
+        listed = {}
+        if (folder / "sources.csv").exists():
+            listed = {row["material"]: row for row in list_materials(folder).to_dict("records")}
+        for path in sorted(folder.glob("*.csv")):
+            name = path.stem
+            if name == "sources" or name in seen:
+                continue
+            seen.add(name)
+            if name in listed:
+                rows.append(listed[name])
+            else:
+                columns, _ = _read_spectrum(path)  # (and checked: a bad file is named now)
+                rows.append({"material": name, "dataset": f"file {path}",
+                             "kind": "derived" if "reflectance" in columns else "measured"})
+    return pd.DataFrame(rows, columns=list(SOURCES_COLUMNS)).fillna("")
+
+
 # --- loading onto a grid --------------------------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -811,7 +851,51 @@ def bundled_spectra_dir():
     In an installed package it holds a copy of the project's ``spectra/`` (package data); in a
     source checkout it is a link to ``spectra/`` itself.
     """
-    return Path(__file__).resolve().parent.parent / "data" / "spectra"
+    from reflectance.io.paths import package_data
+
+    return Path(package_data("spectra"))
+
+
+def folder_list(spectra_dirs):
+    """``spectra_dirs`` (None, one folder, or a sequence of folders) as a list of str.
+
+    Examples
+    --------
+    >>> folder_list(None), folder_list("mats"), folder_list([Path("a"), "b"])
+    ([], ['mats'], ['a', 'b'])
+    """
+    if spectra_dirs is None:
+        return []
+    if isinstance(spectra_dirs, (str, Path)):
+        return [str(spectra_dirs)]
+    return [str(d) for d in spectra_dirs]
+
+
+def spectra_folders(spectra_dirs=()):
+    """The folders a material name is looked up in: ``spectra_dirs`` in order, then the bundled
+    spectra (:func:`bundled_spectra_dir`).
+
+    Parameters
+    ----------
+    spectra_dirs : None, str or Path or sequence of them
+        The user's folders of ``<name>.csv`` files (and optionally a ``sources.csv``), searched
+        first (:func:`folder_list`).
+
+    Returns
+    -------
+    list of Path
+
+    Raises
+    ------
+    SpectraError
+        A folder of ``spectra_dirs`` that does not exist (a mistyped folder would otherwise hide
+        itself behind the bundled spectra).
+    """
+    folders = [Path(d) for d in folder_list(spectra_dirs)]
+    for folder in folders:
+        if not folder.is_dir():
+            raise SpectraError(f"no such folder {str(folder)!r}")
+    return folders + [bundled_spectra_dir()]
 
 
 def _known_materials(spectra_dir):
@@ -889,6 +973,9 @@ def material_from_table(name, table, wavelengths, source=None):
 def load_material(name, wavelengths, spectra_dir="spectra"):
     """Read ``spectra_dir/<name>.csv`` and interpolate it linearly onto ``wavelengths``.
 
+    That one folder only (the workflow's own ``spectra/``); :func:`find_material` looks a name up
+    in the user's folders and then in the bundled spectra.
+
     Parameters
     ----------
     name : str
@@ -908,19 +995,92 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
         Unknown material (lists the known ones), malformed CSV (file and row), or a grid that
         leaves the data range (material, file, both ranges).
     """
+    return material_from_file(_material_path(name, [Path(spectra_dir)]), wavelengths, name)
+
+
+def find_material(name, wavelengths, spectra_dirs=()):
+    """The material ``name`` from the first folder of :func:`spectra_folders` that has
+    ``<name>.csv`` (the user's ``spectra_dirs`` in order, then the bundled spectra), on the grid.
+
+    The one lookup of a material name: the command line (``--spectra-dir``, repeatable) and
+    scenes (:func:`reflectance.render.scene.scene_from_dict`) use it.
+
+    Parameters
+    ----------
+    name : str
+        Material name (a file stem, no path).
+    wavelengths : array_like
+        1-D grid in nm, inside the data's range.
+    spectra_dirs : str or Path or sequence of them
+        Folders searched before the bundled spectra.
+
+    Returns
+    -------
+    Material
+
+    Raises
+    ------
+    SpectraError
+        A folder that does not exist; a name that is not a name, or that no folder has (every
+        folder searched and every known name listed); as :func:`load_material` for the file.
+
+    Examples
+    --------
+    >>> copper = find_material("Cu", wavelength_grid(400, 700, 100))
+    >>> copper.kind, copper.F0.shape
+    ('measured', (4,))
+    """
+    return material_from_file(_material_path(name, spectra_folders(spectra_dirs)), wavelengths,
+                              name)
+
+
+def _material_path(name, folders):
+    """``<name>.csv`` of the first of ``folders`` that has it; SpectraError naming the folders
+    and every known name otherwise."""
     from reflectance.io.paths import check_name
 
-    spectra_dir = Path(spectra_dir)
+    def known():
+        return ", ".join(sorted({m for folder in folders for m in _known_materials(folder)})) \
+            or "none"
+
+    bundled = bundled_spectra_dir()
+    searched = ", ".join("the bundled spectra" if folder == bundled else str(folder)
+                         for folder in folders)
+
     try:
-        check_name(name)  # a material is a name: ../x/Cu must not read outside spectra_dir
+        check_name(name)  # a material is a name: ../x/Cu must not read outside the folders
     except ValueError as err:
-        raise SpectraError(f"{err}; known: {', '.join(_known_materials(spectra_dir)) or 'none'}") \
-            from None
-    path = spectra_dir / f"{name}.csv"
+        raise SpectraError(f"{err}; known: {known()}") from None
+    for folder in folders:
+        if (folder / f"{name}.csv").is_file():
+            return folder / f"{name}.csv"
+    listed = (" (listed in sources.csv, but its CSV is missing)"
+              if any(name in _known_materials(folder) for folder in folders) else "")
+    raise SpectraError(f"unknown material {name!r} in {searched}{listed}; known: {known()}")
+
+
+def material_from_file(path, wavelengths, name=None):
+    """A :class:`Material` from one spectrum CSV of any form :func:`read_spectrum_csv` reads
+    (detected from its header), interpolated linearly onto ``wavelengths``.
+
+    Parameters
+    ----------
+    path : str or Path
+    wavelengths : array_like
+        1-D grid in nm, inside the data's range.
+    name : str, optional
+        The material's name (default: the file's stem).
+
+    Raises
+    ------
+    SpectraError
+        A missing or unreadable file, a malformed one (file, row, the forms expected), or a grid
+        that leaves the data range.
+    """
+    path = Path(path)
     if not path.is_file():
-        known = _known_materials(spectra_dir)
-        listed = " (listed in sources.csv, but its CSV is missing)" if name in known else ""
-        raise SpectraError(f"unknown material {name!r} in {spectra_dir}{listed}; known: "
-                           f"{', '.join(known) or 'none'}")
+        raise SpectraError(f"{path}: no such file" if not path.exists() else
+                           f"{path}: not a file")
     columns, values = _read_spectrum(path)
-    return material_from_table(name, dict(zip(columns, values.T)), wavelengths, source=path)
+    return material_from_table(name or path.stem, dict(zip(columns, values.T)), wavelengths,
+                               source=path)

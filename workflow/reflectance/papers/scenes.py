@@ -46,6 +46,7 @@ import yaml
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.geometry.vectors import unit_vector
+from reflectance.io.paths import package_data
 
 __all__ = [
     "CONFIG_PATH",
@@ -71,8 +72,10 @@ __all__ = [
     "spheres_scene_article",
 ]
 
-CONFIG_PATH = Path(__file__).resolve().parents[3] / "config.yaml"
-"""The project's config.yaml."""
+CONFIG_PATH = package_data("config.yaml")
+"""The project's config.yaml as the package ships it (package data; in a source checkout a link to
+the project's own), so that :func:`fig6_scene_CookTorrance1982` (``reflectance bench``'s scene)
+works from an installed wheel; the spectra beside it are the bundled ones."""
 
 PHONG_SPECULAR_READINGS = {
     "as_printed": "Phong's s p_s with Blinn's p_s: the highlight of a white mirror (F = 1)",
@@ -97,7 +100,7 @@ def display_from_colour(colour, illuminant=True):
 
 def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, observer=None,
                    spectral=None, ambient=None, display=None):
-    """A scene mapping (workflow/schemas/scene.schema.yaml); keys left None take the defaults.
+    """A scene mapping (reflectance/data/scene.schema.yaml); keys left None take the defaults.
 
     Parameters
     ----------
@@ -173,9 +176,10 @@ def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, sp
     reading : str
         A key of ``fig6.ambient_readings``.
     config : dict or str or Path, optional
-        The configuration or its file (default :data:`CONFIG_PATH`).
+        The configuration or its file (default :data:`CONFIG_PATH`, the package's).
     spectra_dir : str, optional
-        Default: ``spectra`` beside config.yaml.
+        Default: ``spectra`` beside the config file (for the package's own, the bundled
+        spectra); for a dict, ``spectra``.
     """
     if not isinstance(config, dict):
         path = Path(config or CONFIG_PATH)

@@ -62,9 +62,10 @@ def _peak_MiB():
 
 
 def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersample=None,
-                     spectral=None, wavelengths=None, adaptive=None):
+                     spectral=None, wavelengths=None, adaptive=None, base_dir="."):
     """The benchmarked scene: a scene file's path, or a scene document (dict, with its
-    ``source`` description under the key ``"_source"`` if any), with overrides as
+    ``source`` description under the key ``"_source"`` if any; its mesh paths and material
+    files relative to ``base_dir``), with overrides as
     :func:`reflectance.render.scene.load_scene` takes them; ``adaptive`` (True or False)
     switches the camera's adaptive supersampling on or off (None: the scene's)."""
     import copy
@@ -90,7 +91,7 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
         doc["wavelengths"] = dict(wavelengths)
     if adaptive is not None:
         doc["camera"].setdefault("adaptive", {})["enabled"] = bool(adaptive)
-    return scene_from_dict(doc, source=source, spectra_dir=spectra_dir)
+    return scene_from_dict(doc, source=source, base_dir=base_dir, spectra_dir=spectra_dir)
 
 
 def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
@@ -224,7 +225,9 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
     pixel; ours at ``reference_supersample``, or :data:`REFERENCE_SUPERSAMPLE` where that is
     0; our own ladder at the supersamplings ``crosscheck_supersamples``)."""
-    spectra_dir = None if spectra_dir is None else str(spectra_dir)
+    from reflectance.optics.spectra import folder_list
+
+    spectra_dir = folder_list(spectra_dir)  # (JSON for the workers)
     results = []
     for i, size in enumerate(sizes):
         where = f"size {size} ({i + 1}/{len(sizes)})"

@@ -52,6 +52,7 @@ References
 
 from __future__ import annotations
 
+import shutil
 import tempfile
 import time
 from importlib.util import find_spec
@@ -59,6 +60,7 @@ from pathlib import Path
 
 import numpy as np
 
+from reflectance.optics.spectra import folder_list
 from reflectance.render.bench import CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES
 
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
@@ -430,7 +432,8 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     Ours is ``python -m reflectance render SCENE.yaml -o OUT.exr --quiet`` on ``document`` (a
     scene document as :func:`crosscheck_scene` gives it; table shading, ``spectra_dir`` and
     mesh paths made absolute against ``base_dir``) at ``size`` x ``size`` pixels with
-    ``supersample`` x ``supersample`` samples, as the in-process rungs; Mitsuba's is
+    ``supersample`` x ``supersample`` samples (its material files copied beside it), as the
+    in-process rungs; Mitsuba's is
     :mod:`reflectance.render.mitsuba_command` on ``scene`` (exported by
     :func:`scene_to_mitsuba`) at ``spp`` samples per pixel with ``variant``. Beside them, the
     floor of any render command of ours, ``python -c FLOOR_COMMAND`` (start-up and the imports it cannot
@@ -461,11 +464,18 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     with tempfile.TemporaryDirectory(prefix="reflectance-commands-") as folder:
         folder = Path(folder)
         (folder / "scene.yaml").write_text(yaml.safe_dump(ours_doc, sort_keys=False))
+        # a material file must stay inside the scene file's folder: copied there, as it lies
+        for obj in ours_doc.get("objects", []):
+            for material in [obj.get("material", {}), *obj.get("parts", {}).values()]:
+                if "file" in material:
+                    (folder / material["file"]).parent.mkdir(parents=True, exist_ok=True)
+                    shutil.copyfile(Path(base_dir or ".") / material["file"],
+                                    folder / material["file"])
         save_scene(scene_to_mitsuba(scene, folder, spp=spp), scene.camera, folder / "scene.json")
         ours = [sys.executable, "-m", "reflectance", "render", str(folder / "scene.yaml"),
                 "-o", str(folder / "ours.exr"), "--quiet"]
-        if spectra_dir is not None:
-            ours += ["--spectra-dir", str(Path(spectra_dir).resolve())]
+        for extra in folder_list(spectra_dir):
+            ours += ["--spectra-dir", str(Path(extra).resolve())]
         commands = {
             "ours": ours,
             "mitsuba": [sys.executable, "-m", "reflectance.render.mitsuba_command",
@@ -533,7 +543,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
 
     def load(n):
         return load_bench_scene(doc, spectra_dir=spectra_dir, width=size, height=size,
-                                supersample=n, spectral="table")
+                                supersample=n, spectral="table", base_dir=base_dir or ".")
 
     def timed(n):  # median seconds of runs loads and renders at n x n; the last image, scene
         times = []
@@ -714,7 +724,7 @@ def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
            "reference_supersample": reference_supersample, "reference_spp": int(reference_spp),
            "ladder_spp": [int(n) for n in ladder_spp],
            "our_supersamples": [int(n) for n in our_supersamples],
-           "spectra_dir": None if spectra_dir is None else str(spectra_dir)}
+           "spectra_dir": folder_list(spectra_dir)}
     return run_worker("reflectance.render.crosscheck", job, progress,
                       failure=f"cross-check at size {size} failed")
 

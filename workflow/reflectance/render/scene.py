@@ -1,12 +1,17 @@
-"""Scene files: read, validate against ``workflow/schemas/scene.schema.yaml``, resolve.
+"""Scene files: read, validate against the scene schema (``reflectance/data/scene.schema.yaml``,
+package data), resolve.
 
 A scene (YAML) names a camera, objects (a geometry and a material each), lights, the ambient
 term and the display; the schema documents every key and its default. :func:`load_scene` checks
 everything before anything is rendered: the schema (every violation, by key), then what a schema
-cannot say (materials in ``spectra/``, illuminant names, ``s + d = 1`` for Cook & Torrance, the
+cannot say (materials that exist, illuminant names, ``s + d = 1`` for Cook & Torrance, the
 roughness a distribution needs, geometry the builders accept). Each error names the file and the
 key, e.g. ``scene.yaml: objects[0].material.s: ...``. The result is a :class:`Scene` with meshes
 built and spectra resolved onto the wavelength grid, ready for :func:`reflectance.render.pipeline.render`.
+
+A material ``name`` is looked up as :func:`reflectance.optics.spectra.find_material` does: in the
+caller's folders (``--spectra-dir``), then the scene's ``spectra_dir``, then the spectra that ship
+with the package; a material ``file`` is read from beside the scene file.
 """
 
 from __future__ import annotations
@@ -28,11 +33,13 @@ from reflectance.optics.microfacet import ROUGHNESS_PARAMETERS
 from reflectance.render.shading import (SHADING_MODELS, Ambient, Light, RoughnessTexture,
                                  ShadingMaterial, emission_XYZ)
 from reflectance.geometry.texture import texture
-from reflectance.optics.spectra import Material, load_material, wavelength_grid
+from reflectance.optics.spectra import (Material, find_material, folder_list, material_from_file,
+                                        spectra_folders, wavelength_grid)
 from reflectance.render.adaptive import Refinement
 from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
+from reflectance.io.paths import file_inside, package_data
 
 __all__ = [
     "SceneError",
@@ -49,8 +56,8 @@ __all__ = [
     "constant_index_material",
 ]
 
-SCENE_SCHEMA_PATH = Path(__file__).resolve().parents[2] / "schemas" / "scene.schema.yaml"
-"""The JSON schema of scene files."""
+SCENE_SCHEMA_PATH = package_data("scene.schema.yaml")
+"""The JSON schema of scene files (package data: the workflow's config check reads it too)."""
 
 
 class SceneError(ValueError):
@@ -207,7 +214,12 @@ class _Checker:
         try:
             return function(*args, **kwargs)
         except (ValueError, TypeError, FileNotFoundError) as err:
-            self.add(path, str(err).strip("'\""))
+            text = str(err)
+            # a message given as a quoted repr loses its quotes; one that merely starts or ends
+            # with a quoted path ("'../x.csv' leaves ...", "no such folder 'x'") keeps them
+            if len(text) > 1 and text[0] == text[-1] and text[0] in "'\"":
+                text = text[1:-1]
+            self.add(path, text)
             return None
 
     def raise_if_any(self):
@@ -221,10 +233,25 @@ def _illuminant(check, path, name):
     return None
 
 
-def _spectral_material(check, path, name, grid, spectra_dir, cache):
+def _spectral_material(check, path, name, grid, spectra_dirs, cache):
     if name not in cache:
-        cache[name] = check.run(path, load_material, name, grid, spectra_dir)
+        cache[name] = check.run(path, find_material, name, grid, spectra_dirs)
     return cache[name]
+
+
+def _file_material(check, path, value, grid, base, cache):
+    """The material of a scene's ``file``: a CSV beside the scene file (inside its folder)."""
+    relative = check.run(path, file_inside, value, base, "the scene file's folder")
+    if relative is None:
+        return None
+    key = ("file", str((Path(base) / relative).resolve()))  # a tuple: never a material's name
+    if key not in cache:
+        cache[key] = check.run(path, material_from_file, Path(base) / relative, grid)
+    return cache[key]
+
+
+#: The keys that give a material's specular spectrum (one at most).
+_SPECULAR_KEYS = ("name", "file", "index")
 
 
 def index_label(index):
@@ -247,8 +274,10 @@ def constant_index_material(n, k, grid):
     return Material(index_label({"n": n, "k": k}), "measured", grid, n_, k_, F0)
 
 
-def _material(check, path, m, grid, spectra_dir, cache, observer):
-    """A ShadingMaterial from a validated material mapping (None if something is wrong)."""
+def _material(check, path, m, grid, spectra_dirs, base, cache, observer):
+    """A ShadingMaterial from a validated material mapping (None if something is wrong);
+    ``spectra_dirs`` the folders names are looked up in before the bundled spectra, ``base`` the
+    scene file's folder."""
     model = m["model"]
     spec = SHADING_MODELS[model]
     s, d = m.get("s"), m.get("d")
@@ -264,23 +293,28 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
         check.add(path + ["s"], "a Lambert material has no specular part: s must be 0")
     ok = True
 
-    # the specular material: a material of spectra/ (name) or a constant complex index (index)
+    # the specular material: a named material (name), the scene's own file (file) or a constant
+    # complex index (index)
     specular = None
-    if "name" in m and "index" in m:
-        check.add(path, "give either 'name' (a material of spectra/) or 'index' (a constant "
-                        "n, k), not both")
+    given = [key for key in _SPECULAR_KEYS if key in m]
+    if len(given) > 1:
+        check.add(path, f"give one of 'name' (a material), 'file' (its CSV file) or 'index' "
+                        f"(a constant n, k), not {' and '.join(map(repr, given))}")
         ok = False
     elif "index" in m:
         specular = constant_index_material(m["index"]["n"], m["index"]["k"], grid)
     elif "name" in m:
-        specular = _spectral_material(check, path + ["name"], m["name"], grid, spectra_dir,
+        specular = _spectral_material(check, path + ["name"], m["name"], grid, spectra_dirs,
                                       cache)
+        ok &= specular is not None
+    elif "file" in m:
+        specular = _file_material(check, path + ["file"], m["file"], grid, base, cache)
         ok &= specular is not None
     n = k = None
     if spec["fresnel"] and s > 0:
-        if "name" not in m and "index" not in m:
+        if not given:
             check.add(path, f"model {model} with s > 0 needs 'name' (the material whose n, k "
-                            "give F) or 'index'")
+                            "give F), 'file' or 'index'")
             ok = False
         elif specular is not None:
             n, k = specular.n, specular.k
@@ -294,16 +328,16 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
     else:
         if "diffuse_material" in m:
             found = _spectral_material(check, path + ["diffuse_material"], m["diffuse_material"],
-                                       grid, spectra_dir, cache)
+                                       grid, spectra_dirs, cache)
         else:
-            found = specular  # the specular material's own F0 (name or index)
+            found = specular  # the specular material's own F0 (name, file or index)
         if found is not None:
             albedo = found.F0  # Cook & Torrance 1982, Fig. 7: R_d = F0 / pi
         elif "diffuse_material" in m:
             ok = False
-        elif d > 0 and "name" not in m:
-            check.add(path, "a diffuse part (d > 0) needs 'diffuse_material', 'albedo', 'name' "
-                            "or 'index'")
+        elif d > 0 and not given:
+            check.add(path, "a diffuse part (d > 0) needs 'diffuse_material', 'albedo', 'name', "
+                            "'file' or 'index'")
             ok = False
 
     distribution, roughness, lobes, rough_texture = m["distribution"], None, None, None
@@ -384,6 +418,7 @@ def _material(check, path, m, grid, spectra_dir, cache, observer):
                      roughness=roughness, lobes=lobes, texture=rough_texture,
                      shadowing=m["shadowing"], emission=emission,
                      name=m.get("name", index_label(m["index"]) if "index" in m
+                                else Path(m["file"]).stem if "file" in m
                                 else m.get("diffuse_material", "")))
 
 
@@ -449,9 +484,10 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     source : str
         Name used in error messages (the file).
     base_dir : str or Path
-        Folder that mesh paths are relative to.
-    spectra_dir : str or Path, optional
-        Overrides the scene's ``spectra_dir``.
+        Folder that mesh paths and material files are relative to (the scene file's).
+    spectra_dir : str or Path or sequence of them, optional
+        Folders of ``<name>.csv`` materials searched first (``--spectra-dir``), before the
+        scene's own ``spectra_dir`` and the bundled spectra.
 
     Raises
     ------
@@ -459,18 +495,20 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
         Listing every problem with its key.
     """
     doc = validate_scene(document, source)
-    if spectra_dir is not None:
-        doc["spectra_dir"] = str(spectra_dir)
     check = _Checker(source)
     w = doc["wavelengths"]
     grid = check.run(["wavelengths"], wavelength_grid, w["start_nm"], w["end_nm"], w["step_nm"])
     observer = doc["observer"]
     if check.run(["observer"], cmfs, observer) is None:
         observer = None
-    if not Path(doc["spectra_dir"]).is_dir():
-        check.add(["spectra_dir"], f"no such folder {doc['spectra_dir']!r} (run from the "
-                                   "project folder or pass --spectra-dir)")
+    given = folder_list(spectra_dir)
+    check.run(["spectra_dir"], spectra_folders, given)  # each folder given must exist
+    if "spectra_dir" in doc and not Path(doc["spectra_dir"]).is_dir():
+        check.add(["spectra_dir"], f"no such folder {doc['spectra_dir']!r} (relative to the "
+                                   "working directory: run from the folder it is in, or leave "
+                                   "the key out for the bundled spectra)")
     check.raise_if_any()
+    spectra_dirs = given + ([doc["spectra_dir"]] if "spectra_dir" in doc else [])
 
     c = doc["camera"]
     camera = check.run(["camera"], Camera, c["position"], c["look_at"], c["up"], c["fov_deg"],
@@ -514,8 +552,8 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     cache, objects = {}, []
     for i, obj in enumerate(doc["objects"]):
         path = ["objects", i]
-        material = _material(check, path + ["material"], obj["material"], grid,
-                             doc["spectra_dir"], cache, observer)
+        material = _material(check, path + ["material"], obj["material"], grid, spectra_dirs,
+                             base_dir, cache, observer)
         names = GEOMETRY_PARTS.get(obj["geometry"]["type"], {})
         parts, ok = {}, material is not None
         for part, spec in obj.get("parts", {}).items():
@@ -525,7 +563,7 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
                 ok = False
                 continue
             parts[names[part]] = _material(check, path + ["parts", part], spec, grid,
-                                           doc["spectra_dir"], cache, observer)
+                                           spectra_dirs, base_dir, cache, observer)
             ok &= parts[names[part]] is not None
         mesh = _geometry(check, path, obj["geometry"], obj.get("transform"), base_dir)
         if ok and mesh is not None:
@@ -547,8 +585,8 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     ----------
     path : str or Path
         YAML scene file.
-    spectra_dir : str or Path, optional
-        Overrides the scene's ``spectra_dir``.
+    spectra_dir : str or Path or sequence of them, optional
+        Folders searched first for material names (see :func:`scene_from_dict`).
     width, height, supersample : int, optional
         Override the camera's.
     spectral : str, optional

@@ -42,7 +42,7 @@ class FigureScene(NamedTuple):
     """One scene a figure renders.
 
     ``name`` names the render in messages (its file's name where it is written); ``source`` is the config key it comes
-    from, for messages; ``document`` is the scene mapping (workflow/schemas/scene.schema.yaml);
+    from, for messages; ``document`` is the scene mapping (reflectance/data/scene.schema.yaml);
     ``file`` is the ``.scene.yaml`` among the figure's outputs that the job writes it to, or None
     (a close-up, a frame of the sweep or a departure's printed twin is only rendered); ``tags``
     carry what the job needs to place it (panel, light, model, ...).
