@@ -54,6 +54,14 @@ def test_a_figure_is_handed_only_its_declared_keys():
         figure("ct82_fig7").scenes(broken, "spectra")
 
 
+def test_the_close_ups_light_must_be_a_light():
+    params = params_of(figure("blinn77_fig7"), CONFIG)
+    params["fig"]["rim_closeup"]["light"] = "back"
+    with pytest.raises(ValueError, match=r"fig7\.rim_closeup\.light: 'back' is not a light; "
+                                         r"known: edge, front"):
+        figure("blinn77_fig7").scenes(params)
+
+
 def test_select_names_a_missing_key():
     with pytest.raises(KeyError, match="figures.cook_torrance_1982.fig6.nothing"):
         select({"x": ("figures.cook_torrance_1982.fig6.nothing",)}, CONFIG)
@@ -94,7 +102,7 @@ EDITS = [
     ("figures.cook_torrance_1982.fig6.panels.a.m", 0.25),
     ("figures.cook_torrance_1982.fig6.camera.fov_deg", 26),
     ("figures.cook_torrance_1982.fig6.published.exposure.highlight_knee", 0.7),
-    ("figures.cook_torrance_1982.fig7.vase_exposure.Obsidian", 2.0),
+    ("figures.cook_torrance_1982.fig7.vase_exposure.Obsidian", 2.5),
     ("figures.cook_torrance_1982.fig8.light.intensity", 0.9),
     ("figures.blinn_1977.fig7.panels.b.c3", 0.4),
     ("figures.blinn_1977.fig7.lights.front.angle_deg", 20),
@@ -123,8 +131,9 @@ def _edit(config, key, value):
     node[parts[-1]] = value
 
 
-def test_every_edit_is_read_by_some_figure():
-    for key, _ in EDITS:
+def test_every_edit_changes_a_key_some_figure_reads():
+    for key, value in EDITS:
+        _edit(copy.deepcopy(CONFIG), key, value)  # the key exists and the value is new
         assert expected_plan(key, CONFIG) - AGGREGATING, key
 
 

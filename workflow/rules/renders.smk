@@ -16,7 +16,9 @@ rule ct82_fig6:
     input:
         spectra=[spectrum_csv(name) for name in CT82_FIG6_DEF.spectra(CT82_FIG6_PARAMS)],
     output:
-        **ct82_reported(CT82_FIG6_DEF, CT82_FIG6_PARAMS, CT82_FIG6_OUTPUTS, "fig6", "Fig. 6"),
+        **ct82_reported(
+            CT82_FIG6_DEF, CT82_FIG6_PARAMS, CT82_FIG6_OUTPUTS, "fig6", subcategory="Fig. 6"
+        ),
     log:
         "logs/cook_torrance_1982/fig6.log",
     benchmark:
@@ -120,7 +122,9 @@ rule ct82_fig7:
         spectra=[spectrum_csv(name) for name in CT82_FIG7_DEF.spectra(CT82_FIG7_PARAMS)],
         sources="spectra/sources.csv",
     output:
-        **ct82_reported(CT82_FIG7_DEF, CT82_FIG7_PARAMS, CT82_FIG7_OUTPUTS, "fig7", "Fig. 7"),
+        **ct82_reported(
+            CT82_FIG7_DEF, CT82_FIG7_PARAMS, CT82_FIG7_OUTPUTS, "fig7", subcategory="Fig. 7"
+        ),
     log:
         "logs/cook_torrance_1982/fig7.log",
     benchmark:
