@@ -180,8 +180,8 @@ def test_exr_display_RGB_is_what_the_png_shows(tmp_path):
 def test_rgb_render_of_a_flat_material_equals_the_spectral_render():
     """The whole render path: a flat metal with spectral Schlick F renders with dE2000 0 as the
     RGB renderer (one visibility pass, Fig. 6's lights and exposure, a tiny image)."""
-    from reflectance.render.rgb import (dE2000_map, display_exposure,
-                                        render_spectral_and_rgb)
+    from reflectance.colour.difference import dE2000_map
+    from reflectance.render.rgb import display_exposure, render_spectral_and_rgb
     from reflectance.render.scene import scene_from_dict
 
     document = _tiny_vase({"index": {"n": 0.4, "k": 3.0}, "s": 1.0, "d": 0.0, "m": 0.3,

@@ -24,7 +24,8 @@ import pytest
 
 from reflectance.render.crosscheck import (equal_error_seconds, mitsuba_available,
                                            render_mitsuba, scene_to_mitsuba)
-from reflectance.render.pipeline import pixel_difference_CIEDE2000, render
+from reflectance.colour.difference import pixel_difference_CIEDE2000
+from reflectance.render.pipeline import render
 from reflectance.render.scene import scene_from_dict
 
 

@@ -6,8 +6,8 @@ import pytest
 
 from reflectance.cli import main
 from reflectance.io.images import read_exr
-from reflectance.render.pipeline import (display_image, image_difference_CIEDE2000, render,
-                                         render_to_files, write_render)
+from reflectance.colour.difference import image_difference_CIEDE2000
+from reflectance.render.pipeline import display_image, render, render_to_files, write_render
 from reflectance.render.scene import load_scene, scene_from_dict
 from reflectance.render.shading import emission_XYZ
 

@@ -8,9 +8,9 @@ import numpy as np
 import pandas as pd
 from matplotlib.colors import BoundaryNorm
 
-from reflectance.render.rgb import (dE2000_map, dE2000_statistics, display_exposure,
-                                          render_spectral_and_rgb)
+from reflectance.render.rgb import display_exposure, render_spectral_and_rgb
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.difference import dE2000_map, dE2000_statistics
 from reflectance.colour.display import display_tag, XYZ_to_display, XYZ_to_linear_RGB
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig

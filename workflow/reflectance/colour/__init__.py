@@ -1,8 +1,9 @@
 """Colour: CIE colorimetry and display encoding, knowing nothing of optics or rendering.
 
-Modules: appearance (CAM16 and CAM16-UCS, numpy only); colorimetry (CMFs, illuminants, tristimulus weights, xy, CIELAB, dominant wavelength),
-difference (CIEDE2000), display (RGB spaces, Cook & Torrance's exposure, gamut clipping, transfer
-functions), tables (colour-science's tables, computed by colour-science once and cached, so that
+Modules: appearance (CAM16 and CAM16-UCS, numpy only); colorimetry (CMFs, illuminants,
+tristimulus weights, xy, CIELAB, dominant wavelength), difference (CIEDE2000, and its maps and
+statistics over two images), display (RGB spaces, Cook & Torrance's exposure, gamut clipping,
+transfer functions), tables (colour-science's tables, computed by colour-science once and cached, so that
 the colour path reads them with numpy only).
 
 Public names are loaded on first use (``from reflectance.colour import name``), so importing
@@ -32,6 +33,11 @@ _EXPORTS = {
     "XYZ_to_Lab": "colorimetry",
     "dominant_wavelength": "colorimetry",
     "delta_E_CIE2000": "difference",
+    "dE2000_map": "difference",
+    "dE2000_statistics": "difference",
+    "pixel_difference_CIEDE2000": "difference",
+    "difference_statistics_CIEDE2000": "difference",
+    "image_difference_CIEDE2000": "difference",
     "DISPLAY_SPACES": "display",
     "CHROMATIC_ADAPTATION_TRANSFORM": "display",
     "DisplaySpace": "display",

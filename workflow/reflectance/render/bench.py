@@ -42,7 +42,8 @@ import time
 
 from reflectance.io.progress import run_worker, worker_main
 
-__all__ = ["load_bench_scene", "bench_size", "run_bench", "format_report", "crosscheck_status"]
+__all__ = ["load_bench_scene", "scene_difference", "bench_size", "run_bench", "format_report",
+           "crosscheck_status"]
 
 #: default samples per pixel side of the converged reference (twice the adaptive refinement's
 #: default 8, so that a refined pixel is not compared with itself)
@@ -59,6 +60,17 @@ CROSSCHECK_SUPERSAMPLES = (1, 2)
 
 def _peak_MiB():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
+
+
+def scene_difference(XYZ, XYZ_reference, scene):
+    """(mean, 95th percentile) CIEDE2000 of two renders of ``scene`` on the reference's
+    Cook & Torrance exposure, in the scene's display illuminant, observer and wavelengths
+    (:func:`reflectance.colour.difference.difference_statistics_CIEDE2000`); (0, 0) when no
+    pixel is lit."""
+    from reflectance.colour.difference import difference_statistics_CIEDE2000
+
+    return difference_statistics_CIEDE2000(XYZ, XYZ_reference, scene.display.illuminant,
+                                           scene.observer, scene.wavelengths)
 
 
 def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersample=None,
@@ -104,9 +116,8 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     import numpy as np
 
     from reflectance.colour.colorimetry import tristimulus_weights
-    from reflectance.render.pipeline import (difference_statistics_CIEDE2000,
-                                             image_difference_CIEDE2000, render, shade_samples,
-                                             tiles, trace)
+    from reflectance.colour.difference import image_difference_CIEDE2000
+    from reflectance.render.pipeline import render, shade_samples, tiles, trace
     from reflectance.render.shading import fresnel_XYZ_table
 
     progress = progress or (lambda phase: None)
@@ -145,7 +156,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
         reference = render(load_bench_scene(document, spectra_dir=spectra_dir, width=size,
                                             height=size, supersample=reference_supersample,
                                             spectral="table", adaptive=False)).XYZ
-        mean, p95 = difference_statistics_CIEDE2000(result.XYZ, reference, scene)
+        mean, p95 = scene_difference(result.XYZ, reference, scene)
         out.update(reference_supersample=reference_supersample,
                    reference_s=time.perf_counter() - t1,
                    dE_reference_mean=mean, dE_reference_p95=p95)

@@ -425,7 +425,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     """The two renderers' whole commands, each in a fresh process (Python's start-up, imports,
     the scene's loading, the render, the EXR written): wall seconds (median of ``runs``, the
     two run alternately) and the CIEDE2000 (mean, p95) of each image against ``reference``
-    (XYZ; :func:`reflectance.render.pipeline.difference_statistics_CIEDE2000` over ``scene``).
+    (XYZ; :func:`reflectance.render.bench.scene_difference` over ``scene``).
 
     Ours is ``python -m reflectance render SCENE.yaml -o OUT.exr --quiet`` on ``document`` (a
     scene document as :func:`crosscheck_scene` gives it; table shading, ``spectra_dir`` and
@@ -447,7 +447,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
 
     from reflectance.io.images import read_exr
     from reflectance.render.mitsuba_command import save_scene
-    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
+    from reflectance.render.bench import scene_difference as errors
 
     progress = progress or (lambda phase: None)
     ours_doc = copy.deepcopy(document)
@@ -521,7 +521,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     import statistics
 
     from reflectance.render.bench import load_bench_scene
-    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
+    from reflectance.render.bench import scene_difference as errors
     from reflectance.render.pipeline import render
 
     progress = progress or (lambda phase: None)

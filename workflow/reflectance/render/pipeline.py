@@ -56,7 +56,6 @@ __all__ = [
     "trace",
     "trace_key",
     "trace_once",
-    "difference_statistics_CIEDE2000",
     "tiles",
     "shade_samples",
     "render",
@@ -67,8 +66,6 @@ __all__ = [
     "write_render",
     "render_warnings",
     "BACK_FRACTION_WARNING",
-    "image_difference_CIEDE2000",
-    "pixel_difference_CIEDE2000",
 ]
 
 COMPONENTS = ("ambient", "diffuse", "specular", "emission")
@@ -626,47 +623,6 @@ def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=No
                           scene)
     write_render(result, rgb_exr_path=rgb_exr_path,
                  exposure=float(header["display_exposure_scale"]))
-
-
-def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
-    """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
-    reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
-    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, XYZ_to_Lab, white_XYZ
-    from reflectance.colour.difference import delta_E_CIE2000
-
-    observer = observer or OBSERVER_DEFAULT
-    _, scale = expose_CookTorrance1982(XYZ_reference, "sRGB", illuminant, observer, wavelengths)
-    white = white_XYZ(illuminant, observer, wavelengths)
-    xy = white[:2] / white.sum()
-    lab = [XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
-    dE = delta_E_CIE2000(lab[0], lab[1])
-    lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
-    return dE[lit]
-
-
-def difference_statistics_CIEDE2000(XYZ, XYZ_reference, scene):
-    """(mean, 95th percentile) of :func:`pixel_difference_CIEDE2000` of two renders of ``scene``
-    (its display illuminant, observer and wavelengths); (0, 0) when no pixel is lit."""
-    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, scene.display.illuminant, scene.observer,
-                                    scene.wavelengths)
-    if not len(dE):
-        return 0.0, 0.0
-    return float(dE.mean()), float(np.percentile(dE, 95))
-
-
-def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
-    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
-
-    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
-    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
-    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
-    """
-    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer, wavelengths)
-    if not len(dE):
-        return 0.0, 0.0
-    return float(dE.mean()), float(dE.max())
 
 
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
