@@ -80,12 +80,14 @@ def test_display_in_bands_is_the_same_image(root, monkeypatch, key):
     computed band by band, equal the one-call result exactly."""
     import dataclasses
 
+    import reflectance.colour.exposure as exposure
+
     scene = sphere_on_plane(root / "spectra")
     if key is not None:
         scene = dataclasses.replace(scene, display=dataclasses.replace(scene.display, key=key))
     result = render(scene)
     whole, scale = pipeline.display_image(result)
-    monkeypatch.setattr(pipeline, "_DISPLAY_BAND_PIXELS", 200)  # 3 rows of 64 pixels
+    monkeypatch.setattr(exposure, "_BAND_PIXELS", 200)  # 3 rows of 64 pixels
     banded, banded_scale = pipeline.display_image(result)
     assert banded_scale == scale != 1.0
     np.testing.assert_array_equal(banded, whole)

@@ -22,8 +22,8 @@ drawn per band (over that band's samples, at the whole image's map size).
 
 :func:`write_render` writes the linear XYZ image as OpenEXR (the validated scene and the package
 versions in its header) and, optionally, the display PNG (Cook & Torrance exposure over the image,
-gamut clipping, transfer function: :mod:`reflectance.colour.display`). Everything is deterministic: the
-same scene gives byte-identical files.
+gamut clipping, transfer function: :mod:`reflectance.colour.exposure`). Everything is
+deterministic: the same scene gives byte-identical files.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from reflectance.colour.display import expose_CookTorrance1982, expose_key
+from reflectance.colour.exposure import exposure_scale, image_display_RGB
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
@@ -337,7 +337,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         if adaptive:
             t1 = time.perf_counter()
             white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
-            mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
+            mask = refine_mask(difference, silhouette, image, exposure_scale(image, *_shown(scene)),
                                refinement.threshold, white)
             del difference, silhouette
             refined = _refine(scene, tools, mask, image, parts, spectral, components,
@@ -381,19 +381,6 @@ def _refine(scene, tools, mask, image, parts, spectral, components, fresnel_tabl
         timings["shadows"] += t["shadows"]
         timings["shading"] += time.perf_counter() - t1
     return refined
-
-
-def _display_scale(scene, XYZ):
-    """The exposure factor :func:`display_linear_RGB` will apply to the image ``XYZ`` of the
-    scene (automatic exposure; 1 without)."""
-    d = scene.display
-    if not d.expose:
-        return 1.0
-    if d.white is not None:
-        return d.white / white_card_luminance(scene.lights)
-    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
-              "wavelengths": scene.wavelengths}
-    return _exposure_scale(XYZ, d, max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1])), kwargs)
 
 
 class _Counts:
@@ -453,50 +440,25 @@ def render_warnings(result):
     return warnings
 
 
+def _shown(scene):
+    """The scene's display as :mod:`reflectance.colour.exposure` takes it: (settings, observer,
+    wavelengths, the white card's luminance where the display is metered on one)."""
+    d = scene.display
+    white = white_card_luminance(scene.lights) if d.expose and d.white is not None else None
+    return d, scene.observer, scene.wavelengths, white
+
+
 def display_linear_RGB(result, exposure=None, encoded=False):
     """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
     exposed, highlights compressed, gamut clipped; the light the display emits, before the
-    transfer function.
+    transfer function (:func:`reflectance.colour.exposure.image_display_RGB`, in bands of rows).
 
     ``exposure`` (a positive factor on XYZ) replaces the automatic exposure of the scene's
     display settings (Cook & Torrance's, the metered key or the white card); None keeps it.
-    ``encoded`` applies the display's transfer function too (:func:`display_image`). Pixel by
-    pixel it runs in bands of rows, so that the temporaries stay small at any image size.
+    ``encoded`` applies the display's transfer function too (:func:`display_image`).
     """
-    from reflectance.colour.display import (XYZ_to_linear_RGB, compress_highlights, encode,
-                                            gamut_clip)
-
-    scene, d = result.scene, result.scene.display
-    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
-              "wavelengths": scene.wavelengths}
-    XYZ, scale, factor = result.XYZ, 1.0, 1.0
-    rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
-    # a fixed factor (given, or from the white card) is applied band by band below
-    if exposure is not None:
-        if isinstance(exposure, bool) or not np.isfinite(exposure) or exposure <= 0:
-            raise ValueError(f"exposure: must be a positive finite factor, got {exposure!r}")
-        scale = factor = float(exposure)
-    elif d.expose and d.white is not None:  # metered on a white card facing the lights
-        scale = factor = d.white / white_card_luminance(scene.lights)
-    elif XYZ.shape[0] > rows:  # a large image: the scale from a few pixels
-        scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
-    elif d.expose and d.key is not None:
-        XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
-    elif d.expose:
-        # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
-        # at the maximum luminance of its chromaticity
-        XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    # pixel by pixel from here on: in bands of rows, so that the conversion's temporaries stay
-    # small at any image size (the same numbers as in one call)
-    out = np.empty(XYZ.shape)
-    for start in range(0, XYZ.shape[0], rows):
-        band = XYZ[start:start + rows]
-        RGB = XYZ_to_linear_RGB(band * factor if factor != 1.0 else band, d.space, **kwargs)
-        if d.highlight_knee is not None:
-            RGB = compress_highlights(RGB, d.highlight_knee)
-        RGB = gamut_clip(RGB, d.gamut_clip, d.space)
-        out[start:start + rows] = encode(RGB, d.space) if encoded else RGB
-    return out, scale
+    return image_display_RGB(result.XYZ, *_shown(result.scene), exposure=exposure,
+                             encoded=encoded)
 
 
 def display_image(result, exposure=None):
@@ -504,38 +466,6 @@ def display_image(result, exposure=None):
     :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
     :func:`display_linear_RGB`)."""
     return display_linear_RGB(result, exposure, encoded=True)
-
-
-def _exposure_scale(XYZ, d, rows, kwargs):
-    """The exposure scale of a large image, from the pixels that decide it: for the metered key,
-    the luminances of the lit pixels (their percentile is the scale); for Cook & Torrance, the
-    pixels of each band within 1e-9 of that band's greatest display luminance (the most
-    luminous colour is among them). The exposure functions themselves then pick the scale."""
-    if not d.expose:
-        return 1.0
-    if d.key is not None:
-        Y = XYZ[..., 1]
-        lit = Y[np.isfinite(Y) & (Y > 0)]
-        probe = np.zeros((len(lit), 3))
-        probe[:, 1] = lit
-        return expose_key(probe, *d.key)[1]
-    from reflectance.colour.display import XYZ_to_linear_RGB, display_space
-
-    luminance = display_space(d.space).matrix_RGB_to_XYZ[1]
-    candidates = []
-    for start in range(0, XYZ.shape[0], rows):
-        band = XYZ[start:start + rows].reshape(-1, 3)
-        RGB = XYZ_to_linear_RGB(band, d.space, **kwargs)
-        Y = np.where(np.all(np.isfinite(RGB), axis=-1), RGB @ luminance, -np.inf)
-        top = Y.max()
-        if top > 0:
-            candidates.append(band[Y >= top * (1.0 - 1e-9)])
-    if not candidates:
-        return 1.0
-    return expose_CookTorrance1982(np.concatenate(candidates), d.space, **kwargs)[1]
-
-
-_DISPLAY_BAND_PIXELS = 1 << 20  # pixels converted to display RGB at once
 
 
 def software_versions():
