@@ -395,14 +395,14 @@ def test_fig7_rim_closeup_shows_the_edge_lit_highlight():
     E = np.subtract(c["position"], c["look_at"]) / np.linalg.norm(np.subtract(c["position"],
                                                                             c["look_at"]))
     np.testing.assert_allclose(n, (L + E) / np.linalg.norm(L + E), atol=1e-12)
-    peaks, traced = {}, {}  # one trace for the four renders, as the script shares it (bit for bit)
+    peaks = {}  # one trace for the four renders, as the script keeps it (bit for bit)
     for panel in "ab":
         q = fig7["panels"][panel]
         m = materials_Blinn1977(q["p_s"], q["p_d"], q["c3"], q["n"], "matched")
         for model in ("phong", "torrance_sparrow"):
             Y = render(scene_from_dict(blinn_scene_Blinn1977(fig7, m[model], edge,
                                                              CONFIG["wavelengths"], cam)),
-                       traced=traced).XYZ[..., 1]
+                       keep_trace=True).XYZ[..., 1]
             peaks[panel, model] = Y.max()
             if model == "torrance_sparrow":
                 bright = Y > 1  # brighter than display white

@@ -94,24 +94,26 @@ def test_display_in_bands_is_the_same_image(root, monkeypatch, key):
 
 
 def test_a_cached_trace_renders_other_materials_exactly_as_a_fresh_one(root, monkeypatch):
-    """render(traced=...): scenes that differ only in materials and light strength reuse one
-    trace (Cook & Torrance's Fig. 7 vases) and give the very pixels of a render without it; a
+    """render(keep_trace=True): scenes that differ only in materials and light strength reuse
+    one trace (Cook & Torrance's Fig. 7 vases) and give the very pixels of a render without it; a
     moved light or camera is traced again."""
+    from reflectance.io import cache
+
     first = sphere_on_plane(root / "spectra")
     other = sphere_on_plane(root / "spectra")
     object.__setattr__(other.objects[0], "material", first.objects[1].material)  # albedo 1.0
     calls = []
     real_trace = pipeline.trace
     monkeypatch.setattr(pipeline, "trace", lambda *a, **k: calls.append(1) or real_trace(*a, **k))
-    traced = {}
-    got_first = render(first, traced=traced)
-    got_other = render(other, traced=traced)
-    assert len(calls) == 1 and len(traced) == 1
+    cache.clear()
+    got_first = render(first, keep_trace=True)
+    got_other = render(other, keep_trace=True)
+    assert len(calls) == 1 and len(cache.TRACES) == 1
     np.testing.assert_array_equal(got_first.XYZ, render(first).XYZ)
     np.testing.assert_array_equal(got_other.XYZ, render(other).XYZ)
     assert not np.array_equal(got_first.XYZ, got_other.XYZ)  # the material did change
     assert got_other.stats == render(other).stats
     moved = sphere_on_plane(root / "spectra", supersample=3)
     assert pipeline.trace_key(moved) != pipeline.trace_key(first)
-    render(moved, traced=traced)
-    assert len(traced) == 2
+    render(moved, keep_trace=True)
+    assert len(cache.TRACES) == 2

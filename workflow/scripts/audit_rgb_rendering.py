@@ -32,14 +32,14 @@ with script_log(snakemake) as log:
              fig7_vases_CookTorrance1982(p.fig7, fig6, p.table1) if group == "metal"}
     metals, labels = list(vases), p.fig7["labels"]
     rows, shown = [], []
-    traced = {}  # the metals share vase, camera and lights: traced once (pipeline.render)
     for metal in metals:
         # Fig. 7's vase of this metal exactly as the default figure renders it, at the audit's size
         document = vase_scene_CookTorrance1982(fig6, vases[metal], published["ambient_reference"],
                                                p.wavelengths, colour_cfg, spectra_dir,
                                                cfg["image"], exposure=published["exposure"])
         scene = scene_from_dict(document, source=f"audits.rgb_rendering {metal}")
-        spectral, rgb = render_spectral_and_rgb(scene, colour_cfg["space"], traced)
+        # the metals share vase, camera and lights: traced once (keep_trace)
+        spectral, rgb = render_spectral_and_rgb(scene, colour_cfg["space"], keep_trace=True)
         scale = display_exposure(spectral, scene)  # both shown as the spectral vase is
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         white = W.sum(axis=0)

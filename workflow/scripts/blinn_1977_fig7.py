@@ -25,7 +25,7 @@ with script_log(snakemake) as log:
     fig_cfg, stems, out = snakemake.params.fig, snakemake.params.stems, snakemake.output
     w = snakemake.params.wavelengths
     images, Y, rows, rims = {}, {}, [], {}
-    traced = {}  # the renders share the object: one trace per camera and light (pipeline.render)
+    # the renders share the object: one trace per camera and light (keep_trace)
     rim_camera = rim_camera_Blinn1977(fig_cfg, fig_cfg["lights"]["edge"])
     for panel in ("a", "b"):
         p = fig_cfg["panels"][panel]
@@ -40,13 +40,13 @@ with script_log(snakemake) as log:
                     doc = blinn_scene_Blinn1977(fig_cfg, m[model], fig_cfg["lights"][light], w)
                     scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig7 {key}")
                     result = render_to_files(scene, f"{stems[key]}.scene.yaml",
-                                             f"{stems[key]}.exr", f"{stems[key]}.png", traced=traced)
+                                             f"{stems[key]}.exr", f"{stems[key]}.png", keep_trace=True)
                     images[key], Y[key] = result.display[0], result.XYZ[..., 1]
                     log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
                     if light == "edge":  # the highlight close up (fig7.rim_closeup), for the inset
                         rims[key] = render(scene_from_dict(blinn_scene_Blinn1977(
                             fig_cfg, m[model], fig_cfg["lights"]["edge"], w, rim_camera)),
-                                           traced=traced).XYZ[..., 1]
+                                           keep_trace=True).XYZ[..., 1]
                         log.info("%s close up: max i = %.4f", key, rims[key].max())
                 ph, ts = Y[f"{panel}_phong_{light}_{reading}"], Y[f"{panel}_torrance_sparrow_{light}"]
                 diff, lit = np.abs(ph - ts), (ph > 0) | (ts > 0)

@@ -22,7 +22,7 @@ with script_log(snakemake) as log:
     cfg, fig7, out = snakemake.params.fig, snakemake.params.fig7, snakemake.output
     u, v = np.meshgrid(np.linspace(0, 1, 721), np.linspace(0, 1, 201))
     images, maps, rows = {}, {}, []
-    traced = {}  # both patterns on one object, camera and light: traced once (pipeline.render)
+    # both patterns on one object, camera and light: traced once (keep_trace)
     for part in ("a", "b"):
         pattern = cfg["patterns"][part]
         material = {"index": {"n": float(snakemake.params.n), "k": 0.0},
@@ -35,7 +35,7 @@ with script_log(snakemake) as log:
         doc = blinn_scene_Blinn1977(fig7, material, cfg["light"], snakemake.params.wavelengths)
         scene = scene_from_dict(doc, source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
         result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                 out[f"{part}_png"], traced=traced)
+                                 out[f"{part}_png"], keep_trace=True)
         images[part] = result.display[0]
         # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
         maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),

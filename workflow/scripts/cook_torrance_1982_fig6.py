@@ -15,6 +15,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
+from reflectance.io.cache import TRACES
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
@@ -38,7 +39,7 @@ def departure_text(change):
     return ", ".join(f"{k} = {v:g}" for k, v in change.items())
 
 
-def variant(log, out, reference, published, traced):
+def variant(log, out, reference, published):
     """One variant of the figure: its panels, table and figure written to ``out``."""
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
@@ -63,8 +64,8 @@ def variant(log, out, reference, published, traced):
         scene = scene_from_dict(document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                  f"panel {part}")
         result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                  out[f"{part}_png"], components=True, traced=traced) if written
-                  else render(scene, components=True, traced=traced))
+                                  out[f"{part}_png"], components=True, keep_trace=True)
+                  if written else render(scene, components=True, keep_trace=True))
         rgb, scale = result.display or display_image(result)  # as written, or not written
         images.append((title, rgb)), covered.append(result.XYZ)
         Y = {name: value[..., 1] for name, value in result.components.items()}
@@ -119,11 +120,11 @@ def variant(log, out, reference, published, traced):
 
 
 with script_log(snakemake) as log:
-    traced = {}  # the variants' panels share vase, camera and lights: traced once (pipeline.render)
+    # the variants' panels share vase, camera and lights: traced once (keep_trace)
     # the default figure (if params.published; unprefixed outputs), then each reading
     variants = figure_variants(snakemake.params)
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         variant(log, {key: getattr(snakemake.output, prefix + key) for key in OUTPUTS},
-                reference, published, traced)
-    log.info("%d distinct traces for %d variants", len(traced), len(variants))
+                reference, published)
+    log.info("%d distinct traces for %d variants", len(TRACES), len(variants))

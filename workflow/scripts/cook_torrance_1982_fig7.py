@@ -16,6 +16,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag, XYZ_to_display
+from reflectance.io.cache import TRACES
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
@@ -42,7 +43,7 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
-def variant(log, out, reference, published, traced):
+def variant(log, out, reference, published):
     """One variant of the figure: its vases, table and grid written to ``out``."""
     p = snakemake.params
     colour_cfg = p.colour
@@ -57,7 +58,7 @@ def variant(log, out, reference, published, traced):
         scene = scene_from_dict(document,
                                 source=f"config.yaml figures.cook_torrance_1982.fig7 {vase}")
         result = render_to_files(scene, out["scenes"][k], out["exrs"][k],
-                                 out["pngs"][k] if published else None, traced=traced)
+                                 out["pngs"][k] if published else None, keep_trace=True)
         rgb, scale = result.display  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
@@ -133,7 +134,7 @@ def variant(log, out, reference, published, traced):
 
 
 with script_log(snakemake) as log:
-    traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
+    # the variants' vases share geometry, camera and lights: traced once (keep_trace)
     # the default figure (if params.published; unprefixed outputs), then each reading
     variants = figure_variants(snakemake.params)
     for prefix, reference, published in variants:
@@ -141,5 +142,5 @@ with script_log(snakemake) as log:
         out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}
         if published:  # the default figure alone writes each vase's PNG
             out["pngs"] = getattr(snakemake.output, "pngs")
-        variant(log, out, reference, published, traced)
-    log.info("%d distinct traces for %d variants", len(traced), len(variants))
+        variant(log, out, reference, published)
+    log.info("%d distinct traces for %d variants", len(TRACES), len(variants))

@@ -28,18 +28,17 @@ with script_log(snakemake) as log:
     document = watch_scene_CookTorrance1982(p.fig, p.fig6, p.table1, p.wavelengths, colour_cfg,
                                             spectra_dir)
     scene = scene_from_dict(document, source="config.yaml figures.cook_torrance_1982.fig8")
-    traced = {}  # the render's camera samples, reused below (pipeline.render)
-    result = render_to_files(scene, out.scene, out.exr, out.render_png, traced=traced)
+    # the render's camera samples, reused below (keep_trace)
+    result = render_to_files(scene, out.scene, out.exr, out.render_png, keep_trace=True)
     rgb, scale = result.display
     log.info("render %s, exposure scale %.6g", result.timings, scale)
 
     # what each pixel shows: the fraction of its samples on each part; the colour it is shown in
     display = dict(illuminant=colour_cfg["illuminant"], observer=scene.observer,
                    wavelengths=scene.wavelengths)
-    if traced:  # the one trace: every camera sample of the image
-        (samples, _), = traced.values()
-    else:  # an image of several bands keeps no trace (pipeline.render): trace it whole here
-        samples, _, _ = trace_once(scene, None)
+    # every camera sample of the image: the render's own trace, or, for an image of several
+    # bands (which keeps none), traced whole here
+    samples, _, _ = trace_once(scene)
     stats = part_pixels(samples, scene.mesh.cell_data["part"],
                         result.XYZ, scale, colour_cfg["space"], colour_cfg["gamut_clip"], display)
     W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)

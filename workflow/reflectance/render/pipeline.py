@@ -39,6 +39,7 @@ import numpy as np
 
 from reflectance.colour.exposure import exposure_scale, image_display_RGB
 from reflectance.io.atomic import atomic_write
+from reflectance.io.cache import TRACES
 from reflectance.io.images import write_exr_XYZ, write_png
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
 from reflectance.render.camera import SINGLE_TILE_SAMPLES, TILE_SAMPLES
@@ -211,8 +212,10 @@ def shade_samples(scene, samples, shadowed, spectral=None, components=False, fre
 def trace_key(scene, rows=None):
     """What :func:`trace` depends on, as a SHA-256 hex digest: the composed mesh (points, faces,
     every point and cell array), the camera, the lights' directions or positions, whether shadows
-    are cast, and the band of rows. Two scenes with the same key are traced identically (the
-    trace never looks at materials, spectra, intensities or the ambient term)."""
+    are cast, and the band of rows (None: the whole grid, the same trace as its one band). Two
+    scenes with the same key are traced identically (the trace never looks at materials,
+    spectra, intensities or the ambient term)."""
+    rows = (0, scene.camera.shape[0]) if rows is None else (int(rows[0]), int(rows[1]))
     digest = hashlib.sha256()
     mesh = scene.mesh
     arrays = [("points", mesh.points), ("faces", mesh.faces)]
@@ -227,27 +230,32 @@ def trace_key(scene, rows=None):
     return digest.hexdigest()
 
 
-def trace_once(scene, traced, rows=None, tools=None, progress=None, threads=1):
-    """:func:`trace` of ``scene`` (the band ``rows``), or the one ``traced`` keeps under its
-    :func:`trace_key`: ``traced`` is a dict kept across scenes that differ only in materials (a
-    new trace is stored in it), or None to keep nothing. ``tools``, if given, is called only when
-    a trace is needed and returns ``(primitives, renderer)`` for :func:`trace`. Returns
-    ``(samples, shadowed, timings)``, zero timings for a kept trace; ``threads`` as for
-    :func:`trace`."""
-    key = trace_key(scene, rows) if traced is not None else None
-    if key is not None and key in traced:
-        samples, shadowed = traced[key]
-        return samples, shadowed, {"visibility": 0.0, "shadows": 0.0}
-    primitives, renderer = tools() if tools is not None else (None, None)
-    samples, shadowed, timings = trace(scene, rows, primitives, progress, renderer=renderer,
-                                       threads=threads)
-    if key is not None:
-        traced[key] = (samples, shadowed)
+def trace_once(scene, keep=True, rows=None, tools=None, progress=None, threads=1):
+    """:func:`trace` of ``scene`` (the band ``rows``; None: the whole grid), or, with ``keep``,
+    the one the process's trace memo (:data:`reflectance.io.cache.TRACES`) keeps under its
+    :func:`trace_key`, for scenes that differ only in what the trace does not look at (a new
+    trace is kept there). Images of several bands (:func:`tiles`) are not kept (memory).
+    ``tools``, if given, is called only when a trace is needed and returns ``(primitives,
+    renderer)`` for :func:`trace`. Returns ``(samples, shadowed, timings)``, zero timings for a
+    kept trace; ``threads`` as for :func:`trace`."""
+    timings = {"visibility": 0.0, "shadows": 0.0}
+
+    def traced():
+        primitives, renderer = tools() if tools is not None else (None, None)
+        samples, shadowed, t = trace(scene, rows, primitives, progress, renderer=renderer,
+                                     threads=threads)
+        timings.update(t)
+        return samples, shadowed
+
+    if keep and len(tiles(scene.camera)) == 1:
+        samples, shadowed = TRACES.get(trace_key(scene, rows), traced)
+    else:
+        samples, shadowed = traced()
     return samples, shadowed, timings
 
 
 def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
-           traced=None, threads=None):
+           keep_trace=False, threads=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -263,11 +271,12 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     progress : callable, optional
         Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
         starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
-    traced : dict, optional
-        A cache the caller keeps across renders of scenes that differ only in what :func:`trace`
-        does not look at (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7
-        vases): an image traced in one band is looked up by :func:`trace_key` and traced once;
-        the result is the same, bit for bit. Images of several bands are not kept (memory).
+    keep_trace : bool
+        Look the trace up in the process's trace memo (:func:`trace_once`), and keep it there,
+        for renders of scenes that differ only in what :func:`trace` does not look at
+        (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7 vases): an image
+        traced in one band is traced once; the result is the same, bit for bit. Images of
+        several bands are not kept (memory).
     threads : int, optional
         Threads of the per-sample work (:func:`reflectance.render.parallel.render_threads`:
         default the environment variable ``REFLECTANCE_RENDER_THREADS``, else
@@ -281,7 +290,6 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     t0 = time.perf_counter()
     camera, n_ss = scene.camera, scene.camera.supersample
     bands = tiles(camera)
-    keep = traced is not None and len(bands) == 1
     image = np.zeros((camera.height, camera.width, 3))
     parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
     timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
@@ -313,7 +321,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         for start, stop in bands:
             where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
             samples, shadowed, t = trace_once(
-                scene, traced if keep else None, (start, stop), tools,
+                scene, keep_trace, (start, stop), tools,
                 progress and (lambda phase: progress(where + phase)), threads)
             t1 = time.perf_counter()
             (progress or _silent)(where + "shading")
@@ -556,17 +564,17 @@ def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=No
 
 
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
-                    rgb_exr_path=None, traced=None):
+                    rgb_exr_path=None, keep_trace=False):
     """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
     the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
-    rendered again alone with ``reflectance render``. ``traced``: as in :func:`render`. The
+    rendered again alone with ``reflectance render``. ``keep_trace``: as in :func:`render`. The
     result keeps the display image written (:attr:`RenderResult.display`).
     """
     from reflectance.render.scene import write_scene_file
 
     write_scene_file(scene, scene_path)
-    result = render(scene, components=components, traced=traced)
+    result = render(scene, components=components, keep_trace=keep_trace)
     result.display = write_render(result, exr_path, png_path, rgb_exr_path)
     return result

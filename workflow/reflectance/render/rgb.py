@@ -22,7 +22,7 @@ import functools
 __all__ = ["render_spectral_and_rgb", "display_exposure"]
 
 
-def render_spectral_and_rgb(scene, space="sRGB", traced=None):
+def render_spectral_and_rgb(scene, space="sRGB", keep_trace=False):
     """(spectral XYZ image, RGB-renderer XYZ image) of ``scene``, one visibility pass for both.
 
     Parameters
@@ -31,14 +31,14 @@ def render_spectral_and_rgb(scene, space="sRGB", traced=None):
         Shaded with ``spectral="table"`` (the RGB renderer replaces the Fresnel table only).
     space : str
         Display space of the RGB renderer's channels (:data:`reflectance.colour.display.DISPLAY_SPACES`).
-    traced : dict, optional
-        A cache of traces kept across scenes that differ only in materials, as in
-        :func:`reflectance.render.pipeline.render`.
+    keep_trace : bool
+        Keep the trace for scenes that differ only in materials, as
+        :func:`reflectance.render.pipeline.render` does.
     """
     from reflectance.render.pipeline import shade_samples, trace_once
     from reflectance.render.shading import fresnel_XYZ_table_rgb
 
-    samples, shadowed, _ = trace_once(scene, traced)
+    samples, shadowed, _ = trace_once(scene, keep_trace)
     images = []
     for table in (None, functools.partial(fresnel_XYZ_table_rgb, space=space)):
         images.append(samples.to_pixels(
