@@ -249,7 +249,8 @@ def test_fig8_texture_modulates_the_highlight(fig8, part):
     [C_min C3 / (cos^2 a (C3^2 - 1) + 1)]^2 / [C_min^2 / (cos^2 a (C_min^2 - 1) + 1)]^2. The
     texture lowers the peak (ratio (C_min / C3)^2 at a = 0) and widens the lobe (ratio > 1 far
     from the highlight)."""
-    from reflectance.render.pipeline import shade_samples, trace
+    from reflectance.render.integrator import shade_samples
+    from reflectance.render.tracing import trace
     from reflectance.render.scene import load_scene, scene_from_dict
     from reflectance.geometry.texture import texture
 

@@ -1,11 +1,13 @@
-"""Rendering in bands of rows (reflectance.render.pipeline.tiles): the same image as one pass."""
+"""Rendering in bands of rows (reflectance.render.tracing.tiles): the same image as one pass."""
 
 import numpy as np
 import pytest
 
 import reflectance.render.pipeline as pipeline
+import reflectance.render.tracing as tracing
 from reflectance.render.camera import Camera
-from reflectance.render.pipeline import render, tiles
+from reflectance.render.pipeline import render
+from reflectance.render.tracing import tiles
 from reflectance.render.scene import scene_from_dict
 from reflectance.render.visibility import visibility
 
@@ -60,8 +62,8 @@ def test_a_band_of_visibility_is_those_rows_of_the_whole(root):
 def test_banded_render_equals_one_pass(root, monkeypatch):
     scene = sphere_on_plane(root / "spectra")
     one = render(scene)
-    monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 0)
-    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 1000)  # 6 sample rows (3 pixel rows) of 128
+    monkeypatch.setattr(tracing, "SINGLE_TILE_SAMPLES", 0)
+    monkeypatch.setattr(tracing, "TILE_SAMPLES", 1000)  # 6 sample rows (3 pixel rows) of 128
     assert len(tiles(scene.camera)) == 96 // 6
     banded = render(scene)
     for key in ("raster_miss", "recovered", "searched", "dropped", "hit", "seen_from_back"):
@@ -103,8 +105,8 @@ def test_a_cached_trace_renders_other_materials_exactly_as_a_fresh_one(root, mon
     other = sphere_on_plane(root / "spectra")
     object.__setattr__(other.objects[0], "material", first.objects[1].material)  # albedo 1.0
     calls = []
-    real_trace = pipeline.trace
-    monkeypatch.setattr(pipeline, "trace", lambda *a, **k: calls.append(1) or real_trace(*a, **k))
+    real_trace = tracing.trace
+    monkeypatch.setattr(tracing, "trace", lambda *a, **k: calls.append(1) or real_trace(*a, **k))
     cache.clear()
     got_first = render(first, keep_trace=True)
     got_other = render(other, keep_trace=True)
@@ -114,6 +116,6 @@ def test_a_cached_trace_renders_other_materials_exactly_as_a_fresh_one(root, mon
     assert not np.array_equal(got_first.XYZ, got_other.XYZ)  # the material did change
     assert got_other.stats == render(other).stats
     moved = sphere_on_plane(root / "spectra", supersample=3)
-    assert pipeline.trace_key(moved) != pipeline.trace_key(first)
+    assert tracing.trace_key(moved) != tracing.trace_key(first)
     render(moved, keep_trace=True)
     assert len(cache.TRACES) == 2

@@ -28,7 +28,7 @@ TARGETS += [
 
 
 # One job for the whole family (the default figure, then each reading): the variants share one
-# process's imports and, where their geometry, camera and lights agree (pipeline.trace_key), one
+# process's imports and, where their geometry, camera and lights agree (tracing.trace_key), one
 # trace. The trade-off: editing one variant's parameter (a reading, fig6.published) reruns them all.
 CT82_FIG6_FILES = {
     "png": "fig6{}.png",

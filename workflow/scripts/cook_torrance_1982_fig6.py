@@ -5,7 +5,7 @@ brightest colour), or, for the default figure (``params.published``), with the o
 its highlights compressed at constant chromaticity, and Fig. 6a's labelled departure beside the
 printed panel. Also tabulates the size of the ambient term and how each panel reads. One process
 makes every variant (the default figure, then each reading; outputs named ``<reading>_<name>``):
-they share the imports and, where their geometry, camera and lights agree (pipeline.trace_key), the
+they share the imports and, where their geometry, camera and lights agree (tracing.trace_key), the
 trace."""
 
 from pathlib import Path

@@ -7,7 +7,7 @@ per-vase factors of ``fig7.vase_exposure``; the readings of
 the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
 (not in the paper) and a table of each vase's parameters, colour and how it reads. One process makes
 every variant (the default figure, then each reading of ``params.readings``; outputs named
-``<reading>_<name>``): they share the imports and the vases' trace (pipeline.trace_key)."""
+``<reading>_<name>``): they share the imports and the vases' trace (tracing.trace_key)."""
 
 from pathlib import Path
 

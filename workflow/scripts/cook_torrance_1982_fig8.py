@@ -12,7 +12,8 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import render_to_files, trace_once
+from reflectance.render.pipeline import render_to_files
+from reflectance.render.tracing import trace_once
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.scenes import watch_scene_CookTorrance1982
 from reflectance.scripting import script_log

@@ -9,7 +9,7 @@ used dropped first. The library's memos, all of them here (:data:`MEMOS` by name
 - :data:`COMPOSED_MESHES`, the scenes' composed meshes by their objects' geometry and
   transform keys: scenes that differ only in materials, lights or camera compose them once;
 - :data:`TRACES`, camera visibility and shadow masks by what they depend on
-  (:func:`reflectance.render.pipeline.trace_key`): renders of scenes that differ only in
+  (:func:`reflectance.render.tracing.trace_key`): renders of scenes that differ only in
   materials, spectra, intensities or the ambient term, which ask for it, trace once.
 
 On disk, the cache's folder is ``$REFLECTANCE_CACHE`` or
@@ -100,7 +100,7 @@ COMPOSED_MESHES = Memo("composed meshes", 4)
 """Composed scene meshes by their objects' geometry and transform keys (canonical JSON)."""
 
 TRACES = Memo("traces", 4)
-"""``(samples, shadowed)`` of one-band images by :func:`reflectance.render.pipeline.trace_key`:
+"""``(samples, shadowed)`` of one-band images by :func:`reflectance.render.tracing.trace_key`:
 at most 4 of at most :data:`reflectance.render.camera.SINGLE_TILE_SAMPLES` camera samples each
 (the most any figure asks for, three: Blinn's Fig. 7, one per camera and light)."""
 

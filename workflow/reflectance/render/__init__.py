@@ -2,9 +2,11 @@
 
 Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
-(spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
-would); scene (scene files); pipeline (trace, shade, write);
-composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
+(spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which
+pixels get more samples); tracing (a band's visibility and shadows, and the kept trace);
+session (what one render holds while it runs); integrator (shade and box-filter band by band,
+refine); rgb (a scene also rendered as a three-channel RGB renderer would); scene (scene
+files); pipeline (render, write); composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
 exported to the path tracer Mitsuba 3, an optional extra); mitsuba_command (Mitsuba's whole
 command, timed by the bench).
 
@@ -15,7 +17,9 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "mitsuba_command", "parallel", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "integrator",
+            "lights", "mitsuba_command", "parallel", "pipeline", "primitives", "rays", "rgb",
+            "samples", "scene", "session", "shading", "shadows", "tracing", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -54,11 +58,17 @@ _EXPORTS = {
     "light_vectors": "lights",
     "THREADS_VARIABLE": "parallel",
     "render_threads": "parallel",
+    "COMPONENTS": "integrator",
+    "shade_samples": "integrator",
+    "Integrator": "integrator",
+    "RenderSession": "session",
+    "tiles": "tracing",
+    "light_map_size": "tracing",
+    "trace": "tracing",
+    "trace_key": "tracing",
+    "trace_once": "tracing",
     "render_to_files": "pipeline",
-    "COMPONENTS": "pipeline",
     "RenderResult": "pipeline",
-    "trace": "pipeline",
-    "shade_samples": "pipeline",
     "render": "pipeline",
     "display_image": "pipeline",
     "display_linear_RGB": "pipeline",
@@ -67,7 +77,6 @@ _EXPORTS = {
     "write_render": "pipeline",
     "render_warnings": "pipeline",
     "BACK_FRACTION_WARNING": "pipeline",
-    "tiles": "pipeline",
     "ray_triangle_MollerTrumbore1997": "rays",
     "ray_sphere": "rays",
     "SurfaceSamples": "samples",

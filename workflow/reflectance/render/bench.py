@@ -117,7 +117,9 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
 
     from reflectance.colour.colorimetry import tristimulus_weights
     from reflectance.colour.difference import image_difference_CIEDE2000
-    from reflectance.render.pipeline import render, shade_samples, tiles, trace
+    from reflectance.render.integrator import shade_samples
+    from reflectance.render.pipeline import render
+    from reflectance.render.tracing import tiles, trace
     from reflectance.render.shading import fresnel_XYZ_table
 
     progress = progress or (lambda phase: None)

@@ -35,7 +35,8 @@ def render_spectral_and_rgb(scene, space="sRGB", keep_trace=False):
         Keep the trace for scenes that differ only in materials, as
         :func:`reflectance.render.pipeline.render` does.
     """
-    from reflectance.render.pipeline import shade_samples, trace_once
+    from reflectance.render.integrator import shade_samples
+    from reflectance.render.tracing import trace_once
     from reflectance.render.shading import fresnel_XYZ_table_rgb
 
     samples, shadowed, _ = trace_once(scene, keep_trace)
