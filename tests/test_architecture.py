@@ -20,6 +20,11 @@ ALLOWED = {
     "geometry": {"io"},
     "render": {"optics", "colour", "geometry", "io"},
     "audit": {"optics", "colour", "io"},
+    # the bench measures the renderer (and exports its scenes to a path tracer): what it needs of
+    # the layers below comes through render's scenes, but for the colour differences it reports,
+    # the analytic spheres it exports and its worker processes; the CLI hands it the papers'
+    # scene, so that it knows nothing of papers, and nothing but the CLI uses it
+    "bench": {"render", "colour", "geometry", "io"},
     "papers": {"render", "audit", "optics", "colour", "geometry", "io"},
 }
 TOP_LEVEL = {"cli", "config", "scripting", "resume", "lazy", "__init__", "__main__"}

@@ -169,7 +169,7 @@ def test_bench_reports_each_size_and_phase(root, capsys):
 
 
 def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
-    import reflectance.render.bench as bench
+    import reflectance.bench.run as bench
 
     def fake_run_bench(*args, progress=None, **kwargs):
         progress.update(0, "size 8 (1/1)")
@@ -187,7 +187,7 @@ def test_bench_command_defaults_are_the_librarys(monkeypatch):
     and the cross-check (the parser reads them from reflectance.render.bench)."""
     import inspect
 
-    import reflectance.render.bench as bench
+    import reflectance.bench.run as bench
 
     real = inspect.signature(bench.run_bench)
     passed = {}

@@ -115,5 +115,5 @@ def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(ro
     fewer = bench_size(doc, 16, supersample=1, runs=1, brute_force_runs=0,
                        spectra_dir=root / "spectra", reference_supersample=4)
     assert 0.0 < fewer["dE_reference_mean"] and fewer["dE_reference_p95"] > 0.0
-    from reflectance.render.bench import crosscheck_status
+    from reflectance.bench.run import crosscheck_status
     assert "Mitsuba" in crosscheck_status()

@@ -652,7 +652,7 @@ def _run_bench(args):
     import json
 
     from reflectance.io.progress import Progress
-    from reflectance.render.bench import format_report, run_bench
+    from reflectance.bench.run import format_report, run_bench
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")

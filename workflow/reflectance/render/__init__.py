@@ -33,8 +33,6 @@ _EXPORTS = {
     "display_exposure": "rgb",
     "load_bench_scene": "bench",
     "bench_size": "bench",
-    "run_bench": "bench",
-    "format_report": "bench",
     "Camera": "camera",
     "mitsuba_available": "crosscheck",
     "crosscheck_scene": "crosscheck",
