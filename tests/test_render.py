@@ -146,7 +146,7 @@ def test_supersampling_converges(spectra):
 
 def test_table_is_within_dE2000_001_of_brute_force_on_the_copper_vase(root, spectra):
     from reflectance.papers.scenes import fig6_scene_CookTorrance1982
-    from reflectance.render.bench import load_bench_scene
+    from reflectance.bench.measure import load_bench_scene
 
     doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra)
     scene = load_bench_scene(doc, spectra_dir=spectra, width=48, height=64, supersample=2)

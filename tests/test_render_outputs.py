@@ -184,7 +184,7 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
 
 def test_bench_command_defaults_are_the_librarys(monkeypatch):
     """`reflectance bench` without options passes run_bench its own defaults for the references
-    and the cross-check (the parser reads them from reflectance.render.bench)."""
+    and the cross-check (the parser reads them from reflectance.bench.measure)."""
     import inspect
 
     import reflectance.bench.run as bench

@@ -106,7 +106,7 @@ def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(ro
     """The bench's converged-reference error is 0 when the image is the reference itself, and
     positive (CIEDE2000 mean <= p95) with fewer samples."""
     from reflectance.cli import _default_bench_scene
-    from reflectance.render.bench import bench_size
+    from reflectance.bench.measure import bench_size
 
     doc = _default_bench_scene(root / "spectra")
     same = bench_size(doc, 16, supersample=2, runs=1, brute_force_runs=0,

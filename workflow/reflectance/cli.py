@@ -575,8 +575,8 @@ def _run_render(args):
 # -- reflectance bench --------------------------------------------------------------------------
 
 def _add_bench(sub):
-    # the bench's defaults (reflectance.render.bench imports nothing heavy at import)
-    from reflectance.render.bench import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
+    # the bench's defaults (reflectance.bench.measure imports nothing heavy at import)
+    from reflectance.bench.measure import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
                                           CROSSCHECK_SUPERSAMPLES, REFERENCE_MAX_SAMPLES,
                                           REFERENCE_SUPERSAMPLE)
 

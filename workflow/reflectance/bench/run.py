@@ -1,10 +1,10 @@
 """``reflectance bench``: every size in a process of its own, the cross-check, the report.
 
 :func:`run_bench` measures a scene (a scene file, or a scene document) at each size in a fresh
-Python process (:func:`reflectance.render.bench.bench_size` there: its peak resident memory then
+Python process (:func:`reflectance.bench.measure.bench_size` there: its peak resident memory then
 belongs to that size alone). With Mitsuba 3 installed (``pip install .[crosscheck]``), at one
 size (``crosscheck_size``, if benchmarked) a path tracer is a second, independent reference
-(:mod:`reflectance.render.crosscheck`, in a process of its own too): our render and Mitsuba's at
+(:mod:`reflectance.bench.crosscheck`, in a process of its own too): our render and Mitsuba's at
 a ladder of sample counts, and ours at a ladder of supersamplings (``crosscheck_supersamples``),
 their seconds and their CIEDE2000 against the same converged references, and the two compared at
 the accuracy goal (equal error). :func:`format_report` prints the results; without Mitsuba it
@@ -14,7 +14,7 @@ says in one line that the cross-check is skipped (:func:`crosscheck_status`).
 from __future__ import annotations
 
 from reflectance.io.progress import run_worker
-from reflectance.render.bench import (CROSSCHECK_SIZE, CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES,
+from reflectance.bench.measure import (CROSSCHECK_SIZE, CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES,
                                       REFERENCE_SUPERSAMPLE)
 
 __all__ = ["run_bench", "format_report", "crosscheck_status"]
@@ -22,9 +22,9 @@ __all__ = ["run_bench", "format_report", "crosscheck_status"]
 
 def crosscheck_status(results=()):
     """The report's lines on the path-tracer cross-check (Mitsuba 3): its table
-    (:func:`reflectance.render.crosscheck.format_crosscheck`) where it ran, else one line saying
+    (:func:`reflectance.bench.crosscheck.format_crosscheck`) where it ran, else one line saying
     why it was skipped."""
-    from reflectance.render.crosscheck import format_crosscheck, mitsuba_available
+    from reflectance.bench.crosscheck import format_crosscheck, mitsuba_available
 
     done = [r["crosscheck"] for r in results if "crosscheck" in r]
     if done:
@@ -41,7 +41,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
               reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
               crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=CROSSCHECK_SPP,
               crosscheck_supersamples=CROSSCHECK_SUPERSAMPLES):
-    """Run :func:`reflectance.render.bench.bench_size` for each size in a fresh subprocess;
+    """Run :func:`reflectance.bench.measure.bench_size` for each size in a fresh subprocess;
     return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
@@ -50,7 +50,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
     pixel; ours at ``reference_supersample``, or
-    :data:`reflectance.render.bench.REFERENCE_SUPERSAMPLE` where that is 0; our own ladder at
+    :data:`reflectance.bench.measure.REFERENCE_SUPERSAMPLE` where that is 0; our own ladder at
     the supersamplings ``crosscheck_supersamples``)."""
     spectra_dir = None if spectra_dir is None else str(spectra_dir)
     results = []
@@ -67,14 +67,14 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
                "adaptive": adaptive}
         try:
             results.append(run_worker(
-                "reflectance.render.bench", job, failure=f"benchmark of size {size} failed",
+                "reflectance.bench.measure", job, failure=f"benchmark of size {size} failed",
                 progress=tell))
         except RuntimeError:
             if progress is not None:
                 progress.close(f"size {size} failed", done=i)
             raise
-        if size == crosscheck_size:  # the path-tracer cross-check (reflectance.render.crosscheck)
-            from reflectance.render.crosscheck import mitsuba_available, run_crosscheck
+        if size == crosscheck_size:  # the path-tracer cross-check (reflectance.bench.crosscheck)
+            from reflectance.bench.crosscheck import mitsuba_available, run_crosscheck
 
             if mitsuba_available():
                 results[-1]["crosscheck"] = run_crosscheck(

@@ -6,9 +6,8 @@ camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, sha
 pixels get more samples); tracing (a band's visibility and shadows, and the kept trace);
 session (what one render holds while it runs); integrator (shade and box-filter band by band,
 refine); rgb (a scene also rendered as a three-channel RGB renderer would); scene (scene
-files); pipeline (render, write); composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
-exported to the path tracer Mitsuba 3, an optional extra); mitsuba_command (Mitsuba's whole
-command, timed by the bench).
+files); pipeline (render, write); composite (grids with one exposure). The bench of its speed
+and accuracy, and the path tracer's cross-check, are :mod:`reflectance.bench`.
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
 the package stays cheap.
@@ -17,9 +16,9 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "integrator",
-            "lights", "mitsuba_command", "parallel", "pipeline", "primitives", "rays", "rgb",
-            "samples", "scene", "session", "shading", "shadows", "tracing", "visibility")
+_MODULES = ("adaptive", "camera", "composite", "idbuffer", "integrator", "lights", "parallel",
+            "pipeline", "primitives", "rays", "rgb", "samples", "scene", "session", "shading",
+            "shadows", "tracing", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -31,14 +30,7 @@ _EXPORTS = {
     "REFINE_BAND_ID_PIXELS": "adaptive",
     "render_spectral_and_rgb": "rgb",
     "display_exposure": "rgb",
-    "load_bench_scene": "bench",
-    "bench_size": "bench",
     "Camera": "camera",
-    "mitsuba_available": "crosscheck",
-    "crosscheck_scene": "crosscheck",
-    "scene_to_mitsuba": "crosscheck",
-    "mitsuba_renderer": "crosscheck",
-    "render_mitsuba": "crosscheck",
     "common_exposure": "composite",
     "covered_rows": "composite",
     "image_grid": "composite",

@@ -26,7 +26,7 @@ peak resident memory, ``ru_maxrss``, which includes VTK's, belongs to that size 
   (5 nm and 1 nm by default): the table's time does not grow with the number of wavelengths.
 
 Its defaults are the command's (the CLI reads them at parse: this module imports nothing heavy
-at import), the path-tracer cross-check's too (:mod:`reflectance.render.crosscheck`).
+at import), the path-tracer cross-check's too (:mod:`reflectance.bench.crosscheck`).
 
 Speed targets are measured here, never asserted in tests.
 """
