@@ -1,8 +1,10 @@
 """The library's architecture, read from its import statements (every one, at any depth).
 
-The folders are the design: data flows one way, from ``io`` up to ``papers`` and the command
-line. A module may import its own subpackage and the ones listed below it here; nothing imports
-upward or sideways, and no module reaches for another module's underscore names.
+The folders are the design: data flows one way, from ``io`` up to ``papers``, ``bench`` and the
+command line. A module may import its own subpackage and the ones listed below it here; nothing
+imports upward or sideways, no module reaches for another module's underscore names, and the
+modules of a subpackage import one another without a cycle. The top-level modules each have
+their own list.
 """
 
 import ast
@@ -20,9 +22,30 @@ ALLOWED = {
     "geometry": {"io"},
     "render": {"optics", "colour", "geometry", "io"},
     "audit": {"optics", "colour", "io"},
+    # the bench measures the renderer (and exports its scenes to a path tracer): what it needs of
+    # the layers below comes through render's scenes, but for the colour differences it reports,
+    # the analytic spheres it exports, its worker processes and the material folders it hands
+    # them (optics.spectra's one lookup); the CLI hands it the papers' scene, so that it knows
+    # nothing of papers, and nothing but the CLI uses it
+    "bench": {"render", "optics", "colour", "geometry", "io"},
     "papers": {"render", "audit", "optics", "colour", "geometry", "io"},
 }
-TOP_LEVEL = {"cli", "config", "scripting", "resume", "lazy", "__init__", "__main__"}
+
+#: top-level module -> the subpackages and top-level modules it may import ("__init__": the
+#: package itself, ``from reflectance import __version__``); reflectance.lazy, which imports
+#: nothing of ours, every module may import
+TOP_LEVEL = {
+    "__init__": set(),  # loads the subpackages by name on first use (import_module)
+    "__main__": {"cli"},
+    "lazy": set(),  # the public faces' loader
+    "scripting": set(),  # the workflow scripts' logging and parameters
+    "resume": {"io"},  # what a killed run left (the Snakefile clears it)
+    # config.yaml's checks build every figure's scene, without rendering
+    "config": {"papers", "render", "geometry", "optics", "colour", "io"},
+    # the command: every layer, and the version; not the workflow's support modules
+    "cli": {"__init__", "bench", "papers", "audit", "render", "geometry", "optics", "colour",
+            "io"},
+}
 
 
 def modules():
@@ -44,30 +67,113 @@ def imports(path):
     return found
 
 
-def where(path):
-    rel = path.relative_to(PACKAGE)
+def where(path, package=PACKAGE):
+    rel = path.relative_to(package)
     return rel.parts[0] if len(rel.parts) > 1 else rel.stem
+
+
+def place(module):
+    """The subpackage or top-level module an imported module (``reflectance...``) lives in."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "__init__"
+
+
+def module_name(path, package=PACKAGE):
+    """``reflectance.<...>`` of a file of the package (a package's ``__init__.py``: the package)."""
+    rel = path.relative_to(package).with_suffix("")
+    parts = rel.parts[:-1] if rel.name == "__init__" else rel.parts
+    return ".".join(("reflectance", *parts))
+
+
+def import_graph(package=PACKAGE):
+    """{module: the modules of the package it imports}: ``from a.b import c`` imports the module
+    ``a.b.c`` where there is one, else ``a.b`` (a name it defines or its face loads)."""
+    paths = {module_name(p, package): p for p in sorted(package.rglob("*.py"))}
+    graph = {}
+    for name, path in paths.items():
+        edges = set()
+        for module, names in imports(path):
+            inner = {f"{module}.{n}" for n in names if f"{module}.{n}" in paths}
+            edges |= inner | ({module} if len(inner) < len(names) or not names else set())
+        graph[name] = {m for m in edges if m in paths and m != name}
+    return graph
+
+
+def cycles(graph):
+    """The import cycles of ``graph`` ({node: nodes it imports}): each a sorted list of the
+    nodes that reach one another (the strongly connected components of more than one node)."""
+    index, low, stack, found = {}, {}, [], []
+
+    def visit(node):  # Tarjan 1972
+        index[node] = low[node] = len(index)
+        stack.append(node)
+        for other in sorted(graph.get(node, ())):
+            if other not in index:
+                visit(other)
+                low[node] = min(low[node], low[other])
+            elif other in stack:
+                low[node] = min(low[node], index[other])
+        if low[node] == index[node]:
+            component = []
+            while not component or component[-1] != node:
+                component.append(stack.pop())
+            if len(component) > 1:
+                found.append(sorted(component))
+
+    for node in sorted(graph):
+        if node not in index:
+            visit(node)
+    return found
+
+
+def cycles_inside_subpackages(package=PACKAGE):
+    """{subpackage: its import cycles}, of its modules' imports of one another."""
+    graph = import_graph(package)
+    home = {name: place(name) for name in graph}
+    out = {}
+    for subpackage in sorted({home[n] for n in graph if n.count(".") > 1}):
+        inside = {n: {m for m in edges if home[m] == subpackage}
+                  for n, edges in graph.items() if home[n] == subpackage}
+        out[subpackage] = cycles(inside)
+    return out
 
 
 def test_every_module_lives_in_a_known_place():
     for path in modules():
         assert where(path) in ALLOWED or where(path) in TOP_LEVEL, path
+    # and every top-level module has its list (none left over for a module that is gone)
+    assert {where(p) for p in modules() if p.parent == PACKAGE} == set(TOP_LEVEL)
+
+
+def allowed(home):
+    """What a module of ``home`` (a subpackage or a top-level module) may import."""
+    return ALLOWED[home] | {home} if home in ALLOWED else TOP_LEVEL[home]
 
 
 @pytest.mark.parametrize("path", modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
 def test_imports_follow_the_one_way_flow(path):
     home = where(path)
-    if home in TOP_LEVEL:
-        return
     for module, _ in imports(path):
         if module == "reflectance.lazy":  # the public faces' loader imports nothing of ours
             continue
-        parts = module.split(".")
-        assert len(parts) >= 2 and parts[1] in ALLOWED, f"{path}: imports {module}"
-        target = parts[1]
-        assert target == home or target in ALLOWED[home], (
+        target = place(module)
+        assert target in ALLOWED or target in TOP_LEVEL, f"{path}: imports {module}"
+        assert target in allowed(home), (
             f"{path.relative_to(PACKAGE)} ({home}) imports {module}: {home} may import only "
-            f"{sorted(ALLOWED[home] | {home})}")
+            f"{sorted(allowed(home))}")
+
+
+@pytest.mark.parametrize("subpackage", sorted(ALLOWED))
+def test_no_import_cycle_inside_a_subpackage(subpackage):
+    assert cycles_inside_subpackages().get(subpackage, []) == [], (
+        f"{subpackage}: modules that import one another (at any depth)")
+
+
+def test_the_rules_allow_no_cycle():
+    """Between places the rules alone keep the flow one way: no two places may import each
+    other, directly or through others."""
+    rules = {home: allowed(home) - {home} for home in [*ALLOWED, *TOP_LEVEL]}
+    assert cycles(rules) == []
 
 
 @pytest.mark.parametrize("path", modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
@@ -78,12 +184,36 @@ def test_no_module_imports_another_modules_private_names(path):
 
 
 def test_the_checks_see_a_violation(tmp_path):
-    """The walker finds imports inside functions, and the rules reject an upward import."""
+    """The walker finds imports inside functions, and the rules reject an upward import, a
+    subpackage's import of the command line and the command line's of the config checks."""
     bad = tmp_path / "m.py"
     bad.write_text("def f():\n    from reflectance.papers.scenes import _x\n")
     (module, names), = imports(bad)
     assert module == "reflectance.papers.scenes" and names == ["_x"]
     assert "papers" not in ALLOWED["render"] and "render" not in ALLOWED["optics"]
+    assert place("reflectance.cli") not in allowed("bench") and "config" not in allowed("cli")
+    assert place("reflectance") == "__init__" and "__init__" in allowed("cli")
+
+
+def test_the_checks_see_a_planted_cycle(tmp_path):
+    """A cycle inside a subpackage, closed by an import inside a function (and through a name
+    of a module's package), is found; the same modules without it are not reported; and a cycle
+    in the rules is found too."""
+    package = tmp_path / "reflectance"
+    (package / "render").mkdir(parents=True)
+    (package / "render" / "__init__.py").write_text("")
+    (package / "render" / "a.py").write_text("from reflectance.render.b import g\n")
+    (package / "render" / "b.py").write_text("import numpy\n\n\ndef g():\n"
+                                             "    from reflectance.render import c\n")
+    (package / "render" / "c.py").write_text("def h():\n    from reflectance.render.a import x\n")
+    (package / "io.py").write_text("from reflectance.render import a\n")  # not inside one
+    assert import_graph(package)["reflectance.render.b"] == {"reflectance.render.c"}
+    assert cycles_inside_subpackages(package) == {
+        "render": [["reflectance.render.a", "reflectance.render.b", "reflectance.render.c"]]}
+    (package / "render" / "c.py").write_text("def h():\n    pass\n")
+    assert cycles_inside_subpackages(package) == {"render": []}
+    assert cycles({"render": {"io"}, "io": {"colour"}, "colour": {"render"}, "x": {"io"}}) == [
+        ["colour", "io", "render"]]
 
 
 def test_each_subpackage_has_a_public_face():

@@ -180,15 +180,16 @@ def test_exr_display_RGB_is_what_the_png_shows(tmp_path):
 def test_rgb_render_of_a_flat_material_equals_the_spectral_render():
     """The whole render path: a flat metal with spectral Schlick F renders with dE2000 0 as the
     RGB renderer (one visibility pass, Fig. 6's lights and exposure, a tiny image)."""
-    from reflectance.render.rgb import (dE2000_map, display_exposure,
-                                        render_spectral_and_rgb)
+    from reflectance.colour.difference import dE2000_map
+    from reflectance.io import cache
+    from reflectance.render.rgb import display_exposure, render_spectral_and_rgb
     from reflectance.render.scene import scene_from_dict
 
     document = _tiny_vase({"index": {"n": 0.4, "k": 3.0}, "s": 1.0, "d": 0.0, "m": 0.3,
                            "fresnel": "schlick"})
     scene = scene_from_dict(document)
-    traced = {}  # the gold scene below differs in its material only: one trace (bit for bit)
-    spectral, rgb = render_spectral_and_rgb(scene, "sRGB", traced)
+    cache.clear()  # the gold scene below differs in its material only: one trace (bit for bit)
+    spectral, rgb = render_spectral_and_rgb(scene, "sRGB", keep_trace=True)
     lit = spectral[..., 1] > 0
     assert lit.sum() > 50
     W = tristimulus_weights(scene.wavelengths, "D65", scene.observer)
@@ -199,8 +200,8 @@ def test_rgb_render_of_a_flat_material_equals_the_spectral_render():
     scene = scene_from_dict({**document, "objects": [{**document["objects"][0],
                                                       "material": gold}],
                              "spectra_dir": str(ROOT / "spectra")})
-    spectral, rgb = render_spectral_and_rgb(scene, "sRGB", traced)
-    assert len(traced) == 1
+    spectral, rgb = render_spectral_and_rgb(scene, "sRGB", keep_trace=True)
+    assert len(cache.TRACES) == 1
     dE = dE2000_map(rgb, spectral, display_exposure(spectral, scene), W.sum(axis=0))
     assert np.nanmax(dE[spectral[..., 1] > 0]) > 0.5
 

@@ -249,7 +249,8 @@ def test_fig8_texture_modulates_the_highlight(fig8, part):
     [C_min C3 / (cos^2 a (C3^2 - 1) + 1)]^2 / [C_min^2 / (cos^2 a (C_min^2 - 1) + 1)]^2. The
     texture lowers the peak (ratio (C_min / C3)^2 at a = 0) and widens the lobe (ratio > 1 far
     from the highlight)."""
-    from reflectance.render.pipeline import shade_samples, trace
+    from reflectance.render.integrator import shade_samples
+    from reflectance.render.tracing import trace
     from reflectance.render.scene import load_scene, scene_from_dict
     from reflectance.geometry.texture import texture
 
@@ -395,14 +396,14 @@ def test_fig7_rim_closeup_shows_the_edge_lit_highlight():
     E = np.subtract(c["position"], c["look_at"]) / np.linalg.norm(np.subtract(c["position"],
                                                                             c["look_at"]))
     np.testing.assert_allclose(n, (L + E) / np.linalg.norm(L + E), atol=1e-12)
-    peaks, traced = {}, {}  # one trace for the four renders, as the script shares it (bit for bit)
+    peaks = {}  # one trace for the four renders, as the script keeps it (bit for bit)
     for panel in "ab":
         q = fig7["panels"][panel]
         m = materials_Blinn1977(q["p_s"], q["p_d"], q["c3"], q["n"], "matched")
         for model in ("phong", "torrance_sparrow"):
             Y = render(scene_from_dict(blinn_scene_Blinn1977(fig7, m[model], edge,
                                                              CONFIG["wavelengths"], cam)),
-                       traced=traced).XYZ[..., 1]
+                       keep_trace=True).XYZ[..., 1]
             peaks[panel, model] = Y.max()
             if model == "torrance_sparrow":
                 bright = Y > 1  # brighter than display white

@@ -1,4 +1,4 @@
-"""The path-tracer cross-check (reflectance.render.crosscheck): our renders against Mitsuba 3's.
+"""The path-tracer cross-check (reflectance.bench.crosscheck): our renders against Mitsuba 3's.
 
 Mitsuba is an independent implementation (its own ray tracing, BSDFs, spectral sampling and CIE
 1931 colour matching functions), so agreement checks our geometry, light normalisation, BRDF
@@ -22,9 +22,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from reflectance.render.crosscheck import (equal_error_seconds, mitsuba_available,
+from reflectance.bench.crosscheck import (equal_error_seconds, mitsuba_available,
                                            render_mitsuba, scene_to_mitsuba)
-from reflectance.render.pipeline import pixel_difference_CIEDE2000, render
+from reflectance.colour.difference import pixel_difference_CIEDE2000
+from reflectance.render.pipeline import render
 from reflectance.render.scene import scene_from_dict
 
 
@@ -116,7 +117,7 @@ def test_a_scene_loaded_once_renders_what_a_fresh_load_renders(root, monkeypatch
     sampler fixes its base seed at load: a render that ignored it would differ)."""
     import mitsuba as mi
 
-    from reflectance.render.crosscheck import mitsuba_renderer, scene_to_mitsuba
+    from reflectance.bench.crosscheck import mitsuba_renderer, scene_to_mitsuba
 
     scene = sphere_scene(root, COPPER)
     mi.set_variant("scalar_spectral")
@@ -202,7 +203,7 @@ def synthetic_result(our_ladder, supersample=2):
 
 
 def test_our_fastest_rung_at_the_goal_meets_both_mean_and_p95():
-    from reflectance.render.crosscheck import fastest_at_goal
+    from reflectance.bench.crosscheck import fastest_at_goal
 
     assert fastest_at_goal(OUR_LADDER)["supersample"] == 2
     assert fastest_at_goal(OUR_LADDER, goal=(0.4, 1.5))["supersample"] == 1
@@ -210,7 +211,7 @@ def test_our_fastest_rung_at_the_goal_meets_both_mean_and_p95():
 
 
 def test_goal_comparison_is_mitsubas_time_at_the_goal_over_our_fastest_rung_meeting_it():
-    from reflectance.render.crosscheck import format_crosscheck, goal_comparison
+    from reflectance.bench.crosscheck import format_crosscheck, goal_comparison
 
     goal = goal_comparison(MITSUBA_LADDER, OUR_LADDER)
     assert goal["mitsuba_mean_s"] == pytest.approx(1 / 0.3**2, rel=1e-9)
@@ -228,7 +229,7 @@ def test_goal_comparison_is_mitsubas_time_at_the_goal_over_our_fastest_rung_meet
 
 
 def test_when_no_rung_of_ours_meets_the_goal_there_is_no_ratio():
-    from reflectance.render.crosscheck import format_crosscheck, goal_comparison
+    from reflectance.bench.crosscheck import format_crosscheck, goal_comparison
 
     missing = OUR_LADDER[:2]
     goal = goal_comparison(MITSUBA_LADDER, missing)
@@ -256,7 +257,7 @@ def test_without_mitsuba_its_tests_skip_outside_ci_and_fail_in_ci():
 
 
 def test_bench_without_mitsuba_prints_one_skip_line(root, capsys, monkeypatch):
-    import reflectance.render.crosscheck as crosscheck
+    import reflectance.bench.crosscheck as crosscheck
     from reflectance.cli import main
 
     monkeypatch.setattr(crosscheck, "find_spec",
@@ -279,7 +280,7 @@ def find_spec(name, *args):
 @needs_mitsuba
 def test_bench_crosscheck_measures_both_against_the_same_reference(root):
     from reflectance.cli import _default_bench_scene
-    from reflectance.render.crosscheck import bench_crosscheck, format_crosscheck
+    from reflectance.bench.crosscheck import bench_crosscheck, format_crosscheck
 
     doc = _default_bench_scene()
     doc["objects"][0]["geometry"].update(n_theta=48, n_profile_samples=40)  # a coarser vase
@@ -322,7 +323,7 @@ def test_bench_crosscheck_measures_both_against_the_same_reference(root):
 
 
 def test_mitsubas_spp_at_the_goal_is_a_square_past_both_mean_and_p95():
-    from reflectance.render.crosscheck import spp_at_goal
+    from reflectance.bench.crosscheck import spp_at_goal
 
     # error ~ spp^(-1/2): the mean 0.3 needs 1 / 0.09 = 11.1 spp, the p95 1.0 needs 3^2 = 9
     ladder = [{"spp": spp, "vs_ours": [spp ** -0.5, 3 * spp ** -0.5]} for spp in (4, 16, 64)]
@@ -333,7 +334,7 @@ def test_mitsubas_spp_at_the_goal_is_a_square_past_both_mean_and_p95():
 
 
 def test_whole_commands_line_says_what_each_image_scores_or_why_there_is_none():
-    from reflectance.render.crosscheck import format_crosscheck
+    from reflectance.bench.crosscheck import format_crosscheck
 
     result = synthetic_result(OUR_LADDER)
     result["whole_commands"] = {
@@ -362,17 +363,17 @@ def test_whole_commands_line_says_what_each_image_scores_or_why_there_is_none():
 
 @needs_mitsuba
 def test_mitsubas_whole_command_renders_the_exported_scene(root, tmp_path):
-    """The bench's Mitsuba command (a fresh process: reflectance.render.mitsuba_command) renders
+    """The bench's Mitsuba command (a fresh process: reflectance.bench.mitsuba_command) renders
     the scene the in-process export renders, bit for bit, at the same spp and seed 0."""
     import mitsuba as mi
 
-    from reflectance.render.crosscheck import mitsuba_renderer
-    from reflectance.render.mitsuba_command import save_scene
+    from reflectance.bench.crosscheck import mitsuba_renderer
+    from reflectance.bench.mitsuba_command import save_scene
 
     scene = sphere_scene(root, COPPER)
     mi.set_variant("scalar_spectral")
     save_scene(scene_to_mitsuba(scene, tmp_path, spp=4), scene.camera, tmp_path / "scene.json")
-    subprocess.run([sys.executable, "-m", "reflectance.render.mitsuba_command",
+    subprocess.run([sys.executable, "-m", "reflectance.bench.mitsuba_command",
                     str(tmp_path / "scene.json"), "scalar_spectral", "16",
                     str(tmp_path / "out.exr")], check=True, capture_output=True)
     written = np.array(mi.Bitmap(str(tmp_path / "out.exr")), dtype=np.float64)[..., :3]
@@ -390,7 +391,7 @@ def test_our_whole_command_takes_a_material_file_of_the_scene_along(root, tmp_pa
 
     import mitsuba as mi
 
-    from reflectance.render.crosscheck import whole_commands
+    from reflectance.bench.crosscheck import whole_commands
 
     mi.set_variant("scalar_spectral")  # (the bench's cross-check sets it before the export)
     folder = tmp_path / "scenes"

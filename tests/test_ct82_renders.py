@@ -528,14 +528,14 @@ def test_every_ambient_reference_the_schema_allows_has_its_caption(fig):
 
 
 def test_fig8_of_several_bands_gives_the_one_band_table(fig8, tmp_path, monkeypatch):
-    """An image too large for one band keeps no trace (pipeline.render); Fig. 8 then traces it
+    """An image too large for one band keeps no trace (tracing.trace_once); Fig. 8 then traces it
     whole for its part table, which must be the one-band table (here forced: bands of 60 rows,
     the last one of 16; that banded renders equal one pass is test_render_tiles' claim)."""
-    import reflectance.render.pipeline as pipeline
+    import reflectance.render.tracing as tracing
 
-    monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 1)
-    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 60 * 320)
-    bands = pipeline.tiles(SimpleNamespace(shape=(256, 320), supersample=1))
+    monkeypatch.setattr(tracing, "SINGLE_TILE_SAMPLES", 1)
+    monkeypatch.setattr(tracing, "TILE_SAMPLES", 60 * 320)
+    bands = tracing.tiles(SimpleNamespace(shape=(256, 320), supersample=1))
     assert bands == [(0, 60), (60, 120), (120, 180), (180, 240), (240, 256)]
     banded = run_fig8(tmp_path)
     pd.testing.assert_frame_equal(pd.read_csv(banded.csv), pd.read_csv(fig8.csv))

@@ -6,8 +6,8 @@ import pytest
 
 from reflectance.cli import main
 from reflectance.io.images import read_exr
-from reflectance.render.pipeline import (display_image, image_difference_CIEDE2000, render,
-                                         render_to_files, write_render)
+from reflectance.colour.difference import image_difference_CIEDE2000
+from reflectance.render.pipeline import display_image, render, render_to_files, write_render
 from reflectance.render.scene import load_scene, scene_from_dict
 from reflectance.render.shading import emission_XYZ
 
@@ -146,7 +146,7 @@ def test_supersampling_converges(spectra):
 
 def test_table_is_within_dE2000_001_of_brute_force_on_the_copper_vase(root, spectra):
     from reflectance.papers.scenes import fig6_scene_CookTorrance1982
-    from reflectance.render.bench import load_bench_scene
+    from reflectance.bench.measure import load_bench_scene
 
     doc = fig6_scene_CookTorrance1982("b", "irradiance", spectra_dir=spectra)
     scene = load_bench_scene(doc, spectra_dir=spectra, width=48, height=64, supersample=2)

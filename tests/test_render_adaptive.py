@@ -8,8 +8,9 @@ import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from reflectance.colour.difference import pixel_difference_CIEDE2000
 from reflectance.render.adaptive import Refinement, refine_mask, refinement_bands
-from reflectance.render.pipeline import pixel_difference_CIEDE2000, render
+from reflectance.render.pipeline import render
 from reflectance.render.scene import SceneError, scene_from_dict
 from reflectance.render.visibility import visibility
 

@@ -169,7 +169,7 @@ def test_bench_reports_each_size_and_phase(root, capsys):
 
 
 def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
-    import reflectance.render.bench as bench
+    import reflectance.bench.run as bench
 
     def fake_run_bench(*args, progress=None, **kwargs):
         progress.update(0, "size 8 (1/1)")
@@ -184,10 +184,10 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
 
 def test_bench_command_defaults_are_the_librarys(monkeypatch):
     """`reflectance bench` without options passes run_bench its own defaults for the references
-    and the cross-check (the parser reads them from reflectance.render.bench)."""
+    and the cross-check (the parser reads them from reflectance.bench.measure)."""
     import inspect
 
-    import reflectance.render.bench as bench
+    import reflectance.bench.run as bench
 
     real = inspect.signature(bench.run_bench)
     passed = {}

@@ -106,7 +106,7 @@ def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(ro
     """The bench's converged-reference error is 0 when the image is the reference itself, and
     positive (CIEDE2000 mean <= p95) with fewer samples."""
     from reflectance.cli import _default_bench_scene
-    from reflectance.render.bench import bench_size
+    from reflectance.bench.measure import bench_size
 
     doc = _default_bench_scene()
     same = bench_size(doc, 16, supersample=2, runs=1, brute_force_runs=0,
@@ -115,5 +115,5 @@ def test_bench_error_against_the_reference_vanishes_at_the_reference_sampling(ro
     fewer = bench_size(doc, 16, supersample=1, runs=1, brute_force_runs=0,
                        spectra_dir=root / "spectra", reference_supersample=4)
     assert 0.0 < fewer["dE_reference_mean"] and fewer["dE_reference_p95"] > 0.0
-    from reflectance.render.bench import crosscheck_status
+    from reflectance.bench.run import crosscheck_status
     assert "Mitsuba" in crosscheck_status()

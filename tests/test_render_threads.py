@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 import yaml
 
-import reflectance.render.pipeline as pipeline
+import reflectance.render.tracing as tracing
 from reflectance.render.parallel import THREADS_VARIABLE, pieces, render_threads
 from reflectance.render.pipeline import render
 from reflectance.render.scene import scene_from_dict
@@ -49,9 +49,9 @@ def test_threads_render_bands_bit_for_bit(root, monkeypatch):
     import reflectance.render.shadows as shadows
 
     scene = hard_scene(root, size=40, adaptive=False)
-    monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 0)
-    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 40 * 2 * 2 * 7)  # bands of 7 pixel rows
-    assert len(pipeline.tiles(scene.camera)) == 6
+    monkeypatch.setattr(tracing, "SINGLE_TILE_SAMPLES", 0)
+    monkeypatch.setattr(tracing, "TILE_SAMPLES", 40 * 2 * 2 * 7)  # bands of 7 pixel rows
+    assert len(tracing.tiles(scene.camera)) == 6
     # a band here holds 1,120 samples, fewer than pieces' least (4,096): split them anyway, into
     # pieces of at least 16, so that each band's shadows and shading are shared between threads
     split = []

@@ -1,11 +1,13 @@
-"""Rendering in bands of rows (reflectance.render.pipeline.tiles): the same image as one pass."""
+"""Rendering in bands of rows (reflectance.render.tracing.tiles): the same image as one pass."""
 
 import numpy as np
 import pytest
 
 import reflectance.render.pipeline as pipeline
+import reflectance.render.tracing as tracing
 from reflectance.render.camera import Camera
-from reflectance.render.pipeline import render, tiles
+from reflectance.render.pipeline import render
+from reflectance.render.tracing import tiles
 from reflectance.render.scene import scene_from_dict
 from reflectance.render.visibility import visibility
 
@@ -60,8 +62,8 @@ def test_a_band_of_visibility_is_those_rows_of_the_whole(root):
 def test_banded_render_equals_one_pass(root, monkeypatch):
     scene = sphere_on_plane(root / "spectra")
     one = render(scene)
-    monkeypatch.setattr(pipeline, "SINGLE_TILE_SAMPLES", 0)
-    monkeypatch.setattr(pipeline, "TILE_SAMPLES", 1000)  # 6 sample rows (3 pixel rows) of 128
+    monkeypatch.setattr(tracing, "SINGLE_TILE_SAMPLES", 0)
+    monkeypatch.setattr(tracing, "TILE_SAMPLES", 1000)  # 6 sample rows (3 pixel rows) of 128
     assert len(tiles(scene.camera)) == 96 // 6
     banded = render(scene)
     for key in ("raster_miss", "recovered", "searched", "dropped", "hit", "seen_from_back"):
@@ -80,36 +82,40 @@ def test_display_in_bands_is_the_same_image(root, monkeypatch, key):
     computed band by band, equal the one-call result exactly."""
     import dataclasses
 
+    import reflectance.colour.exposure as exposure
+
     scene = sphere_on_plane(root / "spectra")
     if key is not None:
         scene = dataclasses.replace(scene, display=dataclasses.replace(scene.display, key=key))
     result = render(scene)
     whole, scale = pipeline.display_image(result)
-    monkeypatch.setattr(pipeline, "_DISPLAY_BAND_PIXELS", 200)  # 3 rows of 64 pixels
+    monkeypatch.setattr(exposure, "_BAND_PIXELS", 200)  # 3 rows of 64 pixels
     banded, banded_scale = pipeline.display_image(result)
     assert banded_scale == scale != 1.0
     np.testing.assert_array_equal(banded, whole)
 
 
 def test_a_cached_trace_renders_other_materials_exactly_as_a_fresh_one(root, monkeypatch):
-    """render(traced=...): scenes that differ only in materials and light strength reuse one
-    trace (Cook & Torrance's Fig. 7 vases) and give the very pixels of a render without it; a
+    """render(keep_trace=True): scenes that differ only in materials and light strength reuse
+    one trace (Cook & Torrance's Fig. 7 vases) and give the very pixels of a render without it; a
     moved light or camera is traced again."""
+    from reflectance.io import cache
+
     first = sphere_on_plane(root / "spectra")
     other = sphere_on_plane(root / "spectra")
     object.__setattr__(other.objects[0], "material", first.objects[1].material)  # albedo 1.0
     calls = []
-    real_trace = pipeline.trace
-    monkeypatch.setattr(pipeline, "trace", lambda *a, **k: calls.append(1) or real_trace(*a, **k))
-    traced = {}
-    got_first = render(first, traced=traced)
-    got_other = render(other, traced=traced)
-    assert len(calls) == 1 and len(traced) == 1
+    real_trace = tracing.trace
+    monkeypatch.setattr(tracing, "trace", lambda *a, **k: calls.append(1) or real_trace(*a, **k))
+    cache.clear()
+    got_first = render(first, keep_trace=True)
+    got_other = render(other, keep_trace=True)
+    assert len(calls) == 1 and len(cache.TRACES) == 1
     np.testing.assert_array_equal(got_first.XYZ, render(first).XYZ)
     np.testing.assert_array_equal(got_other.XYZ, render(other).XYZ)
     assert not np.array_equal(got_first.XYZ, got_other.XYZ)  # the material did change
     assert got_other.stats == render(other).stats
     moved = sphere_on_plane(root / "spectra", supersample=3)
-    assert pipeline.trace_key(moved) != pipeline.trace_key(first)
-    render(moved, traced=traced)
-    assert len(traced) == 2
+    assert tracing.trace_key(moved) != tracing.trace_key(first)
+    render(moved, keep_trace=True)
+    assert len(cache.TRACES) == 2

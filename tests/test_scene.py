@@ -383,7 +383,7 @@ def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
     """Scenes that differ only in material share one composition (a deep copy each, so a scene
     that changes its mesh changes no other); another transform or object is composed anew."""
     from reflectance.geometry.shapes import compose, sphere
-    from reflectance.render import scene as scene_module
+    from reflectance.io import cache
 
     def arrays(mesh):
         return {**{f"p.{k}": np.asarray(mesh.point_data[k]) for k in mesh.point_data},
@@ -391,7 +391,7 @@ def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
                 **{f"f.{k}": np.asarray(mesh.field_data[k]) for k in mesh.field_data},
                 "points": np.asarray(mesh.points), "faces": np.asarray(mesh.faces)}
 
-    scene_module._COMPOSED.clear()
+    cache.clear()
     two = [{"geometry": {"type": "sphere", "radius": 1.0}, "material": {"name": "Cu", "m": 0.3}},
            {"geometry": {"type": "sphere", "radius": 0.5, "center": [2, 0, 0]},
             "material": {"name": "Au", "m": 0.2}}]
@@ -399,7 +399,7 @@ def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
     other = copy.deepcopy(two)
     other[0]["material"], other[1]["material"] = {"name": "Ag", "m": 0.1}, {"name": "Cu", "m": 0.4}
     second = scene_from_dict(minimal(objects=other), spectra_dir=spectra)
-    assert len(scene_module._COMPOSED) == 1 and second.mesh is not first.mesh
+    assert len(cache.COMPOSED_MESHES) == 1 and second.mesh is not first.mesh
     # the same bytes as composing the objects directly
     direct = compose([(sphere((0, 0, 0), 1.0, 96, 48), 0), (sphere((2, 0, 0), 0.5, 96, 48), 1)])
     expected = arrays(direct)
@@ -414,5 +414,5 @@ def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
     moved = copy.deepcopy(two)
     moved[1]["transform"] = {"offset": [0, 0, 1]}
     placed = scene_from_dict(minimal(objects=moved), spectra_dir=spectra)
-    assert len(scene_module._COMPOSED) == 2
+    assert len(cache.COMPOSED_MESHES) == 2
     assert not np.array_equal(np.asarray(placed.mesh.points), expected["points"])

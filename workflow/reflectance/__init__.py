@@ -5,6 +5,8 @@ The folders are the architecture; data flows one way, from the bottom of this li
 - ``cli``, ``config``, ``scripting``, ``resume``: the ``reflectance`` command and the workflow's
   support (``resume``: a plain ``snakemake`` resumes a run that was killed);
 - ``papers``: what only one text needs (V-groove simulations, plots, scenes from config.yaml);
+- ``bench``: the renderer's speed, memory and accuracy (``reflectance bench``), and a path
+  tracer's cross-check of it;
 - ``audit``: how far each shortcut lies from the exact spectral answer;
 - ``render``: a spectral renderer that takes a scene (camera ... shading, scene files, pipeline);
 - ``geometry``: shapes, the watch, texture patterns;
@@ -21,7 +23,7 @@ from importlib import import_module
 
 __version__ = "0.1.0"
 
-_SUBPACKAGES = ("optics", "colour", "geometry", "render", "audit", "papers", "io")
+_SUBPACKAGES = ("optics", "colour", "geometry", "render", "audit", "papers", "bench", "io")
 
 __all__ = ["__version__", *_SUBPACKAGES]
 

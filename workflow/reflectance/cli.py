@@ -586,8 +586,8 @@ def _run_render(args):
 # -- reflectance bench --------------------------------------------------------------------------
 
 def _add_bench(sub):
-    # the bench's defaults (reflectance.render.bench imports nothing heavy at import)
-    from reflectance.render.bench import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
+    # the bench's defaults (reflectance.bench.measure imports nothing heavy at import)
+    from reflectance.bench.measure import (CROSSCHECK_SIZE, CROSSCHECK_SPP,
                                           CROSSCHECK_SUPERSAMPLES, REFERENCE_MAX_SAMPLES,
                                           REFERENCE_SUPERSAMPLE)
 
@@ -664,7 +664,7 @@ def _run_bench(args):
     import json
 
     from reflectance.io.progress import Progress
-    from reflectance.render.bench import format_report, run_bench
+    from reflectance.bench.run import format_report, run_bench
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")

@@ -6,7 +6,7 @@
 # Cook & Torrance 1982, Fig. 6, the two vases: the default figure (fig6.published) and one figure
 # per reading of the paper's ambient term (fig6.ambient_readings).
 # One job for the whole family: the variants share one process's imports and, where their
-# geometry, camera and lights agree (pipeline.trace_key), one trace. The trade-off: editing one
+# geometry, camera and lights agree (tracing.trace_key), one trace. The trade-off: editing one
 # variant's parameter (a reading, fig6.published) reruns them all.
 CT82_FIG6_DEF, CT82_FIG6_PARAMS, CT82_FIG6_OUTPUTS = figure_rule("ct82_fig6")
 TARGETS += flat_outputs(CT82_FIG6_OUTPUTS)

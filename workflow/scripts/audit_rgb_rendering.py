@@ -8,9 +8,9 @@ import numpy as np
 import pandas as pd
 from matplotlib.colors import BoundaryNorm
 
-from reflectance.render.rgb import (dE2000_map, dE2000_statistics, display_exposure,
-                                          render_spectral_and_rgb)
+from reflectance.render.rgb import display_exposure, render_spectral_and_rgb
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.difference import dE2000_map, dE2000_statistics
 from reflectance.colour.display import display_tag, XYZ_to_display, XYZ_to_linear_RGB
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
@@ -32,14 +32,14 @@ with script_log(snakemake) as log:
              fig7_vases_CookTorrance1982(p.fig7, fig6, p.table1) if group == "metal"}
     metals, labels = list(vases), p.fig7["labels"]
     rows, shown = [], []
-    traced = {}  # the metals share vase, camera and lights: traced once (pipeline.render)
     for metal in metals:
         # Fig. 7's vase of this metal exactly as the default figure renders it, at the audit's size
         document = vase_scene_CookTorrance1982(fig6, vases[metal], published["ambient_reference"],
                                                p.wavelengths, colour_cfg, spectra_dir,
                                                cfg["image"], exposure=published["exposure"])
         scene = scene_from_dict(document, source=f"audits.rgb_rendering {metal}")
-        spectral, rgb = render_spectral_and_rgb(scene, colour_cfg["space"], traced)
+        # the metals share vase, camera and lights: traced once (keep_trace)
+        spectral, rgb = render_spectral_and_rgb(scene, colour_cfg["space"], keep_trace=True)
         scale = display_exposure(spectral, scene)  # both shown as the spectral vase is
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         white = W.sum(axis=0)

@@ -30,18 +30,18 @@ with script_log(snakemake) as log:
     stems, lights = definition.stems(params, folder), fig_cfg["lights"]
     closeup = definition.rim_light(fig_cfg)
     images, Y, rows, rims = {}, {}, [], {}
-    traced = {}  # the renders share the object: one trace per camera and light (pipeline.render)
+    # the renders share the object: one trace per camera and light (keep_trace)
     for item in definition.scenes(params, folder=folder):  # the scenes the check validated
         key = item.tags["key"]
         scene = scene_from_dict(item.document, source=f"config.yaml figures.blinn_1977.fig7 {key}")
         if item.written:
             stem = stems[key]
             result = render_to_files(scene, item.file, f"{stem}.exr", f"{stem}.png",
-                                     traced=traced)
+                                     keep_trace=True)
             images[key], Y[key] = result.display[0], result.XYZ[..., 1]
             log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
         else:  # the highlight close up (fig7.rim_closeup), for the inset
-            rims[key] = render(scene, traced=traced).XYZ[..., 1]
+            rims[key] = render(scene, keep_trace=True).XYZ[..., 1]
             log.info("%s close up: max i = %.4f", key, rims[key].max())
     for panel, p in fig_cfg["panels"].items():
         for reading in fig_cfg["phong_specular_readings"]:

@@ -13,7 +13,8 @@ from PIL import Image, ImageDraw, ImageFont
 from reflectance.colour.display import display_tag
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.render.pipeline import RenderResult, display_image, shade_samples
+from reflectance.render.integrator import shade_samples
+from reflectance.render.pipeline import RenderResult, display_image
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import blinn77_fig7_sweep as definition
 from reflectance.papers.scenes import (highlight_crossover_Blinn1977, mirror_highlight_Blinn1977,

@@ -23,14 +23,14 @@ with script_log(snakemake) as log:
     cfg, fig7, out = params["fig"], params["fig7"], snakemake.output
     u, v = np.meshgrid(np.linspace(0, 1, 721), np.linspace(0, 1, 201))
     images, maps, rows = {}, {}, []
-    traced = {}  # both patterns on one object, camera and light: traced once (pipeline.render)
+    # both patterns on one object, camera and light: traced once (keep_trace)
     for item in definition.scenes(params):  # the scenes the config check validated
         part = item.tags["pattern"]
         pattern = cfg["patterns"][part]
         scene = scene_from_dict(item.document,
                                 source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
         result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                 out[f"{part}_png"], traced=traced)
+                                 out[f"{part}_png"], keep_trace=True)
         images[part] = result.display[0]
         # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
         maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),

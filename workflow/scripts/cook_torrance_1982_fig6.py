@@ -5,7 +5,7 @@ brightest colour), or, for the default figure (``params.published``), with the o
 its highlights compressed at constant chromaticity, and Fig. 6a's labelled departure beside the
 printed panel. Also tabulates the size of the ambient term and how each panel reads. One process
 makes every variant (the default figure, then each reading; outputs named ``<reading>_<name>``):
-they share the imports and, where their geometry, camera and lights agree (pipeline.trace_key), the
+they share the imports and, where their geometry, camera and lights agree (tracing.trace_key), the
 trace."""
 
 from pathlib import Path
@@ -15,6 +15,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
+from reflectance.io.cache import TRACES
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material
 from reflectance.papers.figures import ct82_fig6 as definition
@@ -47,7 +48,7 @@ def title_of(item, fig_cfg):
             f"(departure;\nprinted: {departure_text(printed)})")
 
 
-def variant(log, out, reference, published, traced, items):
+def variant(log, out, reference, published, items):
     """One variant of the figure (its scenes ``items``): panels, table and figure to ``out``."""
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
@@ -59,8 +60,8 @@ def variant(log, out, reference, published, traced, items):
         scene = scene_from_dict(item.document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
                                                       f"panel {part}")
         result = (render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
-                                  out[f"{part}_png"], components=True, traced=traced) if written
-                  else render(scene, components=True, traced=traced))
+                                  out[f"{part}_png"], components=True, keep_trace=True)
+                  if written else render(scene, components=True, keep_trace=True))
         rgb, scale = result.display or display_image(result)  # as written, or not written
         images.append((title, rgb)), covered.append(result.XYZ)
         Y = {name: value[..., 1] for name, value in result.components.items()}
@@ -115,7 +116,7 @@ def variant(log, out, reference, published, traced, items):
 
 
 with script_log(snakemake) as log:
-    traced = {}  # the variants' panels share vase, camera and lights: traced once (pipeline.render)
+    # the variants' panels share vase, camera and lights: traced once (keep_trace)
     # the default figure (if params.published; unprefixed outputs), then each reading
     params = params_dict(snakemake.params)
     variants = definition.variants(params)
@@ -123,6 +124,6 @@ with script_log(snakemake) as log:
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         variant(log, {key: getattr(snakemake.output, prefix + key) for key in definition.FILES},
-                reference, published, traced,
+                reference, published,
                 [item for item in scenes if item.tags["prefix"] == prefix])
-    log.info("%d distinct traces for %d variants", len(traced), len(variants))
+    log.info("%d distinct traces for %d variants", len(TRACES), len(variants))

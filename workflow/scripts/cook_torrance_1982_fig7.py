@@ -7,7 +7,7 @@ per-vase factors of ``fig7.vase_exposure``; the readings of
 the ambient term show the grid as ONE scene (one Cook & Torrance exposure). Plus labelled variants
 (not in the paper) and a table of each vase's parameters, colour and how it reads. One process makes
 every variant (the default figure, then each reading of ``params.readings``; outputs named
-``<reading>_<name>``): they share the imports and the vases' trace (pipeline.trace_key)."""
+``<reading>_<name>``): they share the imports and the vases' trace (tracing.trace_key)."""
 
 from pathlib import Path
 
@@ -16,6 +16,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag, XYZ_to_display
+from reflectance.io.cache import TRACES
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
@@ -41,7 +42,7 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
-def variant(log, out, reference, published, traced, items):
+def variant(log, out, reference, published, items):
     """One variant of the figure (its vases' scenes ``items``): table and grid written to
     ``out``."""
     p = snakemake.params
@@ -54,7 +55,7 @@ def variant(log, out, reference, published, traced, items):
                                                                "material"))
         scene = scene_from_dict(item.document, source=f"config.yaml {item.source} {vase}")
         result = render_to_files(scene, out["scenes"][k], out["exrs"][k],
-                                 out["pngs"][k] if published else None, traced=traced)
+                                 out["pngs"][k] if published else None, keep_trace=True)
         rgb, scale = result.display  # the vase alone, as its scene file shows it
         W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)
         F0 = load_material(material["name"], scene.wavelengths, spectra_dir).F0 @ W
@@ -130,7 +131,7 @@ def variant(log, out, reference, published, traced, items):
 
 
 with script_log(snakemake) as log:
-    traced = {}  # the variants' vases share geometry, camera and lights: traced once (pipeline.render)
+    # the variants' vases share geometry, camera and lights: traced once (keep_trace)
     # the default figure (if params.published; unprefixed outputs), then each reading
     params = params_dict(snakemake.params)
     variants = definition.variants(params)
@@ -140,6 +141,6 @@ with script_log(snakemake) as log:
         out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}
         if published:  # the default figure alone writes each vase's PNG
             out["pngs"] = getattr(snakemake.output, "pngs")
-        variant(log, out, reference, published, traced,
+        variant(log, out, reference, published,
                 [item for item in scenes if item.tags["prefix"] == prefix])
-    log.info("%d distinct traces for %d variants", len(traced), len(variants))
+    log.info("%d distinct traces for %d variants", len(TRACES), len(variants))

@@ -12,7 +12,8 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
 from reflectance.io.figures import new_figure, savefig
-from reflectance.render.pipeline import render_to_files, trace_once
+from reflectance.render.pipeline import render_to_files
+from reflectance.render.tracing import trace_once
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import ct82_fig8 as definition
 from reflectance.scripting import params_dict, script_log
@@ -27,18 +28,17 @@ with script_log(snakemake) as log:
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
     watch, = definition.scenes(params_dict(p), spectra_dir)  # the scene the check validated
     scene = scene_from_dict(watch.document, source=f"config.yaml {watch.source}")
-    traced = {}  # the render's camera samples, reused below (pipeline.render)
-    result = render_to_files(scene, out.scene, out.exr, out.render_png, traced=traced)
+    # the render's camera samples, reused below (keep_trace)
+    result = render_to_files(scene, out.scene, out.exr, out.render_png, keep_trace=True)
     rgb, scale = result.display
     log.info("render %s, exposure scale %.6g", result.timings, scale)
 
     # what each pixel shows: the fraction of its samples on each part; the colour it is shown in
     display = dict(illuminant=colour_cfg["illuminant"], observer=scene.observer,
                    wavelengths=scene.wavelengths)
-    if traced:  # the one trace: every camera sample of the image
-        (samples, _), = traced.values()
-    else:  # an image of several bands keeps no trace (pipeline.render): trace it whole here
-        samples, _, _ = trace_once(scene, None)
+    # every camera sample of the image: the render's own trace, or, for an image of several
+    # bands (which keeps none), traced whole here
+    samples, _, _ = trace_once(scene)
     stats = part_pixels(samples, scene.mesh.cell_data["part"],
                         result.XYZ, scale, colour_cfg["space"], colour_cfg["gamut_clip"], display)
     W = tristimulus_weights(scene.wavelengths, colour_cfg["illuminant"], scene.observer)

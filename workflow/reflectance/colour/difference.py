@@ -1,4 +1,9 @@
-"""Colour differences: CIEDE2000.
+"""Colour differences: CIEDE2000, per colour and over images.
+
+:func:`delta_E_CIE2000` is the formula; the rest compare two XYZ images as a display shows them
+(both scaled by one exposure, in CIELAB of the display white): :func:`dE2000_map` per pixel, and
+the statistics the renderer's checks report over the lit pixels (:func:`dE2000_statistics`,
+:func:`pixel_difference_CIEDE2000` and its mean with the 95th percentile or the maximum).
 
 References
 ----------
@@ -13,7 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["delta_E_CIE2000"]
+__all__ = ["delta_E_CIE2000", "dE2000_map", "dE2000_statistics", "pixel_difference_CIEDE2000",
+           "difference_statistics_CIEDE2000", "image_difference_CIEDE2000"]
 
 
 def delta_E_CIE2000(Lab_1, Lab_2, textiles=False):
@@ -114,3 +120,72 @@ def delta_E_CIE2000(Lab_1, Lab_2, textiles=False):
         + (delta_H_p / (k_H * S_H)) ** 2
         + R_T * (delta_C_p / (k_C * S_C)) * (delta_H_p / (k_H * S_H))
     )
+
+
+def dE2000_map(XYZ, XYZ_reference, scale, white):
+    """CIEDE2000 per pixel of two XYZ images, both scaled by ``scale``, in CIELAB of ``white``.
+
+    Parameters
+    ----------
+    XYZ, XYZ_reference : array_like, shape (..., 3)
+    scale : float
+        Exposure (the reference's display scale: the difference as the figure shows it).
+    white : array_like, shape (3,)
+        The display white, Y = 1.
+    """
+    from reflectance.colour.colorimetry import XYZ_to_Lab
+
+    white = np.asarray(white, dtype=np.float64)
+    xy = white[:2] / white.sum()
+    lab = [XYZ_to_Lab(np.asarray(x, dtype=np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
+    return delta_E_CIE2000(lab[0], lab[1])
+
+
+def dE2000_statistics(dE, mask, percentile=95.0):
+    """``{"mean", "p<percentile>", "max"}`` of ``dE`` over ``mask`` (NaN if the mask is empty)."""
+    values = np.asarray(dE)[np.asarray(mask, dtype=bool)]
+    if values.size == 0:
+        return {"mean": np.nan, f"p{percentile:g}": np.nan, "max": np.nan}
+    return {"mean": float(values.mean()), f"p{percentile:g}": float(np.percentile(values, percentile)),
+            "max": float(values.max())}
+
+
+def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                               wavelengths=None):
+    """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
+    reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
+    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
+    from reflectance.colour.display import expose_CookTorrance1982
+
+    observer = observer or OBSERVER_DEFAULT
+    _, scale = expose_CookTorrance1982(XYZ_reference, "sRGB", illuminant, observer, wavelengths)
+    dE = dE2000_map(XYZ, XYZ_reference, scale, white_XYZ(illuminant, observer, wavelengths))
+    lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
+    return dE[lit]
+
+
+def _mean_and(dE, statistic):
+    """(mean, ``statistic``) of the differences ``dE``; (0, 0) when there are none."""
+    if not len(dE):
+        return 0.0, 0.0
+    return float(dE.mean()), float(statistic(dE))
+
+
+def difference_statistics_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                                    wavelengths=None):
+    """(mean, 95th percentile) of :func:`pixel_difference_CIEDE2000`; (0, 0) when no pixel is
+    lit."""
+    return _mean_and(pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer,
+                                                wavelengths), lambda dE: np.percentile(dE, 95))
+
+
+def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
+                               wavelengths=None):
+    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
+
+    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
+    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
+    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
+    """
+    return _mean_and(pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer,
+                                                wavelengths), np.max)

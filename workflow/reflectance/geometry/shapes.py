@@ -129,9 +129,6 @@ _MESH_ARRAYS = {"points": (np.float64, 3), "normals": (np.float64, 3), "uv": (np
 """The arrays of a cached mesh: dtype and columns (None: one value per triangle)."""
 
 
-MESH_CACHE_PATTERN = r"meshes-[0-9a-f]{16}-numpy-[^/]+-scipy-[^/]+-pyvista-[^/]+"
-"""The names of the cached meshes' folders (:func:`_mesh_cache_name`): the only folders pruned."""
-
 MESH_CACHE_STALE_DAYS = 7
 """A folder of meshes for another code or library version is removed once it has gone this
 many days without a new mesh (another checkout in use keeps its own)."""
@@ -139,8 +136,9 @@ many days without a new mesh (another checkout in use keeps its own)."""
 
 @functools.lru_cache(maxsize=1)
 def _mesh_cache_name():
-    """The cached meshes' folder name: this module's source and the numpy, scipy and pyvista that
-    built them, so that a change of any builds them again."""
+    """The cached meshes' folder name (of the form
+    :data:`reflectance.io.cache.DISK_FOLDERS` gives): this module's source and the numpy, scipy
+    and pyvista that built them, so that a change of any builds them again."""
     from reflectance.io.cache import distribution_version, source_digest
 
     return (f"meshes-{source_digest(__file__)}-numpy-{distribution_version('numpy', 'numpy')}"
@@ -168,7 +166,7 @@ def _cached_mesh(kind, build, *args):
     written, just build."""
     import zipfile
 
-    from reflectance.io.cache import file_name, prune, store
+    from reflectance.io.cache import DISK_FOLDERS, file_name, prune, store
 
     try:
         path = _mesh_cache_directory() / file_name(_MESH_FORMAT, kind, args, ".npz",
@@ -202,7 +200,8 @@ def _cached_mesh(kind, build, *args):
                   "part": np.asarray(mesh.cell_data["part"]),
                   "sphere_index": np.asarray(mesh.cell_data["sphere_index"])}
         if not path.parent.exists():  # a new code or library version: drop the stale meshes
-            prune(path.parent, MESH_CACHE_PATTERN, MESH_CACHE_STALE_DAYS)
+            # (only folders of the meshes' name: DISK_FOLDERS, which _mesh_cache_name follows)
+            prune(path.parent, DISK_FOLDERS["meshes"], MESH_CACHE_STALE_DAYS)
         store(path, lambda file: np.savez(file, **arrays))
     return mesh
 

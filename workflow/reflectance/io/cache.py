@@ -1,25 +1,139 @@
-"""The small on-disk cache of values computed once and then read with numpy only.
+"""The library's caches, each named and bounded, and the one way to clear them (:func:`clear`).
 
-Its folder is ``$REFLECTANCE_CACHE`` or ``${XDG_CACHE_HOME:-~/.cache}/reflectance``; each user of
-it (:mod:`reflectance.colour.tables`, the meshes of :mod:`reflectance.geometry.shapes`) keeps a
-folder of its own there, named after what its values depend on, and names each file by a hash of
-what it holds. Files are written atomically (a temporary file, then a rename), so a reader sees a
-whole file or none; an unwritable or unreadable cache is ignored (the values are computed again).
+In this process, a :class:`Memo` keeps at most its ``limit`` of values by key, the least recently
+used dropped first. The library's memos, all of them here (:data:`MEMOS` by name):
+
+- :data:`BUILT_MESHES`, the meshes built from a scene's geometry keys
+  (:mod:`reflectance.render.scene`): a figure that renders many scenes of one object (Cook &
+  Torrance's thirteen Fig. 7 vases) builds it once;
+- :data:`COMPOSED_MESHES`, the scenes' composed meshes by their objects' geometry and
+  transform keys: scenes that differ only in materials, lights or camera compose them once;
+- :data:`TRACES`, camera visibility and shadow masks by what they depend on
+  (:func:`reflectance.render.tracing.trace_key`): renders of scenes that differ only in
+  materials, spectra, intensities or the ambient term, which ask for it, trace once.
+
+On disk, the cache's folder is ``$REFLECTANCE_CACHE`` or
+``${XDG_CACHE_HOME:-~/.cache}/reflectance``; each user of it (:mod:`reflectance.colour.tables`,
+the meshes of :mod:`reflectance.geometry.shapes`) keeps a folder of its own there
+(:data:`DISK_FOLDERS`), named after what its values depend on, and names each file by a hash of
+what it holds; a folder for a code or library version no longer in use is pruned
+(:func:`prune`). Files are written atomically (a temporary file, then a rename), so a reader sees
+a whole file or none; an unwritable or unreadable cache is ignored (the values are computed
+again).
 """
 
 from __future__ import annotations
 
+import collections
 import hashlib
 import importlib.util
 import os
 import tempfile
 from pathlib import Path
 
-__all__ = ["CACHE_ENVIRONMENT_VARIABLE", "cache_root", "file_name", "store",
+__all__ = ["Memo", "MEMOS", "BUILT_MESHES", "COMPOSED_MESHES", "TRACES", "clear",
+           "CACHE_ENVIRONMENT_VARIABLE", "DISK_FOLDERS", "cache_root", "file_name", "store",
            "distribution_version", "source_digest", "prune"]
+
+MEMOS = {}
+"""Every :class:`Memo` of this process, by name."""
+
+
+class Memo:
+    """Values kept in this process by key: at most ``limit``, the least recently used dropped
+    first.
+
+    Parameters
+    ----------
+    name : str
+        What it keeps (its key in :data:`MEMOS`; one memo per name).
+    limit : int
+        How many values it keeps.
+
+    Examples
+    --------
+    >>> squares = Memo("squares, for this example", 2)
+    >>> [squares.get(n, lambda: n * n) for n in (2, 3, 2, 4)], 3 in squares, len(squares)
+    ([4, 9, 4, 16], False, 2)
+    >>> del MEMOS[squares.name]
+    """
+
+    def __init__(self, name, limit):
+        if name in MEMOS:
+            raise ValueError(f"a memo named {name!r} exists already")
+        if int(limit) < 1:
+            raise ValueError(f"memo {name!r}: limit must be at least 1, got {limit!r}")
+        self.name, self.limit = name, int(limit)
+        self._values = collections.OrderedDict()  # oldest use first
+        MEMOS[name] = self
+
+    def get(self, key, make):
+        """The value kept under ``key``; the first time, ``make()``'s, kept."""
+        if key in self._values:
+            self._values.move_to_end(key)
+            return self._values[key]
+        value = make()
+        self._values[key] = value
+        while len(self._values) > self.limit:
+            self._values.popitem(last=False)
+        return value
+
+    def __contains__(self, key):
+        return key in self._values
+
+    def __len__(self):
+        return len(self._values)
+
+    def clear(self):
+        """Forget every value."""
+        self._values.clear()
+
+    def __repr__(self):
+        return f"Memo({self.name!r}, {self.limit}: {len(self)} kept)"
+
+
+BUILT_MESHES = Memo("built meshes", 4)
+"""Meshes built from a scene's geometry (canonical JSON of its keys): the undeformed, unplaced
+mesh of each geometry type but ``mesh`` (a file may change), shared by the scenes that copy it."""
+
+COMPOSED_MESHES = Memo("composed meshes", 4)
+"""Composed scene meshes by their objects' geometry and transform keys (canonical JSON)."""
+
+TRACES = Memo("traces", 4)
+"""``(samples, shadowed)`` of one-band images by :func:`reflectance.render.tracing.trace_key`:
+at most 4 of at most :data:`reflectance.render.camera.SINGLE_TILE_SAMPLES` camera samples each
+(the most any figure asks for, three: Blinn's Fig. 7, one per camera and light)."""
+
+
+def clear(disk=False):
+    """Empty every memo of this process (:data:`MEMOS`); with ``disk``, remove the cache's
+    folders on disk too (those named as :data:`DISK_FOLDERS` name them, nothing else of the
+    cache's folder), so that every value is computed again. Best effort on disk."""
+    import re
+    import shutil
+
+    for memo in MEMOS.values():
+        memo.clear()
+    if not disk:
+        return
+    ours = re.compile("|".join(f"(?:{pattern})" for pattern in DISK_FOLDERS.values())).fullmatch
+    try:
+        folders = [p for p in cache_root().iterdir() if ours(p.name) and p.is_dir()]
+    except OSError:
+        return
+    for folder in folders:
+        shutil.rmtree(folder, ignore_errors=True)
 
 CACHE_ENVIRONMENT_VARIABLE = "REFLECTANCE_CACHE"
 """Environment variable naming the cache folder (default ``${XDG_CACHE_HOME:-~/.cache}/reflectance``)."""
+
+DISK_FOLDERS = {
+    "colour tables": r"colour-science-[^/]+",
+    "meshes": r"meshes-[0-9a-f]{16}-numpy-[^/]+-scipy-[^/]+-pyvista-[^/]+",
+}
+"""The names of the cache's folders (whole-name regular expressions), by their user: colour-science's
+tables (:func:`reflectance.colour.tables.cache_directory`) and the built meshes
+(:mod:`reflectance.geometry.shapes`), pruned by them and removed by :func:`clear`."""
 
 
 def cache_root():

@@ -2,11 +2,12 @@
 
 Modules: Read top-down: rays (exact ray tests) and primitives (the scene as flat arrays) under
 camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, shadows; shading
-(spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which pixels get more samples); rgb (a scene also rendered as a three-channel RGB renderer
-would); scene (scene files); pipeline (trace, shade, write);
-composite (grids with one exposure); bench (speed and memory); crosscheck (a scene
-exported to the path tracer Mitsuba 3, an optional extra); mitsuba_command (Mitsuba's whole
-command, timed by the bench).
+(spectral, per-angle Fresnel table); parallel (the per-sample work on threads); adaptive (which
+pixels get more samples); tracing (a band's visibility and shadows, and the kept trace);
+session (what one render holds while it runs); integrator (shade and box-filter band by band,
+refine); rgb (a scene also rendered as a three-channel RGB renderer would); scene (scene
+files); pipeline (render, write); composite (grids with one exposure). The bench of its speed
+and accuracy, and the path tracer's cross-check, are :mod:`reflectance.bench`.
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
 the package stays cheap.
@@ -15,7 +16,9 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "bench", "camera", "composite", "crosscheck", "idbuffer", "lights", "mitsuba_command", "parallel", "pipeline", "primitives", "rays", "rgb", "samples", "scene", "shading", "shadows", "visibility")
+_MODULES = ("adaptive", "camera", "composite", "idbuffer", "integrator", "lights", "parallel",
+            "pipeline", "primitives", "rays", "rgb", "samples", "scene", "session", "shading",
+            "shadows", "tracing", "visibility")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -27,18 +30,7 @@ _EXPORTS = {
     "REFINE_BAND_ID_PIXELS": "adaptive",
     "render_spectral_and_rgb": "rgb",
     "display_exposure": "rgb",
-    "dE2000_map": "rgb",
-    "dE2000_statistics": "rgb",
-    "load_bench_scene": "bench",
-    "bench_size": "bench",
-    "run_bench": "bench",
-    "format_report": "bench",
     "Camera": "camera",
-    "mitsuba_available": "crosscheck",
-    "crosscheck_scene": "crosscheck",
-    "scene_to_mitsuba": "crosscheck",
-    "mitsuba_renderer": "crosscheck",
-    "render_mitsuba": "crosscheck",
     "common_exposure": "composite",
     "covered_rows": "composite",
     "image_grid": "composite",
@@ -56,11 +48,17 @@ _EXPORTS = {
     "light_vectors": "lights",
     "THREADS_VARIABLE": "parallel",
     "render_threads": "parallel",
+    "COMPONENTS": "integrator",
+    "shade_samples": "integrator",
+    "Integrator": "integrator",
+    "RenderSession": "session",
+    "tiles": "tracing",
+    "light_map_size": "tracing",
+    "trace": "tracing",
+    "trace_key": "tracing",
+    "trace_once": "tracing",
     "render_to_files": "pipeline",
-    "COMPONENTS": "pipeline",
     "RenderResult": "pipeline",
-    "trace": "pipeline",
-    "shade_samples": "pipeline",
     "render": "pipeline",
     "display_image": "pipeline",
     "display_linear_RGB": "pipeline",
@@ -69,9 +67,6 @@ _EXPORTS = {
     "write_render": "pipeline",
     "render_warnings": "pipeline",
     "BACK_FRACTION_WARNING": "pipeline",
-    "image_difference_CIEDE2000": "pipeline",
-    "pixel_difference_CIEDE2000": "pipeline",
-    "tiles": "pipeline",
     "ray_triangle_MollerTrumbore1997": "rays",
     "ray_sphere": "rays",
     "SurfaceSamples": "samples",

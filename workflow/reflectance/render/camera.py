@@ -20,7 +20,7 @@ not in :mod:`reflectance.render.idbuffer`, so the config check reads it without 
 
 SINGLE_TILE_SAMPLES = 1 << 21
 """Images of at most this many samples are traced in one pass (every figure of the workflow is);
-:func:`reflectance.render.pipeline.tiles` reads it (here, so that the config check's memory
+:func:`reflectance.render.tracing.tiles` reads it (here, so that the config check's memory
 estimate reads it without loading VTK)."""
 
 TILE_SAMPLES = 1 << 19

@@ -1,64 +1,53 @@
-"""Render a scene: visibility, cast shadows, spectral shading, box filter; EXR and display PNG.
+"""Render a scene: trace, shade, box filter, refine; EXR and display PNG.
 
-:func:`render` runs the steps on a :class:`reflectance.render.scene.Scene`:
+:func:`render` runs the steps on a :class:`reflectance.render.scene.Scene`, band by band of
+pixel rows (:func:`reflectance.render.tracing.tiles`):
 
-1. :func:`trace`: which surface each camera sample sees (:func:`reflectance.render.visibility.visibility`,
-   VTK ID buffer + exact float64 hits) and which lights each sample sees
-   (:func:`reflectance.render.visibility.shadow_masks`);
-2. :func:`shade_samples`: every object's samples shaded with its material
-   (:func:`reflectance.render.shading.shade`), background black;
-3. the n x n samples of each pixel averaged in linear XYZ (box filter,
-   :meth:`reflectance.render.visibility.SurfaceSamples.to_pixels`).
-4. with the scene's adaptive supersampling on (``camera.adaptive``,
-   :mod:`reflectance.render.adaptive`): the pixels on a silhouette or whose shading curves
-   within them are traced, shaded and box-filtered again on a finer N x N grid, in bands.
+1. a :class:`reflectance.render.session.RenderSession` traces each band: which surface each
+   camera sample sees and which lights each sample sees (:mod:`reflectance.render.tracing`),
+   all with one set of the scene's primitives and ID-buffer window, released at the end;
+2. an :class:`reflectance.render.integrator.Integrator` shades every object's samples with its
+   material (background black) and averages the n x n samples of each pixel in linear XYZ (box
+   filter);
+3. with the scene's adaptive supersampling on (``camera.adaptive``,
+   :mod:`reflectance.render.adaptive`), the integrator then traces, shades and box-filters the
+   pixels on a silhouette or whose shading curves within them again on a finer N x N grid, in
+   bands.
 
-An image of more than :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples runs
-these steps band by band of pixel rows (:func:`tiles`), each band at most
-:data:`~reflectance.render.camera.TILE_SAMPLES` samples, so that memory does not grow with the
-image beyond the image itself. Every sample is traced and shaded as in one
-pass (the same rays, the same exact tests); only the light maps that propose occluders are
-drawn per band (over that band's samples, at the whole image's map size).
+An image of more than :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples has bands
+of at most :data:`~reflectance.render.camera.TILE_SAMPLES` samples, so that memory does not grow
+with the image beyond the image itself. Every sample is traced and shaded as in one pass (the
+same rays, the same exact tests); only the light maps that propose occluders are drawn per band
+(over that band's samples, at the whole image's map size).
 
 :func:`write_render` writes the linear XYZ image as OpenEXR (the validated scene and the package
 versions in its header) and, optionally, the display PNG (Cook & Torrance exposure over the image,
-gamut clipping, transfer function: :mod:`reflectance.colour.display`). Everything is deterministic: the
-same scene gives byte-identical files.
+gamut clipping, transfer function: :mod:`reflectance.colour.exposure`). Everything is
+deterministic: the same scene gives byte-identical files.
 """
 
 from __future__ import annotations
 
 import contextlib
 import functools
-import hashlib
 import json
 import time
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from reflectance.colour.display import expose_CookTorrance1982, expose_key
+from reflectance.colour.exposure import exposure_scale, image_display_RGB
 from reflectance.io.atomic import atomic_write
 from reflectance.io.images import write_exr_XYZ, write_png
-from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
-from reflectance.render.camera import SINGLE_TILE_SAMPLES, TILE_SAMPLES
-from reflectance.render.idbuffer import IdRenderer
-from reflectance.render.parallel import Tasks, render_threads
-from reflectance.render.primitives import Primitives
-from reflectance.render.shading import shade, white_card_luminance
-from reflectance.render.shadows import shadow_masks
-from reflectance.render.visibility import visibility
+from reflectance.render.integrator import Integrator
+from reflectance.render.parallel import render_threads
+from reflectance.render.session import RenderSession
+from reflectance.render.shading import white_card_luminance
+from reflectance.render.tracing import tiles
 
 __all__ = [
     "render_to_files",
-    "COMPONENTS",
     "RenderResult",
-    "trace",
-    "trace_key",
-    "trace_once",
-    "difference_statistics_CIEDE2000",
-    "tiles",
-    "shade_samples",
     "render",
     "display_image",
     "display_linear_RGB",
@@ -67,12 +56,7 @@ __all__ = [
     "write_render",
     "render_warnings",
     "BACK_FRACTION_WARNING",
-    "image_difference_CIEDE2000",
-    "pixel_difference_CIEDE2000",
 ]
-
-COMPONENTS = ("ambient", "diffuse", "specular", "emission")
-"""Parts of the reflected XYZ a render can return separately (table shading)."""
 
 
 @dataclass
@@ -84,7 +68,8 @@ class RenderResult:
     XYZ : ndarray, shape (height, width, 3)
         Linear CIE XYZ (a light's white has Y = intensity; background 0).
     components : dict or None
-        ``{name: (height, width, 3)}`` for :data:`COMPONENTS` when asked for.
+        ``{name: (height, width, 3)}`` for :data:`reflectance.render.integrator.COMPONENTS`
+        when asked for.
     timings : dict
         Wall seconds of ``visibility``, ``shadows``, ``shading`` and ``total`` (and, with adaptive
         supersampling, ``refinement``: the refinement's share of those three).
@@ -112,145 +97,8 @@ class RenderResult:
     display: tuple | None = field(default=None, repr=False)
 
 
-# SINGLE_TILE_SAMPLES and TILE_SAMPLES come from reflectance.render.camera; tiles() reads them
-# as this module's names (which tests patch)
-
-
-def tiles(camera, single=None, tile=None):
-    """Bands ``(start, stop)`` of rows of the camera's fine grid that :func:`render` traces one
-    at a time: the whole grid if it has at most ``single`` samples (default
-    :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES`), else bands of whole pixel rows of at
-    most ``tile`` samples (default :data:`~reflectance.render.camera.TILE_SAMPLES`; at least one
-    pixel row)."""
-    single = SINGLE_TILE_SAMPLES if single is None else int(single)
-    tile = TILE_SAMPLES if tile is None else int(tile)
-    rows, cols = camera.shape
-    if rows * cols <= single:
-        return [(0, rows)]
-    n = camera.supersample
-    step = max(n, tile // cols // n * n)
-    return [(start, min(start + step, rows)) for start in range(0, rows, step)]
-
-
-def _map_size(camera, rows=None):
-    """Light-map side: what :func:`shadow_masks` picks for the whole grid, and for a band of
-    ``rows`` that side scaled by twice the square root of the band's share of the samples (the
-    band's samples cover about that share of the whole map; twice as fine again, as a margin),
-    at least 256 and at most the whole grid's."""
-    whole = int(np.clip(max(camera.shape), 256, 4096))
-    if rows is None or (rows[0], rows[1]) == (0, camera.shape[0]):
-        return whole
-    share = (rows[1] - rows[0]) / camera.shape[0]
-    return int(np.clip(round(2.0 * whole * np.sqrt(share)), 256, whole))
-
-
-def _silent(phase):
-    pass
-
-
-def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None,
-          renderer=None, threads=1):
-    """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
-    whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
-    (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
-
-    ``select`` traces only those samples of the band (``visibility``'s); ``map_size`` sets the
-    light maps' side (default: from the band's share of the grid). ``progress``, if given, is
-    called with the name of each phase as it starts. ``renderer``, an open
-    :class:`reflectance.render.idbuffer.IdRenderer` of ``primitives``, draws the camera's and the
-    lights' ID buffers (one window, the scene uploaded once); default one per phase.
-    ``threads``: of the per-sample work (:mod:`reflectance.render.parallel`; the same result at
-    any count)."""
-    progress = progress or _silent
-    t0 = time.perf_counter()
-    progress("visibility")
-    samples = visibility(scene.mesh if primitives is None else primitives, scene.camera, rows,
-                         select, renderer, threads)
-    t1 = time.perf_counter()
-    progress("shadows")
-    if scene.shadows and scene.lights:
-        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
-                                map_size or _map_size(scene.camera, rows), renderer, threads)
-    else:
-        shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
-    t2 = time.perf_counter()
-    return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
-
-
-def shade_samples(scene, samples, shadowed, spectral=None, components=False, fresnel_table=None,
-                  threads=1):
-    """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``);
-    ``threads`` as for :func:`reflectance.render.shading.shade`."""
-    spectral = scene.spectral if spectral is None else spectral
-    N = len(samples.hit)
-    XYZ = np.zeros((N, 3))
-    parts = {name: np.zeros((N, 3)) for name in COMPONENTS} if components else None
-    part_of_triangle = np.asarray(scene.mesh.cell_data["part"])
-    for i, obj in enumerate(scene.objects):
-        members = np.nonzero(samples.object_id == i)[0]
-        groups = [(obj.material, members)]
-        if obj.part_materials:  # named parts with their own materials
-            code = part_of_triangle[samples.triangle[members]]
-            rest = ~np.isin(code, list(obj.part_materials))
-            groups = [(obj.material, members[rest])] + [
-                (material, members[code == c]) for c, material in obj.part_materials.items()]
-        for material, idx in groups:
-            if len(idx) == 0:
-                continue
-            out = shade(samples.position[idx], samples.normal[idx], samples.view[idx],
-                        samples.uv[idx], material, scene.lights, shadowed[:, idx],
-                        scene.ambient, scene.wavelengths, scene.observer, spectral,
-                        scene.table_size, components=components,
-                        fresnel_table=fresnel_table, threads=threads)
-            if components:
-                out, got = out
-                for name in COMPONENTS:
-                    if name in got:
-                        parts[name][idx] = got[name]
-            XYZ[idx] = out
-    return (XYZ, parts) if components else XYZ
-
-
-def trace_key(scene, rows=None):
-    """What :func:`trace` depends on, as a SHA-256 hex digest: the composed mesh (points, faces,
-    every point and cell array), the camera, the lights' directions or positions, whether shadows
-    are cast, and the band of rows. Two scenes with the same key are traced identically (the
-    trace never looks at materials, spectra, intensities or the ambient term)."""
-    digest = hashlib.sha256()
-    mesh = scene.mesh
-    arrays = [("points", mesh.points), ("faces", mesh.faces)]
-    arrays += [(f"point_data.{name}", mesh.point_data[name]) for name in sorted(mesh.point_data)]
-    arrays += [(f"cell_data.{name}", mesh.cell_data[name]) for name in sorted(mesh.cell_data)]
-    for name, array in arrays:
-        array = np.ascontiguousarray(array)
-        digest.update(f"{name} {array.dtype.str} {array.shape}\n".encode())
-        digest.update(array.tobytes())
-    digest.update(repr((scene.camera, [light.source for light in scene.lights], bool(scene.shadows),
-                        rows)).encode())
-    return digest.hexdigest()
-
-
-def trace_once(scene, traced, rows=None, tools=None, progress=None, threads=1):
-    """:func:`trace` of ``scene`` (the band ``rows``), or the one ``traced`` keeps under its
-    :func:`trace_key`: ``traced`` is a dict kept across scenes that differ only in materials (a
-    new trace is stored in it), or None to keep nothing. ``tools``, if given, is called only when
-    a trace is needed and returns ``(primitives, renderer)`` for :func:`trace`. Returns
-    ``(samples, shadowed, timings)``, zero timings for a kept trace; ``threads`` as for
-    :func:`trace`."""
-    key = trace_key(scene, rows) if traced is not None else None
-    if key is not None and key in traced:
-        samples, shadowed = traced[key]
-        return samples, shadowed, {"visibility": 0.0, "shadows": 0.0}
-    primitives, renderer = tools() if tools is not None else (None, None)
-    samples, shadowed, timings = trace(scene, rows, primitives, progress, renderer=renderer,
-                                       threads=threads)
-    if key is not None:
-        traced[key] = (samples, shadowed)
-    return samples, shadowed, timings
-
-
 def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
-           traced=None, threads=None):
+           keep_trace=False, threads=None):
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -266,11 +114,13 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     progress : callable, optional
         Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
         starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
-    traced : dict, optional
-        A cache the caller keeps across renders of scenes that differ only in what :func:`trace`
-        does not look at (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7
-        vases): an image traced in one band is looked up by :func:`trace_key` and traced once;
-        the result is the same, bit for bit. Images of several bands are not kept (memory).
+    keep_trace : bool
+        Look the trace up in the process's trace memo
+        (:func:`reflectance.render.tracing.trace_once`), and keep it there, for renders of
+        scenes that differ only in what :func:`reflectance.render.tracing.trace` does not look at
+        (materials, spectra, intensities, ambient: Cook & Torrance's Fig. 7 vases): an image
+        traced in one band is traced once; the result is the same, bit for bit. Images of
+        several bands are not kept (memory).
     threads : int, optional
         Threads of the per-sample work (:func:`reflectance.render.parallel.render_threads`:
         default the environment variable ``REFLECTANCE_RENDER_THREADS``, else
@@ -282,156 +132,21 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         raise ValueError("components are available with spectral='table' only")
     threads = render_threads(threads)
     t0 = time.perf_counter()
-    camera, n_ss = scene.camera, scene.camera.supersample
-    bands = tiles(camera)
-    keep = traced is not None and len(bands) == 1
-    image = np.zeros((camera.height, camera.width, 3))
-    parts = {name: np.zeros_like(image) for name in COMPONENTS} if components else None
-    timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
-    count = _Counts(len(scene.lights), len(scene.objects))
-    refinement = getattr(scene, "refinement", None)
-    adaptive = (refinement is not None and refinement.enabled
-                and refinement.supersample > n_ss)
-    if adaptive:  # per pixel of the first pass: its window's difference and silhouettes
-        from reflectance.colour.colorimetry import white_XYZ
-
-        difference = np.zeros((camera.height, camera.width, 3), np.float32)
-        silhouette = np.zeros((camera.height, camera.width), bool)
-    # the scene's primitives and one ID-buffer window for all of them (the camera's and the
-    # light maps of every band), made on the first band that is traced (not for a cached trace)
-    made = {}
-    with contextlib.ExitStack() as stack:
-
-        def tools():
-            if not made:
-                made["primitives"] = Primitives(scene.mesh)
-                if threads > 1 and scene.shadows and scene.lights:  # the shadow walks' edge
-                    # table, made on a worker while the camera's rays are traced
-                    edges = Tasks(threads)
-                    edges.submit(lambda: made["primitives"].neighbours)
-                    stack.callback(edges.results)  # awaited (and its error raised) at the end
-                made["renderer"] = stack.enter_context(IdRenderer(made["primitives"]))
-            return made["primitives"], made["renderer"]
-
+    n = scene.camera.supersample
+    bands = tiles(scene.camera)
+    integrator = Integrator(scene, spectral, components, fresnel_table, threads)
+    with RenderSession(scene, threads, progress, keep_trace) as session:
         for start, stop in bands:
-            where = "" if len(bands) == 1 else f"rows {start // n_ss}-{stop // n_ss}: "
-            samples, shadowed, t = trace_once(
-                scene, traced if keep else None, (start, stop), tools,
-                progress and (lambda phase: progress(where + phase)), threads)
-            t1 = time.perf_counter()
-            (progress or _silent)(where + "shading")
-            shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table,
-                                   threads)
-            XYZ, got = shaded if components else (shaded, None)
-            rows = slice(start // n_ss, stop // n_ss)
-            image[rows] = samples.to_pixels(XYZ, threads)
-            if components:
-                for name, value in got.items():
-                    parts[name][rows] = samples.to_pixels(value, threads)
-            if adaptive:
-                difference[rows], silhouette[rows] = pixel_spread(samples, XYZ)
-            count.add(samples, shadowed)
-            del samples, shadowed, shaded, XYZ, got
-            timings["visibility"] += t["visibility"]
-            timings["shadows"] += t["shadows"]
-            timings["shading"] += time.perf_counter() - t1
-        stats = count.stats()
-        refined, mask = 0, None
-        if adaptive:
-            t1 = time.perf_counter()
-            white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
-            mask = refine_mask(difference, silhouette, image, _display_scale(scene, image),
-                               refinement.threshold, white)
-            del difference, silhouette
-            refined = _refine(scene, tools, mask, image, parts, spectral, components,
-                              fresnel_table, timings, progress, threads)
-            timings["refinement"] = time.perf_counter() - t1
-    pixels = camera.height * camera.width
-    # the sample budget: every pixel's n x n, and N x N more in each refined pixel
-    stats.update(refined=refined / pixels, samples_per_pixel=n_ss**2 + (
-        refined * refinement.supersample**2 / pixels if adaptive else 0.0))
-    timings["total"] = time.perf_counter() - t0
-    return RenderResult(image, parts, timings, stats, scene, mask)
-
-
-def _refine(scene, tools, mask, image, parts, spectral, components, fresnel_table,
-            timings, progress, threads=1):
-    """Replace the pixels of ``mask`` in ``image`` (and ``parts``) by the box-filter mean of
-    their N x N samples (:mod:`reflectance.render.adaptive`); return how many were refined.
-    ``tools()`` gives the scene's primitives and their ID-buffer window."""
-    import dataclasses
-
-    N = scene.refinement.supersample
-    fine = dataclasses.replace(scene, camera=dataclasses.replace(scene.camera, supersample=N))
-    flat = image.reshape(-1, 3)
-    map_size = _map_size(scene.camera)  # the whole first pass's light maps
-    refined = 0
-    for rows, select, pixels in refinement_bands(mask, N):
-        where = f"refining rows {rows[0] // N}-{rows[1] // N}: "
-        primitives, renderer = tools()
-        samples, shadowed, t = trace(fine, rows, primitives,
-                                     progress and (lambda phase: progress(where + phase)),
-                                     select, map_size, renderer, threads)
-        t1 = time.perf_counter()
-        shaded = shade_samples(scene, samples, shadowed, spectral, components, fresnel_table,
-                               threads)
-        XYZ, got = shaded if components else (shaded, None)
-        flat[pixels] = XYZ.reshape(len(pixels), N * N, 3).mean(axis=1)
-        for name, value in (got or {}).items():
-            parts[name].reshape(-1, 3)[pixels] = value.reshape(len(pixels), N * N, 3).mean(axis=1)
-        refined += len(pixels)
-        timings["visibility"] += t["visibility"]
-        timings["shadows"] += t["shadows"]
-        timings["shading"] += time.perf_counter() - t1
-    return refined
-
-
-def _display_scale(scene, XYZ):
-    """The exposure factor :func:`display_linear_RGB` will apply to the image ``XYZ`` of the
-    scene (automatic exposure; 1 without)."""
-    d = scene.display
-    if not d.expose:
-        return 1.0
-    if d.white is not None:
-        return d.white / white_card_luminance(scene.lights)
-    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
-              "wavelengths": scene.wavelengths}
-    return _exposure_scale(XYZ, d, max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1])), kwargs)
-
-
-class _Counts:
-    """Sample counts over the bands of a render, and the fractions of :attr:`RenderResult.stats`
-    (the same numbers whether the image was traced in one band or several)."""
-
-    VISIBILITY = ("raster_miss", "recovered", "searched", "dropped")
-
-    def __init__(self, n_lights, n_objects):
-        self.samples, self.hit = 0, 0
-        self.visibility = dict.fromkeys(self.VISIBILITY, 0)
-        self.shadowed = [0] * n_lights
-        self.visible, self.back = [0] * n_objects, [0] * n_objects
-
-    def add(self, samples, shadowed):
-        n, hit = len(samples.hit), samples.hit
-        self.samples += n
-        self.hit += int(np.count_nonzero(hit))
-        for key in self.VISIBILITY:  # the band's fractions are counts / n, exactly
-            self.visibility[key] += round(samples.stats[key] * n)
-        for i, s in enumerate(shadowed):
-            self.shadowed[i] += int(np.count_nonzero(s & hit))
-        for i in range(len(self.visible)):
-            mine = hit & (samples.object_id == i)
-            self.visible[i] += int(np.count_nonzero(mine))
-            self.back[i] += int(np.count_nonzero(samples.flipped & mine))
-
-    def stats(self):
-        out = {key: value / self.samples for key, value in self.visibility.items()}
-        out.update(hit=self.hit / self.samples,
-                   shadowed=[s / self.hit if self.hit else 0.0 for s in self.shadowed],
-                   # per object: the fraction of its visible samples seen from the back of the
-                   # surface (None where it is not visible)
-                   seen_from_back=[b / v if v else None for b, v in zip(self.back, self.visible)])
-        return out
+            where = "" if len(bands) == 1 else f"rows {start // n}-{stop // n}: "
+            samples, shadowed, traced = session.trace((start, stop), where)
+            session.tell(where + "shading")
+            integrator.add_band((start, stop), samples, shadowed, traced)
+            del samples, shadowed  # before the next band is traced: one band's at a time
+        if integrator.adaptive:
+            integrator.refine(session, lambda image: exposure_scale(image, *_shown(scene)))
+    timings = {**integrator.timings, "total": time.perf_counter() - t0}
+    return RenderResult(integrator.image, integrator.parts, timings, integrator.stats(), scene,
+                        integrator.refined)
 
 
 #: an object more than this fraction of whose visible surface is seen from the back is reported
@@ -456,50 +171,25 @@ def render_warnings(result):
     return warnings
 
 
+def _shown(scene):
+    """The scene's display as :mod:`reflectance.colour.exposure` takes it: (settings, observer,
+    wavelengths, the white card's luminance where the display is metered on one)."""
+    d = scene.display
+    white = white_card_luminance(scene.lights) if d.expose and d.white is not None else None
+    return d, scene.observer, scene.wavelengths, white
+
+
 def display_linear_RGB(result, exposure=None, encoded=False):
     """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
     exposed, highlights compressed, gamut clipped; the light the display emits, before the
-    transfer function.
+    transfer function (:func:`reflectance.colour.exposure.image_display_RGB`, in bands of rows).
 
     ``exposure`` (a positive factor on XYZ) replaces the automatic exposure of the scene's
     display settings (Cook & Torrance's, the metered key or the white card); None keeps it.
-    ``encoded`` applies the display's transfer function too (:func:`display_image`). Pixel by
-    pixel it runs in bands of rows, so that the temporaries stay small at any image size.
+    ``encoded`` applies the display's transfer function too (:func:`display_image`).
     """
-    from reflectance.colour.display import (XYZ_to_linear_RGB, compress_highlights, encode,
-                                            gamut_clip)
-
-    scene, d = result.scene, result.scene.display
-    kwargs = {"illuminant": d.illuminant, "observer": scene.observer,
-              "wavelengths": scene.wavelengths}
-    XYZ, scale, factor = result.XYZ, 1.0, 1.0
-    rows = max(1, _DISPLAY_BAND_PIXELS // max(1, XYZ.shape[1]))
-    # a fixed factor (given, or from the white card) is applied band by band below
-    if exposure is not None:
-        if isinstance(exposure, bool) or not np.isfinite(exposure) or exposure <= 0:
-            raise ValueError(f"exposure: must be a positive finite factor, got {exposure!r}")
-        scale = factor = float(exposure)
-    elif d.expose and d.white is not None:  # metered on a white card facing the lights
-        scale = factor = d.white / white_card_luminance(scene.lights)
-    elif XYZ.shape[0] > rows:  # a large image: the scale from a few pixels
-        scale = factor = _exposure_scale(XYZ, d, rows, kwargs)
-    elif d.expose and d.key is not None:
-        XYZ, scale = expose_key(XYZ, *d.key)  # the object metered, highlights compressed
-    elif d.expose:
-        # Cook & Torrance 1982: all XYZ of the scene scaled equally, the most luminous colour
-        # at the maximum luminance of its chromaticity
-        XYZ, scale = expose_CookTorrance1982(XYZ, d.space, **kwargs)
-    # pixel by pixel from here on: in bands of rows, so that the conversion's temporaries stay
-    # small at any image size (the same numbers as in one call)
-    out = np.empty(XYZ.shape)
-    for start in range(0, XYZ.shape[0], rows):
-        band = XYZ[start:start + rows]
-        RGB = XYZ_to_linear_RGB(band * factor if factor != 1.0 else band, d.space, **kwargs)
-        if d.highlight_knee is not None:
-            RGB = compress_highlights(RGB, d.highlight_knee)
-        RGB = gamut_clip(RGB, d.gamut_clip, d.space)
-        out[start:start + rows] = encode(RGB, d.space) if encoded else RGB
-    return out, scale
+    return image_display_RGB(result.XYZ, *_shown(result.scene), exposure=exposure,
+                             encoded=encoded)
 
 
 def display_image(result, exposure=None):
@@ -507,38 +197,6 @@ def display_image(result, exposure=None):
     :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
     :func:`display_linear_RGB`)."""
     return display_linear_RGB(result, exposure, encoded=True)
-
-
-def _exposure_scale(XYZ, d, rows, kwargs):
-    """The exposure scale of a large image, from the pixels that decide it: for the metered key,
-    the luminances of the lit pixels (their percentile is the scale); for Cook & Torrance, the
-    pixels of each band within 1e-9 of that band's greatest display luminance (the most
-    luminous colour is among them). The exposure functions themselves then pick the scale."""
-    if not d.expose:
-        return 1.0
-    if d.key is not None:
-        Y = XYZ[..., 1]
-        lit = Y[np.isfinite(Y) & (Y > 0)]
-        probe = np.zeros((len(lit), 3))
-        probe[:, 1] = lit
-        return expose_key(probe, *d.key)[1]
-    from reflectance.colour.display import XYZ_to_linear_RGB, display_space
-
-    luminance = display_space(d.space).matrix_RGB_to_XYZ[1]
-    candidates = []
-    for start in range(0, XYZ.shape[0], rows):
-        band = XYZ[start:start + rows].reshape(-1, 3)
-        RGB = XYZ_to_linear_RGB(band, d.space, **kwargs)
-        Y = np.where(np.all(np.isfinite(RGB), axis=-1), RGB @ luminance, -np.inf)
-        top = Y.max()
-        if top > 0:
-            candidates.append(band[Y >= top * (1.0 - 1e-9)])
-    if not candidates:
-        return 1.0
-    return expose_CookTorrance1982(np.concatenate(candidates), d.space, **kwargs)[1]
-
-
-_DISPLAY_BAND_PIXELS = 1 << 20  # pixels converted to display RGB at once
 
 
 def software_versions():
@@ -628,59 +286,18 @@ def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=No
                  exposure=float(header["display_exposure_scale"]))
 
 
-def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
-    """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
-    reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
-    from reflectance.colour.colorimetry import OBSERVER_DEFAULT, XYZ_to_Lab, white_XYZ
-    from reflectance.colour.difference import delta_E_CIE2000
-
-    observer = observer or OBSERVER_DEFAULT
-    _, scale = expose_CookTorrance1982(XYZ_reference, "sRGB", illuminant, observer, wavelengths)
-    white = white_XYZ(illuminant, observer, wavelengths)
-    xy = white[:2] / white.sum()
-    lab = [XYZ_to_Lab(np.asarray(x, np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
-    dE = delta_E_CIE2000(lab[0], lab[1])
-    lit = (np.asarray(XYZ)[..., 1] > 0) | (np.asarray(XYZ_reference)[..., 1] > 0)
-    return dE[lit]
-
-
-def difference_statistics_CIEDE2000(XYZ, XYZ_reference, scene):
-    """(mean, 95th percentile) of :func:`pixel_difference_CIEDE2000` of two renders of ``scene``
-    (its display illuminant, observer and wavelengths); (0, 0) when no pixel is lit."""
-    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, scene.display.illuminant, scene.observer,
-                                    scene.wavelengths)
-    if not len(dE):
-        return 0.0, 0.0
-    return float(dE.mean()), float(np.percentile(dE, 95))
-
-
-def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
-    """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
-
-    Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour
-    sits at the display maximum, as it would be shown), then compared in CIELAB relative to the
-    illuminant's white (Y = 1). The mean is over the pixels where either image is not black.
-    """
-    dE = pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer, wavelengths)
-    if not len(dE):
-        return 0.0, 0.0
-    return float(dE.mean()), float(dE.max())
-
-
 def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
-                    rgb_exr_path=None, traced=None):
+                    rgb_exr_path=None, keep_trace=False):
     """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
     the result.
 
     What every rendered figure does, in one place: the scene written beside the images can be
-    rendered again alone with ``reflectance render``. ``traced``: as in :func:`render`. The
+    rendered again alone with ``reflectance render``. ``keep_trace``: as in :func:`render`. The
     result keeps the display image written (:attr:`RenderResult.display`).
     """
     from reflectance.render.scene import write_scene_file
 
     write_scene_file(scene, scene_path)
-    result = render(scene, components=components, traced=traced)
+    result = render(scene, components=components, keep_trace=keep_trace)
     result.display = write_render(result, exr_path, png_path, rgb_exr_path)
     return result

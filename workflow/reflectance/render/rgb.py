@@ -4,27 +4,25 @@ The spectral renderer integrates ``F(lambda, V.H)`` against the light and the co
 functions (:func:`reflectance.render.shading.fresnel_XYZ_table`); a three-channel renderer stores
 a metal as the display-RGB colour of its normal reflectance F0 and applies Schlick 1994 to each
 channel (:func:`reflectance.render.shading.fresnel_XYZ_table_rgb`). Both renders share one
-visibility pass, so they differ only in F; :func:`dE2000_map` compares them pixel by pixel as the
-figure's display shows them.
+visibility pass, so they differ only in F;
+:func:`reflectance.colour.difference.dE2000_map` compares them pixel by pixel as the figure's
+display shows them, on the spectral image's exposure (:func:`display_exposure`).
 
 References
 ----------
 - Cook, R. L., & Torrance, K. E. (1982). A Reflectance Model for Computer Graphics. ACM TOG 1(1):
   Figs. 6b and 7 (the metal vases), "Spectral composition" (F per wavelength).
 - Schlick, C. (1994). An Inexpensive BRDF Model for Physically-based Rendering. CGF 13(3).
-- CIE 142-2001 (CIEDE2000).
 """
 
 from __future__ import annotations
 
 import functools
 
-import numpy as np
-
-__all__ = ["render_spectral_and_rgb", "display_exposure", "dE2000_map", "dE2000_statistics"]
+__all__ = ["render_spectral_and_rgb", "display_exposure"]
 
 
-def render_spectral_and_rgb(scene, space="sRGB", traced=None):
+def render_spectral_and_rgb(scene, space="sRGB", keep_trace=False):
     """(spectral XYZ image, RGB-renderer XYZ image) of ``scene``, one visibility pass for both.
 
     Parameters
@@ -33,14 +31,15 @@ def render_spectral_and_rgb(scene, space="sRGB", traced=None):
         Shaded with ``spectral="table"`` (the RGB renderer replaces the Fresnel table only).
     space : str
         Display space of the RGB renderer's channels (:data:`reflectance.colour.display.DISPLAY_SPACES`).
-    traced : dict, optional
-        A cache of traces kept across scenes that differ only in materials, as in
-        :func:`reflectance.render.pipeline.render`.
+    keep_trace : bool
+        Keep the trace for scenes that differ only in materials, as
+        :func:`reflectance.render.pipeline.render` does.
     """
-    from reflectance.render.pipeline import shade_samples, trace_once
+    from reflectance.render.integrator import shade_samples
+    from reflectance.render.tracing import trace_once
     from reflectance.render.shading import fresnel_XYZ_table_rgb
 
-    samples, shadowed, _ = trace_once(scene, traced)
+    samples, shadowed, _ = trace_once(scene, keep_trace)
     images = []
     for table in (None, functools.partial(fresnel_XYZ_table_rgb, space=space)):
         images.append(samples.to_pixels(
@@ -53,32 +52,3 @@ def display_exposure(XYZ, scene):
     from reflectance.render.pipeline import RenderResult, display_image
 
     return display_image(RenderResult(XYZ, None, {}, {}, scene))[1]
-
-
-def dE2000_map(XYZ, XYZ_reference, scale, white):
-    """CIEDE2000 per pixel of two XYZ images, both scaled by ``scale``, in CIELAB of ``white``.
-
-    Parameters
-    ----------
-    XYZ, XYZ_reference : array_like, shape (..., 3)
-    scale : float
-        Exposure (the reference's display scale: the difference as the figure shows it).
-    white : array_like, shape (3,)
-        The display white, Y = 1.
-    """
-    from reflectance.colour.colorimetry import XYZ_to_Lab
-    from reflectance.colour.difference import delta_E_CIE2000
-
-    white = np.asarray(white, dtype=np.float64)
-    xy = white[:2] / white.sum()
-    lab = [XYZ_to_Lab(np.asarray(x, dtype=np.float64) * scale, xy) for x in (XYZ, XYZ_reference)]
-    return delta_E_CIE2000(lab[0], lab[1])
-
-
-def dE2000_statistics(dE, mask, percentile=95.0):
-    """``{"mean", "p<percentile>", "max"}`` of ``dE`` over ``mask`` (NaN if the mask is empty)."""
-    values = np.asarray(dE)[np.asarray(mask, dtype=bool)]
-    if values.size == 0:
-        return {"mean": np.nan, f"p{percentile:g}": np.nan, "max": np.nan}
-    return {"mean": float(values.mean()), f"p{percentile:g}": float(np.percentile(values, percentile)),
-            "max": float(values.max())}

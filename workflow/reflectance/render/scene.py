@@ -26,6 +26,7 @@ import numpy as np
 import yaml
 
 from reflectance.colour.colorimetry import cmfs, illuminant_sd
+from reflectance.io.cache import BUILT_MESHES, COMPOSED_MESHES
 from reflectance.optics.fresnel import F0_from_nk
 from reflectance.geometry.shapes import (VASE_PARTS, compose, mesh_from_file, place, plane, sphere,
                                   superellipsoid_Barr1981, torus, vase)
@@ -423,34 +424,20 @@ def _material(check, path, m, grid, spectra_dirs, base, cache, observer):
 
 
 #: Meshes built in this process, by their geometry keys (JSON): a figure that renders many scenes
-#: of one object (Cook & Torrance's thirteen Fig. 7 vases) builds it once. Each scene gets a deep
-#: copy; meshes read from files are not kept (the file may change).
-_BUILT = {}
-
-#: Composed meshes (:func:`reflectance.geometry.shapes.compose`) built in this process, by the
-#: objects' geometry and transform keys (JSON): scenes that differ only in materials, lights or
-#: camera (Cook & Torrance's Fig. 7 vases and their variants) compose their objects once. Each
-#: scene gets a deep copy; scenes with a mesh read from a file are not kept (as :data:`_BUILT`).
-_COMPOSED = {}
-
-_KEPT_MAX = 4
-"""Meshes each of :data:`_BUILT` and :data:`_COMPOSED` keeps (the oldest is dropped first)."""
+#: of one object builds it once and composes it once (reflectance.io.cache's BUILT_MESHES and
+#: COMPOSED_MESHES). Each scene gets a deep copy, so that a scene that changes its mesh changes
+#: no other; meshes read from files are not kept (the file may change).
 
 
-def _kept(kept, key, build):
-    """A deep copy of the mesh kept in ``kept`` under ``key`` (JSON), ``build()`` the first time."""
-    if key not in kept:
-        mesh = build()
-        if len(kept) >= _KEPT_MAX:
-            kept.pop(next(iter(kept)))
-        kept[key] = mesh
-    return kept[key].copy(deep=True)
+def _kept(memo, key, build):
+    """A deep copy of the mesh ``memo`` keeps under ``key`` (JSON), ``build()`` the first time."""
+    return memo.get(key, build).copy(deep=True)
 
 
 def _build_geometry(g, base):
     if g["type"] == "mesh":
         return GEOMETRY_BUILDERS["mesh"](g, base)
-    return _kept(_BUILT, json.dumps(g, sort_keys=True, default=str),
+    return _kept(BUILT_MESHES, json.dumps(g, sort_keys=True, default=str),
                  lambda: GEOMETRY_BUILDERS[g["type"]](g, base))
 
 
@@ -463,7 +450,7 @@ def _compose(objects, documents):
         return compose(meshes)
     key = json.dumps([(obj["geometry"], obj.get("transform")) for obj in documents],
                      sort_keys=True, default=str)
-    return _kept(_COMPOSED, key, lambda: compose(meshes))
+    return _kept(COMPOSED_MESHES, key, lambda: compose(meshes))
 
 
 def _geometry(check, path, g, transform, base):

@@ -4,15 +4,18 @@ Each module of this package is one figure, named after its Snakemake rule, and d
 
 - ``PARAMS``: ``{name: dotted config key}`` (or a tuple of dotted keys under one parent, giving
   that parent with only those keys), or a function of the config returning that mapping (where a
-  key depends on another, as Blinn's Fig. 8 reads the index of the panel it names). The rule's ``params`` are exactly these values
-  (:func:`params_of`), so Snakemake's params trigger reruns the figure when one of them changes
-  and for no other key; the figure's code is handed nothing else, so a key it reads without
+  key depends on another, as Blinn's Fig. 8 reads the index of the panel it names). The rule's
+  ``params`` are exactly these values (:func:`params_of`), so Snakemake's params trigger reruns
+  the figure when one of them changes and for no other key; the figure's code is handed nothing else, so a key it reads without
   declaring it fails the config check at once (a ``KeyError`` naming it).
 - ``spectra(params)``: the materials whose ``spectra/<name>.csv`` the job reads.
 - ``outputs(params)``: ``{name: path or list of paths}``, what the rule writes.
 - ``scenes(params, spectra_dir)``: every scene the job renders, as :class:`FigureScene`; the
   config check validates these (:func:`figure_scenes`) and the job renders these, so the two
   cannot differ.
+
+What the modules share (:class:`FigureScene`, :func:`params_of`, :func:`select`) lives in
+:mod:`reflectance.papers.figures.declaration`.
 
 References
 ----------
@@ -22,8 +25,8 @@ the Wikipedia article "Specular highlight" (its pair of spheres).
 
 from __future__ import annotations
 
-import copy
-from typing import NamedTuple
+from reflectance.papers.figures.declaration import (FigureScene, config_value, param_keys,
+                                                    params_of, select)
 
 __all__ = ["FIGURES", "READERS", "FigureScene", "figure", "param_keys", "params_of", "select",
            "config_value", "figure_scenes", "reader_params", "rule_keys"]
@@ -37,33 +40,16 @@ FIGURES = ("ct82_fig6", "ct82_fig7", "ct82_fig8", "blinn77_fig7", "blinn77_fig7_
 READERS = {"audit_rgb_rendering": ("ct82_fig7", "RGB_AUDIT_PARAMS")}
 
 
-class FigureScene(NamedTuple):
-    """One scene a figure renders.
-
-    ``name`` names the render in messages (its file's name where it is written); ``source`` is the config key it comes
-    from, for messages; ``document`` is the scene mapping (reflectance/data/scene.schema.yaml);
-    ``file`` is the ``.scene.yaml`` among the figure's outputs that the job writes it to, or None
-    (a close-up, a frame of the sweep or a departure's printed twin is only rendered); ``tags``
-    carry what the job needs to place it (panel, light, model, ...).
-    """
-
-    name: str
-    source: str
-    document: dict
-    file: str | None = None
-    tags: dict = {}
-
-    @property
-    def written(self):
-        """Whether the job writes this scene (and its images) to files."""
-        return self.file is not None
-
-
 def figure(name):
     """The module of the rendered figure ``name`` (one of :data:`FIGURES`)."""
-    # imported here, by name in the code (never a name read from data): they import this module
-    from reflectance.papers.figures import (article_spheres, blinn77_fig7, blinn77_fig7_sweep,
-                                            blinn77_fig8, ct82_fig6, ct82_fig7, ct82_fig8)
+    # imported by name in the code (never a name read from data), and only when asked for
+    import reflectance.papers.figures.article_spheres as article_spheres
+    import reflectance.papers.figures.blinn77_fig7 as blinn77_fig7
+    import reflectance.papers.figures.blinn77_fig7_sweep as blinn77_fig7_sweep
+    import reflectance.papers.figures.blinn77_fig8 as blinn77_fig8
+    import reflectance.papers.figures.ct82_fig6 as ct82_fig6
+    import reflectance.papers.figures.ct82_fig7 as ct82_fig7
+    import reflectance.papers.figures.ct82_fig8 as ct82_fig8
 
     modules = {module.RULE: module for module in (ct82_fig6, ct82_fig7, ct82_fig8, blinn77_fig7,
                                                   blinn77_fig7_sweep, blinn77_fig8,
@@ -71,65 +57,6 @@ def figure(name):
     if name not in modules:
         raise ValueError(f"no rendered figure {name!r}; known: {', '.join(FIGURES)}")
     return modules[name]
-
-
-def config_value(config, key):
-    """The value at a dotted ``key`` of ``config``; KeyError naming the key if it is absent."""
-    node = config
-    for part in key.split("."):
-        if not isinstance(node, dict) or part not in node:
-            raise KeyError(f"config.yaml has no {key} (needed by a figure)")
-        node = node[part]
-    return node
-
-
-def _parent(keys):
-    """The longest common dotted prefix strictly above every key of ``keys``, as parts."""
-    parts = [key.split(".") for key in keys]
-    common = []
-    for level in zip(*(p[:-1] for p in parts)):
-        if len(set(level)) != 1:
-            break
-        common.append(level[0])
-    return common
-
-
-def param_keys(module, config):
-    """``{param name: dotted key or tuple of keys}`` of a figure module for ``config``."""
-    return module.PARAMS(config) if callable(module.PARAMS) else module.PARAMS
-
-
-def params_of(module, config):
-    """The rule params of a figure module: each ``PARAMS`` entry's value from ``config``, copied
-    (a tuple of keys: their common parent holding only those keys)."""
-    return select(param_keys(module, config), config)
-
-
-def select(declared, config):
-    """``{name: value}`` of a ``{name: dotted key or tuple of keys}`` declaration (a rule that is
-    not a figure module, such as an audit, declares its keys so too).
-
-    Examples
-    --------
-    >>> config = {"a": {"b": 1, "c": {"d": 2, "e": 3}}}
-    >>> select({"x": "a.b", "y": ("a.c.d", "a.b")}, config)
-    {'x': 1, 'y': {'c': {'d': 2}, 'b': 1}}
-    """
-    params = {}
-    for name, keys in declared.items():
-        if isinstance(keys, str):
-            params[name] = copy.deepcopy(config_value(config, keys))
-            continue
-        parent = _parent(keys)
-        value = {}
-        for key in keys:
-            node = value
-            rest = key.split(".")[len(parent):]
-            for part in rest[:-1]:
-                node = node.setdefault(part, {})
-            node[rest[-1]] = copy.deepcopy(config_value(config, key))
-        params[name] = value
-    return params
 
 
 def reader_params(rule, config):

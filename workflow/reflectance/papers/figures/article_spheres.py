@@ -6,7 +6,7 @@ with the article's Cook-Torrance model, the gold sphere of its metals, one light
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene, config_value
+from reflectance.papers.figures.declaration import FigureScene, config_value
 from reflectance.papers.scenes import spheres_scene_article
 
 RULE = "article_spheres"

@@ -7,7 +7,7 @@ front lit), and a close-up of the highlight of ``fig7.rim_closeup.light``'s rend
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene
+from reflectance.papers.figures.declaration import FigureScene
 from reflectance.papers.scenes import blinn_scene_Blinn1977, materials_Blinn1977, rim_camera_Blinn1977
 
 RULE = "blinn77_fig7"

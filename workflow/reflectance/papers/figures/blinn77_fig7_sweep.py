@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from reflectance.papers.figures import FigureScene
+from reflectance.papers.figures.declaration import FigureScene
 from reflectance.papers.scenes import (blinn_scene_Blinn1977, materials_Blinn1977,
                                        sweep_camera_Blinn1977)
 

@@ -6,7 +6,7 @@ pattern of ``fig8.patterns``; F from the index of the Fig. 7 panel ``fig8.panel`
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene, config_value
+from reflectance.papers.figures.declaration import FigureScene, config_value
 from reflectance.papers.scenes import blinn_scene_Blinn1977, texture_material_Blinn1977
 
 RULE = "blinn77_fig8"

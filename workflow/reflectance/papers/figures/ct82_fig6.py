@@ -7,7 +7,7 @@ the ambient term (``fig6.ambient_readings``), its outputs prefixed ``<reading>_`
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene
+from reflectance.papers.figures.declaration import FigureScene
 from reflectance.papers.scenes import panel_material, vase_scene_CookTorrance1982
 
 RULE = "ct82_fig6"

@@ -7,7 +7,7 @@ term, its outputs prefixed ``<reading>_``.
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene
+from reflectance.papers.figures.declaration import FigureScene
 from reflectance.papers.figures.ct82_fig6 import variants
 from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982,
                                        fig7_vases_CookTorrance1982, vase_scene_CookTorrance1982)

@@ -6,7 +6,7 @@ ambient fraction, and red LEDs of the dominant wavelength the text gives.
 
 from __future__ import annotations
 
-from reflectance.papers.figures import FigureScene
+from reflectance.papers.figures.declaration import FigureScene
 from reflectance.papers.scenes import watch_scene_CookTorrance1982
 
 RULE = "ct82_fig8"

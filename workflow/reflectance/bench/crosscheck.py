@@ -61,7 +61,7 @@ from pathlib import Path
 import numpy as np
 
 from reflectance.optics.spectra import folder_list
-from reflectance.render.bench import CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES
+from reflectance.bench.measure import CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES
 
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
            "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "fastest_at_goal",
@@ -427,14 +427,14 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     """The two renderers' whole commands, each in a fresh process (Python's start-up, imports,
     the scene's loading, the render, the EXR written): wall seconds (median of ``runs``, the
     two run alternately) and the CIEDE2000 (mean, p95) of each image against ``reference``
-    (XYZ; :func:`reflectance.render.pipeline.difference_statistics_CIEDE2000` over ``scene``).
+    (XYZ; :func:`reflectance.bench.measure.scene_difference` over ``scene``).
 
     Ours is ``python -m reflectance render SCENE.yaml -o OUT.exr --quiet`` on ``document`` (a
     scene document as :func:`crosscheck_scene` gives it; table shading, ``spectra_dir`` and
     mesh paths made absolute against ``base_dir``) at ``size`` x ``size`` pixels with
     ``supersample`` x ``supersample`` samples (its material files copied beside it), as the
     in-process rungs; Mitsuba's is
-    :mod:`reflectance.render.mitsuba_command` on ``scene`` (exported by
+    :mod:`reflectance.bench.mitsuba_command` on ``scene`` (exported by
     :func:`scene_to_mitsuba`) at ``spp`` samples per pixel with ``variant``. Beside them, the
     floor of any render command of ours, ``python -c FLOOR_COMMAND`` (start-up and the imports it cannot
     do without, nothing rendered). Returns ``{"ours_s", "mitsuba_s", "floor_s", "ours_vs_ours",
@@ -449,8 +449,8 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     import yaml
 
     from reflectance.io.images import read_exr
-    from reflectance.render.mitsuba_command import save_scene
-    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
+    from reflectance.bench.mitsuba_command import save_scene
+    from reflectance.bench.measure import scene_difference as errors
 
     progress = progress or (lambda phase: None)
     ours_doc = copy.deepcopy(document)
@@ -478,7 +478,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
             ours += ["--spectra-dir", str(Path(extra).resolve())]
         commands = {
             "ours": ours,
-            "mitsuba": [sys.executable, "-m", "reflectance.render.mitsuba_command",
+            "mitsuba": [sys.executable, "-m", "reflectance.bench.mitsuba_command",
                         str(folder / "scene.json"), variant, str(int(spp)),
                         str(folder / "mitsuba.exr")],
             "floor": [sys.executable, "-c", FLOOR_COMMAND]}
@@ -514,7 +514,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
 
-    ``document`` (a scene file or document, as :func:`reflectance.render.bench.load_bench_scene`
+    ``document`` (a scene file or document, as :func:`reflectance.bench.measure.load_bench_scene`
     takes it) is read through :func:`crosscheck_scene`. Returns a dict: Mitsuba's variant; our
     render (``supersample`` x ``supersample``, median seconds of ``runs`` loads and renders) with
     its CIEDE2000 (mean, p95) against Mitsuba at ``reference_spp`` and against ours at
@@ -530,8 +530,8 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     """
     import statistics
 
-    from reflectance.render.bench import load_bench_scene
-    from reflectance.render.pipeline import difference_statistics_CIEDE2000 as errors
+    from reflectance.bench.measure import load_bench_scene
+    from reflectance.bench.measure import scene_difference as errors
     from reflectance.render.pipeline import render
 
     progress = progress or (lambda phase: None)
@@ -725,7 +725,7 @@ def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
            "ladder_spp": [int(n) for n in ladder_spp],
            "our_supersamples": [int(n) for n in our_supersamples],
            "spectra_dir": folder_list(spectra_dir)}
-    return run_worker("reflectance.render.crosscheck", job, progress,
+    return run_worker("reflectance.bench.crosscheck", job, progress,
                       failure=f"cross-check at size {size} failed")
 
 

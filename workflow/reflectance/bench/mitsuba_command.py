@@ -4,15 +4,15 @@ Issue 9 compares the two renderers' *whole commands* at equal error: ours is
 ``reflectance render SCENE.yaml -o OUT.exr`` (Python's start-up, imports, the scene's loading,
 the render, the EXR), and Mitsuba's is this module run in a fresh process,
 
-    python -m reflectance.render.mitsuba_command SCENE.json VARIANT SPP OUT.exr
+    python -m reflectance.bench.mitsuba_command SCENE.json VARIANT SPP OUT.exr
 
 which starts Python, imports Mitsuba, sets its variant, loads the scene (its PLY meshes and
 BSDFs; Dr.Jit compiles or takes from its cache the kernels), renders it at ``SPP`` samples per
 pixel and writes the image as OpenEXR: what a user of Mitsuba's Python API runs. It imports
-nothing but Mitsuba and the standard library (``reflectance`` and ``reflectance.render`` import
+nothing but Mitsuba and the standard library (``reflectance`` and ``reflectance.bench`` import
 nothing heavy).
 
-``SCENE.json`` is the dictionary :func:`reflectance.render.crosscheck.scene_to_mitsuba` makes,
+``SCENE.json`` is the dictionary :func:`reflectance.bench.crosscheck.scene_to_mitsuba` makes,
 saved by :func:`save_scene` with its camera's transform as the look-at triple it was made from
 (a Mitsuba transform is not JSON).
 """
