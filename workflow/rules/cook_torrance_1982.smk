@@ -19,6 +19,7 @@ TARGETS += [
         "fig5bc.exr",
         "fig5bc_strip.csv",
         "fig5bc_approximation.csv",
+        "fig5bc.values.rst",
     )
 ]
 
@@ -108,6 +109,7 @@ rule ct82_fig5bc:
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
+        values=f"{CT82_OUT}/fig5bc.values.rst",
     log:
         "logs/cook_torrance_1982/fig5bc.log",
     benchmark:
