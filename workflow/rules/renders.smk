@@ -22,7 +22,7 @@ TARGETS += [
 
 TARGETS += [
     f"{CT82_OUT}/{name}"
-    for name in ["fig6.png", "fig6.csv"]
+    for name in ["fig6.png", "fig6.csv", "fig6.values.rst"]
     + [f"fig6{panel}.{ext}" for panel in "ab" for ext in ("exr", "png", "scene.yaml")]
 ]
 
@@ -52,6 +52,7 @@ rule ct82_fig6:
                 ct82_fig6_outputs(reading), "fig6", reading, subcategory="Fig. 6"
             ).items()
         },
+        values=f"{CT82_OUT}/fig6.values.rst",
     log:
         "logs/cook_torrance_1982/fig6.log",
     benchmark:
