@@ -197,6 +197,7 @@ TARGETS += [
     for name in [f"{stem}.png", f"{stem}.csv"]
     + [f"{stem}/{vase}.{ext}" for vase in CT82_FIG7_VASES for ext in ("exr", "scene.yaml")]
 ] + [f"{CT82_OUT}/fig7/{vase}.png" for vase in CT82_FIG7_VASES]
+TARGETS += [f"{CT82_OUT}/fig7.values.rst"]
 
 
 # One job for the family, as Fig. 6: the default figure and each reading share imports and the
@@ -213,6 +214,7 @@ rule ct82_fig7:
                 ct82_fig7_outputs(reading), "fig7", reading, subcategory="Fig. 7"
             ).items()
         },
+        values=f"{CT82_OUT}/fig7.values.rst",
     log:
         "logs/cook_torrance_1982/fig7.log",
     benchmark:
