@@ -245,7 +245,8 @@ CT82_FIG8_MATERIALS = {
 }
 
 TARGETS += [
-    f"{CT82_OUT}/fig8{suffix}" for suffix in (".png", ".csv", ".exr", "_render.png", ".scene.yaml")
+    f"{CT82_OUT}/fig8{suffix}"
+    for suffix in (".png", ".csv", ".exr", "_render.png", ".scene.yaml", ".values.rst")
 ]
 
 
@@ -268,6 +269,7 @@ rule ct82_fig8:
         exr=f"{CT82_OUT}/fig8.exr",
         render_png=f"{CT82_OUT}/fig8_render.png",
         scene=f"{CT82_OUT}/fig8.scene.yaml",
+        values=f"{CT82_OUT}/fig8.values.rst",
     log:
         "logs/cook_torrance_1982/fig8.log",
     benchmark:
