@@ -90,7 +90,7 @@ B77_FIG7_STEMS = {
 
 TARGETS += (
     [f"{B77_RENDER_OUT}/fig7_{r}.png" for r in B77_FIG7_READINGS]
-    + [f"{B77_RENDER_OUT}/fig7.csv"]
+    + [f"{B77_RENDER_OUT}/fig7.csv", f"{B77_RENDER_OUT}/fig7.values.rst"]
     + [f"{stem}.{ext}" for stem in B77_FIG7_STEMS.values() for ext in ("exr", "png", "scene.yaml")]
 )
 
@@ -117,6 +117,7 @@ rule blinn77_fig7:
             for stem in B77_FIG7_STEMS.values()
             for ext in ("exr", "png", "scene.yaml")
         ],
+        values=f"{B77_RENDER_OUT}/fig7.values.rst",
     log:
         "logs/blinn_1977/fig7.log",
     benchmark:
@@ -135,7 +136,7 @@ rule blinn77_fig7:
 
 B77_SWEEP = B77_RENDER["fig7_sweep"]
 
-TARGETS += [f"{B77_RENDER_OUT}/fig7_sweep.{ext}" for ext in ("gif", "png", "csv")]
+TARGETS += [f"{B77_RENDER_OUT}/fig7_sweep.{ext}" for ext in ("gif", "png", "csv", "values.rst")]
 
 
 rule blinn77_fig7_sweep:
@@ -153,6 +154,7 @@ rule blinn77_fig7_sweep:
             subcategory="Fig. 7",
         ),
         csv=f"{B77_RENDER_OUT}/fig7_sweep.csv",
+        values=f"{B77_RENDER_OUT}/fig7_sweep.values.rst",
     log:
         "logs/blinn_1977/fig7_sweep.log",
     benchmark:
@@ -290,7 +292,7 @@ rule ct82_fig8:
 
 B77_FIG8 = B77_RENDER["fig8"]
 
-TARGETS += [f"{B77_RENDER_OUT}/fig8.{ext}" for ext in ("png", "csv")] + [
+TARGETS += [f"{B77_RENDER_OUT}/fig8.{ext}" for ext in ("png", "csv", "values.rst")] + [
     f"{B77_RENDER_OUT}/fig8{part}.{ext}" for part in "ab" for ext in ("exr", "png", "scene.yaml")
 ]
 
@@ -315,6 +317,7 @@ rule blinn77_fig8:
         b_exr=f"{B77_RENDER_OUT}/fig8b.exr",
         b_png=f"{B77_RENDER_OUT}/fig8b.png",
         b_scene=f"{B77_RENDER_OUT}/fig8b.scene.yaml",
+        values=f"{B77_RENDER_OUT}/fig8.values.rst",
     log:
         "logs/blinn_1977/fig8.log",
     benchmark:
