@@ -341,7 +341,8 @@ ARTICLE_SPHERES = config["figures"]["article"]["spheres"]
 ARTICLE_SPHERES_OUT = "results/article"
 
 TARGETS += [
-    f"{ARTICLE_SPHERES_OUT}/spheres.{ext}" for ext in ("png", "csv", "exr", "scene.yaml")
+    f"{ARTICLE_SPHERES_OUT}/spheres.{ext}"
+    for ext in ("png", "csv", "exr", "scene.yaml", "values.rst")
 ] + [f"{ARTICLE_SPHERES_OUT}/spheres_render.png"]
 
 
@@ -368,6 +369,7 @@ rule article_spheres:
         exr=f"{ARTICLE_SPHERES_OUT}/spheres.exr",
         render=f"{ARTICLE_SPHERES_OUT}/spheres_render.png",
         scene=f"{ARTICLE_SPHERES_OUT}/spheres.scene.yaml",
+        values=f"{ARTICLE_SPHERES_OUT}/spheres.values.rst",
     log:
         "logs/article/spheres.log",
     benchmark:
