@@ -17,10 +17,12 @@ TARGETS += [
         "fig5.pdf",
         "fig5.csv",
         "fig5_summary.csv",
+        "fig5.values.rst",
         "fig6.png",
         "fig6.pdf",
         "fig6.csv",
         "fig6_summary.csv",
+        "fig6.values.rst",
         "distributions.png",
         "distributions.pdf",
         "distributions.csv",
@@ -103,6 +105,7 @@ rule blinn77_fig5_6:
             category="Blinn 1977",
             subcategory="Figs. 5-6",
         ),
+        values=f"{B77_ANALYTIC_OUT}/{{fig}}.values.rst",
     log:
         "logs/blinn_1977/{fig}.log",
     benchmark:
