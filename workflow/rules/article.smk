@@ -13,6 +13,7 @@ TARGETS += [
         "phong_example.png",
         "phong_example.pdf",
         "phong_example.csv",
+        "phong_example.values.rst",
     )
 ]
 
@@ -56,6 +57,7 @@ rule article_phong_example:
             category="Article",
             subcategory="Phong example",
         ),
+        values=f"{ARTICLE_OUT}/phong_example.values.rst",
     log:
         "logs/article/phong_example.log",
     benchmark:
