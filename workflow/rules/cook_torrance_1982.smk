@@ -11,6 +11,7 @@ TARGETS += [
         "fig4.png",
         "fig4.pdf",
         "fig4.csv",
+        "fig4.values.rst",
         "fig5a.png",
         "fig5a.csv",
         "fig5bc.png",
@@ -41,6 +42,7 @@ rule ct82_fig4:
             category="Cook & Torrance 1982",
             subcategory="Fig. 4",
         ),
+        values=f"{CT82_OUT}/fig4.values.rst",
     log:
         "logs/cook_torrance_1982/fig4.log",
     benchmark:
