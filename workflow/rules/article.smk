@@ -34,8 +34,8 @@ rule article_distributions:
         "benchmarks/article/distributions.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 141 MB
-        runtime=10,  # measured 44 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=ARTICLE["distributions"],
     script:
@@ -64,8 +64,8 @@ rule article_phong_example:
         "benchmarks/article/phong_example.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 150 MB
-        runtime=10,  # measured 40 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=ARTICLE["phong_example"],
     script:

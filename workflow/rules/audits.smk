@@ -66,8 +66,8 @@ rule audit_fresnel_atlas:
         "benchmarks/audits/fresnel_atlas.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 165 MB
-        runtime=10,  # measured 46 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["fresnel_atlas"],
         wavelengths=config["wavelengths"],
@@ -100,8 +100,8 @@ rule audit_rgb_rendering:
         "benchmarks/audits/rgb_rendering.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 575 MB
-        runtime=10,  # measured 13 s
+        mem_mb=1500,
+        runtime=10,
     params:
         audit=AUDITS["rgb_rendering"],
         fig7=CT82["fig7"],
@@ -149,8 +149,8 @@ rule audit_gamut_mapping:
         "benchmarks/audits/gamut_mapping.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 220 MB
-        runtime=10,  # measured 6 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["gamut_mapping"],
         figures=GAMUT_FIGURES,
@@ -183,8 +183,8 @@ rule audit_spectral_sampling:
         "benchmarks/audits/spectral_sampling.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 192 MB
-        runtime=10,  # measured 50 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["spectral_sampling"],
         colour=config["colour"],
@@ -216,8 +216,8 @@ rule audit_illuminant_observer:
         "benchmarks/audits/illuminant_observer.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 220 MB
-        runtime=10,  # measured 130 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["illuminant_observer"],
         wavelengths=config["wavelengths"],
@@ -249,8 +249,8 @@ rule audit_spectral_recovery:
         "benchmarks/audits/spectral_recovery.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 192 MB
-        runtime=10,  # measured 147 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["spectral_recovery"],
         entries={
@@ -284,8 +284,8 @@ rule audit_white_furnace:
         "benchmarks/audits/white_furnace.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 144 MB
-        runtime=10,  # measured 58 s
+        mem_mb=900,
+        runtime=10,
     params:
         audit=AUDITS["white_furnace"],
     script:
