@@ -215,10 +215,11 @@ def _expected(cwd):
     def read(name):
         return pd.read_csv(cwd / OUT / name)
 
-    fig6, printed, irradiance = read("fig6.csv"), read("fig6_as_printed.csv"), read(
-        "fig6_irradiance.csv")
+    fig6 = read("fig6.csv")
     a_printed, a_shown = fig6[fig6.panel == "a"].iloc[0], fig6[fig6.panel == "a"].iloc[-1]
     b = fig6[fig6.panel == "b"].iloc[0]
+    printed = read("fig6_as_printed.csv").set_index("panel")
+    irradiance = read("fig6_irradiance.csv").set_index("panel")
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     _, F0_a, F0_b = colour.XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), d65)
     onset = read("fig5bc_approximation.csv").iloc[0]
@@ -236,11 +237,9 @@ def _expected(cwd):
             "a_chroma": f"{a_printed.highlight_chroma_ratio:.2f}",
             "a_body_L": f"{a_printed.L50:.0f}", "a_body_C": f"{a_printed.body_chroma:.1f}",
             "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}",
-            "intensity_ambient":
-                f"{printed[printed.panel == 'a'].ambient_over_headon_diffuse_weakest_light.iloc[0]:.0f}",
-            "irradiance_b_visible": f"{100 * irradiance[irradiance.panel == 'b'].visible.iloc[0]:.0f}",
-            "irradiance_a_chroma":
-                f"{irradiance[irradiance.panel == 'a'].highlight_chroma_ratio.iloc[0]:.2f}",
+            "intensity_ambient": f"{printed.ambient_over_headon_diffuse_weakest_light.a:.0f}",
+            "irradiance_b_visible": f"{100 * irradiance.visible.b:.0f}",
+            "irradiance_a_chroma": f"{irradiance.highlight_chroma_ratio.a:.2f}",
         },
         "fig5bc": {
             "F0_average": f"{onset.F0_average:.2f}", "n_average": f"{onset.n_average:.1f}",

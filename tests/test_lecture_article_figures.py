@@ -88,7 +88,8 @@ def test_dielectric_indices_match_their_cited_sources(config):
                "diamond": ("main", "C", "Phillip")}
     for name, (a, b, c) in sources.items():
         fresnel = config["figures"]["lecture"]["fresnel"]
-        measured = db[a][b][c].get_index(np.array([fresnel["dielectrics_wavelength_nm"] / 1000])).real[0]
+        wavelength_um = fresnel["dielectrics_wavelength_nm"] / 1000
+        measured = db[a][b][c].get_index(np.array([wavelength_um])).real[0]
         assert fresnel["dielectrics"][name]["n"] == pytest.approx(measured, abs=2e-4)
 
 

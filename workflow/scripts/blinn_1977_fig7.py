@@ -151,11 +151,12 @@ with script_log(snakemake) as log:
     written = pd.read_csv(out.csv).set_index(["panel", "phong_specular", "light"])
     at = {(panel, light): written.loc[(panel, "matched", light)]
           for panel in ("a", "b") for light in ("edge", "front")}
+    mgo_over_al = {light: at["b", light].mirror_highlight / at["a", light].mirror_highlight
+                   for light in ("edge", "front")}
     write_caption_values(out.values, {
         "b_F0": f"{at['b', 'front'].phong_s / at['b', 'front'].p_s:.2f}",
         "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
-        "front_ratio": f"{at['b', 'front'].mirror_highlight / at['a', 'front'].mirror_highlight:.2f}",
-        "edge_ratio": f"{at['b', 'edge'].mirror_highlight / at['a', 'edge'].mirror_highlight:.2f}",
+        "front_ratio": f"{mgo_over_al['front']:.2f}", "edge_ratio": f"{mgo_over_al['edge']:.2f}",
         "edge_NE": f"{np.cos(np.radians(lights['edge']['angle_deg'] / 2)):.3f}",
         "a_ts_edge": f"{at['a', 'edge'].torrance_sparrow_max:.1f}",
         "b_ts_edge": f"{at['b', 'edge'].torrance_sparrow_max:.1f}",

@@ -74,10 +74,11 @@ with script_log(snakemake) as log:
 
     # the caption's numbers (workflow/report/ct82_fig8.rst), from the table as written
     parts = pd.read_csv(out.csv).set_index("part")
+    Y = parts.mean_Y
     write_caption_values(out.values, {
         "led_nm": f"{parts.dominant_wavelength_shown_nm.led:.0f}",
         "led_purity": f"{parts.purity_shown.led:.2f}",
         "case_nm": f"{parts.dominant_wavelength_shown_nm.case:.0f}",
         "case_purity": f"{parts.purity_shown.case:.2f}",
         "steel_purity": f"{parts.purity_shown.band_inner:.2f}",
-        "border_over_inset": f"{parts.mean_Y.band_outer_border / parts.mean_Y.band_outer_interior:.2f}"})
+        "border_over_inset": f"{Y.band_outer_border / Y.band_outer_interior:.2f}"})
