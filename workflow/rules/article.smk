@@ -13,6 +13,7 @@ TARGETS += [
         "phong_example.png",
         "phong_example.pdf",
         "phong_example.csv",
+        "phong_example.values.rst",
     )
 ]
 
@@ -33,8 +34,8 @@ rule article_distributions:
         "benchmarks/article/distributions.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 141 MB
-        runtime=10,  # measured 44 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=ARTICLE["distributions"],
     script:
@@ -56,14 +57,15 @@ rule article_phong_example:
             category="Article",
             subcategory="Phong example",
         ),
+        values=f"{ARTICLE_OUT}/phong_example.values.rst",
     log:
         "logs/article/phong_example.log",
     benchmark:
         "benchmarks/article/phong_example.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 150 MB
-        runtime=10,  # measured 40 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=ARTICLE["phong_example"],
     script:

@@ -66,8 +66,8 @@ rule audit_fresnel_atlas:
         "benchmarks/audits/fresnel_atlas.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 165 MB
-        runtime=10,  # measured 46 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["fresnel_atlas"],
         wavelengths=config["wavelengths"],
@@ -100,8 +100,8 @@ rule audit_rgb_rendering:
         "benchmarks/audits/rgb_rendering.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 575 MB
-        runtime=10,  # measured 13 s
+        mem_mb=1500,
+        runtime=10,
     params:
         # the keys it reads, declared beside C&T Fig. 7's (reflectance.papers.figures.READERS)
         **reader_params("audit_rgb_rendering", config),
@@ -147,8 +147,8 @@ rule audit_gamut_mapping:
         "benchmarks/audits/gamut_mapping.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 220 MB
-        runtime=10,  # measured 6 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["gamut_mapping"],
         figures=GAMUT_FIGURES,
@@ -181,8 +181,8 @@ rule audit_spectral_sampling:
         "benchmarks/audits/spectral_sampling.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 192 MB
-        runtime=10,  # measured 50 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["spectral_sampling"],
         colour=config["colour"],
@@ -214,8 +214,8 @@ rule audit_illuminant_observer:
         "benchmarks/audits/illuminant_observer.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 220 MB
-        runtime=10,  # measured 130 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["illuminant_observer"],
         wavelengths=config["wavelengths"],
@@ -247,8 +247,8 @@ rule audit_spectral_recovery:
         "benchmarks/audits/spectral_recovery.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 192 MB
-        runtime=10,  # measured 147 s
+        mem_mb=1000,
+        runtime=10,
     params:
         audit=AUDITS["spectral_recovery"],
         entries={
@@ -282,8 +282,8 @@ rule audit_white_furnace:
         "benchmarks/audits/white_furnace.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 144 MB
-        runtime=10,  # measured 58 s
+        mem_mb=900,
+        runtime=10,
     params:
         audit=AUDITS["white_furnace"],
     script:

@@ -17,10 +17,12 @@ TARGETS += [
         "fig5.pdf",
         "fig5.csv",
         "fig5_summary.csv",
+        "fig5.values.rst",
         "fig6.png",
         "fig6.pdf",
         "fig6.csv",
         "fig6_summary.csv",
+        "fig6.values.rst",
         "distributions.png",
         "distributions.pdf",
         "distributions.csv",
@@ -50,8 +52,8 @@ rule blinn77_fig1:
         "benchmarks/blinn_1977/fig1.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 130 MB
-        runtime=10,  # measured 41 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=B77_ANALYTIC["fig1_4"],
     script:
@@ -79,8 +81,8 @@ rule blinn77_fig2_4:
         "benchmarks/blinn_1977/fig2_4.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 159 MB
-        runtime=10,  # measured 21 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=B77_ANALYTIC["fig1_4"],
     script:
@@ -103,6 +105,7 @@ rule blinn77_fig5_6:
             category="Blinn 1977",
             subcategory="Figs. 5-6",
         ),
+        values=f"{B77_ANALYTIC_OUT}/{{fig}}.values.rst",
     log:
         "logs/blinn_1977/{fig}.log",
     benchmark:
@@ -111,8 +114,8 @@ rule blinn77_fig5_6:
         fig="fig5|fig6",
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 150 MB
-        runtime=10,  # measured 47 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=B77_ANALYTIC["fig5_6"],
         incidence_deg=lambda wildcards: B77_ANALYTIC["fig5_6"]["incidence_deg"][wildcards.fig],
@@ -143,8 +146,8 @@ rule blinn77_distributions:
         "benchmarks/blinn_1977/distributions.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 164 MB
-        runtime=10,  # measured 51 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=B77_ANALYTIC["distributions"],
     script:

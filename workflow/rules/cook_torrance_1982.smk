@@ -11,6 +11,7 @@ TARGETS += [
         "fig4.png",
         "fig4.pdf",
         "fig4.csv",
+        "fig4.values.rst",
         "fig5a.png",
         "fig5a.csv",
         "fig5bc.png",
@@ -19,6 +20,7 @@ TARGETS += [
         "fig5bc.exr",
         "fig5bc_strip.csv",
         "fig5bc_approximation.csv",
+        "fig5bc.values.rst",
     )
 ]
 
@@ -40,14 +42,15 @@ rule ct82_fig4:
             category="Cook & Torrance 1982",
             subcategory="Fig. 4",
         ),
+        values=f"{CT82_OUT}/fig4.values.rst",
     log:
         "logs/cook_torrance_1982/fig4.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig4.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 190 MB
-        runtime=10,  # measured 117 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=CT82["fig4"],
         wavelengths=config["wavelengths"],
@@ -73,8 +76,8 @@ rule ct82_fig5a:
         "benchmarks/cook_torrance_1982/fig5a.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 126 MB
-        runtime=10,  # measured 45 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=CT82["fig5"],
         wavelengths=config["wavelengths"],
@@ -108,14 +111,15 @@ rule ct82_fig5bc:
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
+        values=f"{CT82_OUT}/fig5bc.values.rst",
     log:
         "logs/cook_torrance_1982/fig5bc.log",
     benchmark:
         "benchmarks/cook_torrance_1982/fig5bc.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 196 MB
-        runtime=10,  # measured 136 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=CT82["fig5"],
         wavelengths=config["wavelengths"],
@@ -175,8 +179,8 @@ rule ct82_fig1:
         "benchmarks/cook_torrance_1982/fig1.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 163 MB
-        runtime=10,  # measured 23 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=CT82["fig1"],
     script:
@@ -198,8 +202,8 @@ rule ct82_fig2:
         "benchmarks/cook_torrance_1982/fig2.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 200 MB
-        runtime=10,  # measured 41 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=CT82["fig2"],
     script:
@@ -221,8 +225,8 @@ rule ct82_fig3:
         "benchmarks/cook_torrance_1982/fig3.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 581 MB
-        runtime=10,  # measured 84 s
+        mem_mb=1500,
+        runtime=10,
     params:
         fig=CT82["fig3"],
     script:
@@ -256,8 +260,8 @@ rule ct82_table1:
         "benchmarks/cook_torrance_1982/table1.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 134 MB
-        runtime=10,  # measured 24 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=CT82["table1"],
         spectra=CT82["fig7"]["table1_spectra"],
@@ -290,8 +294,8 @@ rule errata:
         "benchmarks/errata/errata.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 223 MB
-        runtime=10,  # measured 115 s
+        mem_mb=1000,
+        runtime=10,
     params:
         errata=CT82_ERRATA,
     script:

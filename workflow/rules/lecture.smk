@@ -43,8 +43,8 @@ rule lecture_distributions:
         "benchmarks/lecture/distributions.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 171 MB
-        runtime=10,  # measured 36 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=LECTURE["distributions"],
     script:
@@ -67,8 +67,8 @@ rule lecture_brdf_lobes_2d:
         "benchmarks/lecture/brdf_lobes_2d.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 159 MB
-        runtime=10,  # measured 74 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=LECTURE["brdf_lobes"],
     script:
@@ -89,8 +89,8 @@ rule lecture_brdf_lobes_3d:
         "benchmarks/lecture/brdf_lobes_3d.tsv"
     threads: 1
     resources:
-        mem_mb=1400,  # script peak 544 MB
-        runtime=10,  # measured 75 s
+        mem_mb=1400,
+        runtime=10,
     params:
         fig=LECTURE["brdf_lobes"],
     script:
@@ -115,8 +115,8 @@ rule lecture_fresnel:
         "benchmarks/lecture/fresnel.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 133 MB
-        runtime=10,  # measured 59 s
+        mem_mb=900,
+        runtime=10,
     params:
         fig=LECTURE["fresnel"],
         wavelengths=config["wavelengths"],
@@ -147,8 +147,8 @@ rule lecture_shadowing_masking:
         "benchmarks/lecture/shadowing_masking.tsv"
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 160 MB
-        runtime=10,  # measured 52 s
+        mem_mb=1000,
+        runtime=10,
     params:
         fig=LECTURE["shadowing_masking"],
     script:

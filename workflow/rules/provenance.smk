@@ -25,8 +25,8 @@ rule provenance:
         "benchmarks/provenance.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 30 MB
-        runtime=10,  # measured under 1 s
+        mem_mb=800,
+        runtime=10,
     params:
         git=PROVENANCE_GIT,
         config=config,

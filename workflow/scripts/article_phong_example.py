@@ -7,6 +7,7 @@ article's own printed previous step, which shows where a discrepancy comes from.
 import numpy as np
 import pandas as pd
 
+from reflectance.io.captions import write_caption_values
 from reflectance.optics.brdf import brdf
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 from reflectance.scripting import script_log
@@ -97,3 +98,13 @@ with script_log(snakemake) as log:
                  f"N = {show(N)}, E = {show(E)}, L = {show(L)}, n = {n:g}; red: off beyond the last printed digit",
                  size=STYLE["axes.titlesize"], y=0.995, va="top")
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
+
+    # the caption's recomputed numbers (workflow/report/article_phong_example.rst), to the digits
+    # the article prints, from the table as written
+    recomputed = pd.read_csv(snakemake.output.csv, dtype=str).set_index("step").recomputed
+    write_caption_values(snakemake.output.values, {
+        "LR": f"{float(recomputed.LR):.4f}", "k_phong": f"{float(recomputed.k_phong):.4f}",
+        "k_mirror": f"{float(recomputed.k_phong_mirror):.4f}",
+        "k_library": f"{float(recomputed.k_phong_library):.4f}",
+        "H_length": f"{float(recomputed.H_length):.4f}",
+        "k_unit": f"{float(recomputed.k_unit):.6f}"})

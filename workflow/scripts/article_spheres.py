@@ -9,6 +9,7 @@ import pandas as pd
 
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -68,3 +69,9 @@ with script_log(snakemake) as log:
                  f"m = {metal['m']:g} (s = 1, d = 0)",
                  size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top", linespacing=1.3)
     savefig(fig, out.png, dpi=w_px / width_in, tight=False, tag=display_tag(scene.display.space))
+
+    # the caption's numbers (workflow/report/article_spheres.rst), from the table as written
+    written = pd.read_csv(out.csv).set_index("sphere")
+    write_caption_values(out.values, {
+        "metal_F0": f"{written.clear_coat_F0_Y[metal['name']]:.2f}",
+        "coat_F0": f"{written.clear_coat_F0_Y[cfg['spheres'][0]['name']]:.3f}"})

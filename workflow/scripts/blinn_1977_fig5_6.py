@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.ticker import MaxNLocator
 
+from reflectance.io.captions import write_caption_values
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
@@ -118,3 +119,13 @@ with script_log(snakemake) as log:
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")
+
+    # the caption's numbers (workflow/report/blinn77_fig5_6.rst), per parameter set (in config
+    # order), from the summary as written
+    first, second = pd.read_csv(snakemake.output.summary).itertuples()
+    write_caption_values(snakemake.output.values, {
+        "set1_F0": f"{first.F0:.2f}", "set2_F0": f"{second.F0:.3f}",
+        "set1_ratio": f"{first.peak_ratio_ts_to_matched:.2f}",
+        "set2_ratio": f"{second.peak_ratio_ts_to_matched:.2f}",
+        "set1_ratio_printed": f"{first.peak_ratio_ts_to_as_printed:.2f}",
+        "set2_ratio_printed": f"{second.peak_ratio_ts_to_as_printed:.2f}"})

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 from reflectance.colour.display import display_tag, encode
 
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import render, render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -145,3 +146,18 @@ with script_log(snakemake) as log:
                      f"close-ups: white = i {rim_scale:.1f}",
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
         savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
+
+    # the caption's numbers (workflow/report/blinn77_fig7.rst), from the table as written
+    written = pd.read_csv(out.csv).set_index(["panel", "phong_specular", "light"])
+    at = {(panel, light): written.loc[(panel, "matched", light)]
+          for panel in ("a", "b") for light in ("edge", "front")}
+    mgo_over_al = {light: at["b", light].mirror_highlight / at["a", light].mirror_highlight
+                   for light in ("edge", "front")}
+    write_caption_values(out.values, {
+        "b_F0": f"{at['b', 'front'].phong_s / at['b', 'front'].p_s:.2f}",
+        "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
+        "front_ratio": f"{mgo_over_al['front']:.2f}", "edge_ratio": f"{mgo_over_al['edge']:.2f}",
+        "edge_NE": f"{np.cos(np.radians(lights['edge']['angle_deg'] / 2)):.3f}",
+        "a_ts_edge": f"{at['a', 'edge'].torrance_sparrow_max:.1f}",
+        "b_ts_edge": f"{at['b', 'edge'].torrance_sparrow_max:.1f}",
+        "phong_edge": f"{written.xs('edge', level='light').phong_max.max():.2f}"})

@@ -12,6 +12,7 @@ from PIL import Image, ImageDraw, ImageFont
 
 from reflectance.colour.display import display_tag
 from reflectance.io.atomic import atomic_write
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.integrator import shade_samples
 from reflectance.render.pipeline import RenderResult, display_image
@@ -125,3 +126,7 @@ with script_log(snakemake) as log:
     fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')})"
                  f"{cross}", y=1 - 0.04 / H, va="top", color="white", linespacing=1.3)
     savefig(fig, out.contact, dpi=DPI, tight=False, tag=display_tag(first.display.space))
+
+    # the caption's number (workflow/report/blinn77_fig7_sweep.rst), from the table as written
+    written = pd.read_csv(out.csv)
+    write_caption_values(out.values, {"crossover": f"{written.crossover_deg.iloc[0]:.1f}"})

@@ -9,7 +9,8 @@ import numpy as np
 import pandas as pd
 
 from reflectance.colour.display import display_tag
-from reflectance.optics.microfacet import c3_texture_Blinn1977
+from reflectance.io.captions import write_caption_values
+from reflectance.optics.microfacet import c3_texture_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
@@ -72,3 +73,9 @@ with script_log(snakemake) as log:
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
                  f"i = 1 is white", fontsize=T["symbol"], y=1 - 0.05 / H, va="top", linespacing=1.3)
     savefig(fig, out.png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
+
+    # the caption's numbers (workflow/report/blinn77_fig8.rst): the shiny parts' half-value angle
+    # (C3 = C_min, the table's least C3)
+    written = pd.read_csv(out.csv)
+    write_caption_values(out.values, {
+        "shiny_beta": f"{np.degrees(c3_to_beta_Blinn1977(written.C3_min_on_map.min())):.0f}"})

@@ -6,7 +6,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.colorimetry import illuminant_range_nm, illuminant_sd
+from reflectance.colour.colorimetry import cmfs, illuminant_range_nm, illuminant_sd
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
 from reflectance.optics.fresnel import F0_from_nk
@@ -57,3 +58,10 @@ with script_log(snakemake) as log:
     fig.tight_layout(w_pad=1.5)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     log.info("F0 of %s: %.4f .. %.4f", material.name, material.F0.min(), material.F0.max())
+
+    # the caption's numbers (workflow/report/ct82_fig4.rst): where colour-science's table of the
+    # illuminant stops, and how little the CMFs weigh beyond it
+    weights = cmfs(colour_cfg["observer"], grid)
+    beyond = weights[grid > tabulated_end].max(initial=0.0) / weights.max()
+    write_caption_values(snakemake.output.values, {"tabulated_end": f"{tabulated_end:g}",
+                                                   "cmf_beyond": f"{beyond:.1e}"})

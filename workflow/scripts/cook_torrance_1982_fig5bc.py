@@ -14,6 +14,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.audit.colour_shift import (COLOUR_METHODS, approximation_onset_CookTorrance1982,
                                             colour_table)
 from reflectance.colour.display import display_tag
+from reflectance.io.captions import write_caption_values
 from reflectance.io.images import write_exr_XYZ
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, paper_name, savefig
 from reflectance.scripting import script_log
@@ -106,3 +107,12 @@ with script_log(snakemake) as log:
     for method in rows:
         log.info("%s: max dE2000 vs exact %.3f (%s)", method,
                  table[table.method == method].dE2000_vs_exact.max(), COLOUR_METHODS[method])
+
+    # the caption's numbers (workflow/report/ct82_fig5bc.rst), from the table as written
+    written = pd.read_csv(snakemake.output.approximation).iloc[0]
+    write_caption_values(snakemake.output.values, {
+        "F0_average": f"{written.F0_average:.2f}", "n_average": f"{written.n_average:.1f}",
+        "dip": f"{-written.dip:.2f}", "dip_deg": f"{written.dip_deg:.1f}",
+        "onset_deg": f"{written.onset_deg:.2f}", "last_deg": f"{90 - written.onset_deg:.2f}",
+        "half_deg": f"{written['t_0.5_deg']:.2f}",
+        "fractions": " and ".join(c[2:-4] for c in written.index if c.startswith("t_"))})

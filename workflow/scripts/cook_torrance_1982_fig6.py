@@ -13,9 +13,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy, tristimulus_weights, white_XYZ
 from reflectance.colour.display import display_tag
 from reflectance.io.cache import TRACES
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material
 from reflectance.papers.figures import ct82_fig6 as definition
@@ -127,3 +128,34 @@ with script_log(snakemake) as log:
                 reference, published,
                 [item for item in scenes if item.tags["prefix"] == prefix])
     log.info("%d distinct traces for %d variants", len(TRACES), len(variants))
+
+
+    # the captions' numbers (workflow/report/ct82_fig6_*.rst), from each variant's table as
+    # written; per panel its first row is Fig. 6a as printed, its last as the default figure shows it
+    values = {}
+    colour_cfg = snakemake.params.colour
+    for prefix, reference, published in variants:
+        table = pd.read_csv(getattr(snakemake.output, prefix + "csv"))
+        first = table.drop_duplicates("panel").set_index("panel")
+        a, b = first.loc["a"], first.loc["b"]
+        if published:
+            a_shown = table.drop_duplicates("panel", keep="last").set_index("panel").loc["a"]
+            white = XYZ_to_xy(white_XYZ(colour_cfg["illuminant"], colour_cfg["observer"]))
+            _, F0_a, F0_b = XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), white)
+            values.update({
+                "ambient_headon": f"{100 * b.ambient_over_headon_diffuse_all_lights:.1f}",
+                "ambient_highlight": f"{100 * b.ambient_over_direct_max:.2f}",
+                "b_hue": f"{b.highlight_hue_deg:.1f}",
+                "Cu_F0_hue": f"{np.degrees(np.arctan2(F0_b, F0_a)) % 360:.1f}",
+                "a_F0": f"{a.F0_Y:.3f}", "a_peak_ratio": f"{a.specular_over_diffuse_peak:.2f}",
+                "a_chroma": f"{a.highlight_chroma_ratio:.2f}", "a_body_L": f"{a.L50:.0f}",
+                "a_body_C": f"{a.body_chroma:.1f}",
+                "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}"})
+        elif reference == "intensity":
+            values.update({
+                "intensity_ambient": f"{a.ambient_over_headon_diffuse_weakest_light:.0f}",
+                "intensity_over_peak": f"{b.ambient_over_direct_max:.1f}"})
+        elif reference == "irradiance":
+            values.update({"irradiance_b_visible": f"{100 * b.visible:.0f}",
+                           "irradiance_a_chroma": f"{a.highlight_chroma_ratio:.2f}"})
+    write_caption_values(snakemake.output.values, values)

@@ -17,6 +17,7 @@ import pandas as pd
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag, XYZ_to_display
 from reflectance.io.cache import TRACES
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, savefig
 from reflectance.optics.spectra import list_materials, load_material
 from reflectance.io.tables import write_csv
@@ -144,3 +145,25 @@ with script_log(snakemake) as log:
         variant(log, out, reference, published,
                 [item for item in scenes if item.tags["prefix"] == prefix])
     log.info("%d distinct traces for %d variants", len(TRACES), len(variants))
+
+
+    # the captions' numbers (workflow/report/ct82_fig7_*.rst): the Munsell notations of the
+    # derived nonmetals (spectra/sources.csv) and how the default figure's vases read, from its
+    # table as written
+    munsell = list_materials(Path(snakemake.input.sources).parent).set_index("material").dataset
+    munsell = munsell.str.removeprefix("Munsell ")
+    values = {"RustMunsell_notation": munsell.RustMunsell, "OliveDrab_notation": munsell.OliveDrab,
+              "Rubber_notation": munsell.Rubber, "LunarDust_notation": munsell.LunarDust,
+              "Obsidian_notation": munsell.Obsidian}
+    if any(published for _, _, published in variants):
+        vases = pd.read_csv(snakemake.output.csv).set_index("vase")
+        L, span = vases.L50, vases.L99 - vases.L10
+        values.update({
+            "Obsidian_F0": f"{vases.F0_Y.Obsidian:.2f}", "Ag_F0": f"{vases.F0_Y.Ag:.2f}",
+            "Carbon_F0": f"{vases.F0_Y.Carbon:.2f}", "RustMunsell_L": f"{L.RustMunsell:.0f}",
+            "OliveDrab_L": f"{L.OliveDrab:.0f}", "Rubber_L": f"{L.Rubber:.0f}",
+            "LunarDust_L": f"{L.LunarDust:.0f}", "Obsidian_L": f"{L.Obsidian:.0f}",
+            "Obsidian_visible": f"{100 * vases.visible.Obsidian:.0f}",
+            "Obsidian_span": f"{span.Obsidian:.0f}", "LunarDust_span": f"{span.LunarDust:.1f}",
+            "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}"})
+    write_caption_values(snakemake.output.values, values)

@@ -11,6 +11,7 @@ import pandas as pd
 from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.colour.display import display_tag
 from reflectance.render.composite import part_pixels
+from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import new_figure, savefig
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.tracing import trace_once
@@ -69,3 +70,14 @@ with script_log(snakemake) as log:
                  f"{p.fig['led']['dominant_wavelength_nm']:g} nm LEDs",
                  color="white", fontsize=10, y=1 - 0.12 / (height / 100 + 0.45))
     savefig(fig, out.png, dpi=100, tag=display_tag(scene.display.space))
+
+    # the caption's numbers (workflow/report/ct82_fig8.rst), from the table as written
+    parts = pd.read_csv(out.csv).set_index("part")
+    Y = parts.mean_Y
+    write_caption_values(out.values, {
+        "led_nm": f"{parts.dominant_wavelength_shown_nm.led:.0f}",
+        "led_purity": f"{parts.purity_shown.led:.2f}",
+        "case_nm": f"{parts.dominant_wavelength_shown_nm.case:.0f}",
+        "case_purity": f"{parts.purity_shown.case:.2f}",
+        "steel_purity": f"{parts.purity_shown.band_inner:.2f}",
+        "border_over_inset": f"{Y.band_outer_border / Y.band_outer_interior:.2f}"})

@@ -70,7 +70,7 @@ with script_log(snakemake) as log:
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
         f = table[key]
-        inside = np.abs(theta_o) <= np.radians(85.0)  # Ward's 1/sqrt(N.V) grows without bound at the horizon
+        inside = np.abs(theta_o) <= np.radians(cfg["scale_to_deg"])  # Ward's f grows without bound
         top = 1.15 * f[inside].max()
         ax.plot(theta_o, f, color=OKABE_ITO[0], lw=1.6)
         ax.fill(theta_o, f, color=OKABE_ITO[0], alpha=0.15)
@@ -83,7 +83,8 @@ with script_log(snakemake) as log:
         ax.tick_params(pad=1)
         ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
         ax.yaxis.set_major_locator(MaxNLocator(2))
-        ax.text(0.5, 0.02, f"max f = {f[inside].max():.3g} sr$^{{-1}}$\n(|\u03b8| \u2264 85\u00b0)"
+        ax.text(0.5, 0.02, f"max f = {f[inside].max():.3g} sr$^{{-1}}$\n"
+                f"(|\u03b8| \u2264 {cfg['scale_to_deg']:g}\u00b0)"
                 if f.max() > top else f"max f = {f.max():.3g} sr$^{{-1}}$", transform=ax.transAxes,
                 ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
         log.info("%s: max f %.6g at theta_o = %.2f deg", key, f.max(),

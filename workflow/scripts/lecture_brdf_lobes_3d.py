@@ -1,8 +1,8 @@
 """Lecture (Russin, Module 3B), "BRDF" slide: the sample BRDFs of brdf_lobes_2d as 3-D lobe surfaces
 (pyvista, off-screen). Each surface point is V f(L, V) / max f over the outgoing hemisphere: the
 radius along every outgoing direction V is the BRDF itself (not f cos theta_o), scaled per lobe by its
-largest value up to 85 degrees from the normal (and clipped there: Ward's lobe grows without bound at
-the horizon)."""
+largest value up to ``scale_to_deg`` from the normal (and clipped there: Ward's lobe grows without
+bound at the horizon)."""
 
 import numpy as np
 import pyvista as pv
@@ -35,8 +35,8 @@ with script_log(snakemake) as log:
     pl.set_background("white")
     for i, (key, (method, title)) in enumerate(MODELS.items()):
         f = brdf(L, V, N, method, **cfg["models"][key])
-        # Ward's 1/sqrt(N.V) grows without bound at the horizon: scale by the peak up to 85 degrees
-        peak = float(f[theta <= np.radians(85.0)].max())
+        # Ward's 1/sqrt(N.V) grows without bound at the horizon: scale by the peak short of it
+        peak = float(f[theta <= np.radians(cfg["scale_to_deg"])].max())
         r = np.minimum(f / peak, 1.0)
         lobe = pv.StructuredGrid(*(r * V[..., j] for j in range(3)))
         lobe["f / max f"] = r.ravel(order="F")

@@ -1,9 +1,10 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), progress (of long work, on
-standard error), figures (the shared matplotlib style and saving), paths (paths from data: inside
-the project or the scene file's folder; names that are names; the package's own data), cache (the
-small on-disk cache of values computed once: colour tables, meshes).
+Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), captions (the numbers a
+report caption states, as substitution definitions), progress (of long work, on standard error),
+figures (the shared matplotlib style and saving), paths (paths from data: inside the project or
+the scene file's folder; names that are names; the package's own data), cache (the small on-disk
+cache of values computed once: colour tables, meshes).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -12,13 +13,16 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("atomic", "cache", "figures", "images", "paths", "progress", "provenance", "tables")
+_MODULES = ("atomic", "cache", "captions", "figures", "images", "paths", "progress", "provenance",
+            "tables")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "atomic_write": "atomic",
     "remove_stale_temporaries": "atomic",
     "write_csv": "tables",
+    "write_caption_values": "captions",
+    "read_caption_values": "captions",
     "savefig": "figures",
     "new_figure": "figures",
     "off_screen_plotter": "figures",

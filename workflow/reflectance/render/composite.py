@@ -148,9 +148,10 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
     Returns
     -------
     dict
-        ``visible``: fraction of object pixels with some channel >= 20/255; ``L10``, ``L99``: the
-        10th and 99th percentile of L*; ``body_chroma``: median C*ab; ``highlight_chroma_ratio``:
-        median C*ab of the pixels at or above the ``highlight_percentile`` of L*, over the body's;
+        ``visible``: fraction of object pixels with some channel >= 20/255; ``L10``, ``L50``,
+        ``L99``: the 10th, 50th and 99th percentile of L*; ``body_chroma``: median C*ab;
+        ``highlight_chroma_ratio``: median C*ab of the pixels at or above the
+        ``highlight_percentile`` of L*, over the body's;
         ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
         channel at 255 (NaN if none); ``clipped``: fraction of object pixels with a channel at 255.
     """
@@ -176,7 +177,8 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
         a, b = Lab[top, 1].mean(), Lab[top, 2].mean()
         hue = float(np.degrees(np.arctan2(b, a)) % 360)
     return {"visible": float((codes.max(axis=-1) >= 20).mean()),
-            "L10": float(np.percentile(L, 10)), "L99": float(np.percentile(L, 99)),
+            "L10": float(np.percentile(L, 10)), "L50": float(np.percentile(L, 50)),
+            "L99": float(np.percentile(L, 99)),
             "body_chroma": float(np.median(C)),
             "highlight_chroma_ratio": float(np.median(C[highlight]) / np.median(C)),
             "highlight_hue_deg": hue, "clipped": float((~unclipped).mean())}

@@ -29,7 +29,8 @@ def spectra(params):
 
 def outputs(params):
     return {"png": f"{OUT}/spheres.png", "csv": f"{OUT}/spheres.csv", "exr": f"{OUT}/spheres.exr",
-            "render": f"{OUT}/spheres_render.png", "scene": f"{OUT}/spheres.scene.yaml"}
+            "render": f"{OUT}/spheres_render.png", "scene": f"{OUT}/spheres.scene.yaml",
+            "values": f"{OUT}/spheres.values.rst"}
 
 
 def scenes(params, spectra_dir):

@@ -41,7 +41,7 @@ def stems(params, folder=OUT):
 def outputs(params):
     fig = params["fig"]
     return {"figures": [f"{OUT}/fig7_{r}.png" for r in fig["phong_specular_readings"]],
-            "csv": f"{OUT}/fig7.csv",
+            "csv": f"{OUT}/fig7.csv", "values": f"{OUT}/fig7.values.rst",
             "renders": [f"{stem}.{ext}" for stem in stems(params).values()
                         for ext in ("exr", "png", "scene.yaml")]}
 

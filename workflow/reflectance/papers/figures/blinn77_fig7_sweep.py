@@ -28,7 +28,8 @@ def spectra(params):
 
 def outputs(params):
     return {name: f"{OUT}/fig7_sweep.{ext}"
-            for name, ext in (("gif", "gif"), ("contact", "png"), ("csv", "csv"))}
+            for name, ext in (("gif", "gif"), ("contact", "png"), ("csv", "csv"),
+                              ("values", "values.rst"))}
 
 
 def frame_lights(sweep):

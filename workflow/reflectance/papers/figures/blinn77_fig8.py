@@ -28,7 +28,7 @@ def spectra(params):
 
 
 def outputs(params):
-    out = {"png": f"{OUT}/fig8.png", "csv": f"{OUT}/fig8.csv"}
+    out = {"png": f"{OUT}/fig8.png", "csv": f"{OUT}/fig8.csv", "values": f"{OUT}/fig8.values.rst"}
     for part in params["fig"]["patterns"]:
         out.update({f"{part}_{kind}": f"{OUT}/fig8{part}.{ext}"
                     for kind, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})

@@ -42,7 +42,7 @@ def spectra(params):
 
 
 def outputs(params):
-    out = {}
+    out = {"values": f"{OUT}/fig6.values.rst"}  # the numbers its captions state
     for prefix, _, _ in variants(params):
         suffix = f"_{prefix[:-1]}" if prefix else ""
         out.update({f"{prefix}{key}": f"{OUT}/{name.format(suffix)}"

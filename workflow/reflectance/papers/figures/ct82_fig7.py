@@ -48,7 +48,7 @@ def spectra(params):
 
 
 def outputs(params):
-    out = {}
+    out = {"values": f"{OUT}/fig7.values.rst"}  # the numbers its captions state
     for prefix, _, published in variants(params):
         stem = f"fig7_{prefix[:-1]}" if prefix else "fig7"
         out.update({f"{prefix}png": f"{OUT}/{stem}.png", f"{prefix}csv": f"{OUT}/{stem}.csv",

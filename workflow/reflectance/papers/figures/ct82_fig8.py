@@ -28,7 +28,8 @@ def spectra(params):
 
 def outputs(params):
     return {"png": f"{OUT}/fig8.png", "csv": f"{OUT}/fig8.csv", "exr": f"{OUT}/fig8.exr",
-            "render_png": f"{OUT}/fig8_render.png", "scene": f"{OUT}/fig8.scene.yaml"}
+            "render_png": f"{OUT}/fig8_render.png", "scene": f"{OUT}/fig8.scene.yaml",
+            "values": f"{OUT}/fig8.values.rst"}
 
 
 def scenes(params, spectra_dir):
