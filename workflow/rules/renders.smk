@@ -2,6 +2,7 @@
 # reflectance.papers.figures: the config keys it reads (the rule's params, exactly: the params
 # trigger reruns it for those keys and no other), its scenes (what the config check validates and
 # the job renders) and its outputs. The rules add the report marks, resources and the script.
+# Their resources follow the measured peaks and times in README ("Running on a cluster").
 
 # Cook & Torrance 1982, Fig. 6, the two vases: the default figure (fig6.published) and one figure
 # per reading of the paper's ambient term (fig6.ambient_readings).
@@ -25,8 +26,8 @@ rule ct82_fig6:
         "benchmarks/cook_torrance_1982/fig6.tsv"
     threads: 1
     resources:
-        mem_mb=1800,  # script peak 872 MB (3 variants, one trace)
-        runtime=10,  # measured 8 s (2026-12-02; the 3 jobs it replaces: 21 s)
+        mem_mb=1800,
+        runtime=10,
     params:
         **CT82_FIG6_PARAMS,
     script:
@@ -67,8 +68,8 @@ rule blinn77_fig7:
         "benchmarks/blinn_1977/fig7.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 709 MB (three shared traces held)
-        runtime=15,  # measured 242 s
+        mem_mb=1500,
+        runtime=15,
     params:
         **B77_FIG7_PARAMS,
     script:
@@ -101,8 +102,8 @@ rule blinn77_fig7_sweep:
         "benchmarks/blinn_1977/fig7_sweep.tsv"
     threads: 1
     resources:
-        mem_mb=1400,  # script peak 494 MB
-        runtime=10,  # measured 185 s
+        mem_mb=1400,
+        runtime=10,
     params:
         **B77_SWEEP_PARAMS,
     script:
@@ -133,8 +134,8 @@ rule ct82_fig7:
         "benchmarks/cook_torrance_1982/fig7.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 639 MB (3 variants, one trace)
-        runtime=10,  # measured 10 s (2026-12-02; the 3 jobs it replaces: 24 s)
+        mem_mb=1500,
+        runtime=10,
     params:
         **CT82_FIG7_PARAMS,
     script:
@@ -169,8 +170,8 @@ rule ct82_fig8:
         "benchmarks/cook_torrance_1982/fig8.tsv"
     threads: 1
     resources:
-        mem_mb=1700,  # script peak 743 MB
-        runtime=10,  # measured 139 s
+        mem_mb=1700,
+        runtime=10,
     params:
         **CT82_FIG8_PARAMS,
     script:
@@ -202,8 +203,8 @@ rule blinn77_fig8:
         "benchmarks/blinn_1977/fig8.tsv"
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 590 MB
-        runtime=10,  # measured 88 s
+        mem_mb=1500,
+        runtime=10,
     params:
         **B77_FIG8_PARAMS,
     script:
@@ -240,8 +241,8 @@ rule article_spheres:
         "benchmarks/article/spheres.tsv"
     threads: 1
     resources:
-        mem_mb=2100,  # script peak 1079 MB
-        runtime=10,  # measured 83 s
+        mem_mb=2100,
+        runtime=10,
     params:
         **SPHERES_PARAMS,
     script:
@@ -272,7 +273,7 @@ rule linear_rgb_exr:
         stem=r"results/[^.]+",
     threads: 1
     resources:
-        mem_mb=1500,  # not measured (off by default): as a render of its size
-        runtime=10,  # not measured
+        mem_mb=1500,  # no measurement (off by default): what a render of its size asks
+        runtime=10,
     script:
         "../scripts/linear_rgb_exr.py"
