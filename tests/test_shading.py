@@ -247,7 +247,8 @@ def test_shadowed_samples_get_only_the_ambient(copper, grid):
                 wavelengths=grid)
     ambient_XYZ = 0.05 * copper.F0 @ colour_weights(grid)  # I_ia R_a, R_a = pi R_d = F0
     assert np.allclose(XYZ[::2], ambient_XYZ, rtol=1e-12)
-    assert np.all(XYZ[1::2, 1] >= ambient_XYZ[1])
+    # where the light is behind a sample its Y is the ambient alone, summed in another order
+    assert np.all(XYZ[1::2, 1] >= ambient_XYZ[1] * (1 - 1e-12))
 
 
 def test_point_light_area_gives_inverse_square_falloff(grid):
