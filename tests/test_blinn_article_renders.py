@@ -303,29 +303,34 @@ def test_fig8_table_and_images(fig8):
 
 # --- the article's pair of spheres ------------------------------------------------------------
 
-def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
-    import colour
-
-    from reflectance.optics.spectra import read_spectrum_csv
-
+@pytest.fixture(scope="module")
+def spheres(tmp_path_factory):
+    """The article's spheres, run as Snakemake would at a small size: (config, outputs, pair XYZ,
+    gold XYZ)."""
+    tmp = tmp_path_factory.mktemp("spheres")
     fig = copy.deepcopy(CONFIG["figures"]["article"]["spheres"])
     fig["camera"].update(width=160, height=100, supersample=1)
+    fig["metal_sphere"]["image"].update(width=80, height=100)  # the panels' one scale, as config's
     spectra = ROOT / "spectra"
-    out = {"png": tmp_path / "spheres.png", "csv": tmp_path / "spheres.csv",
-           "exr": tmp_path / "spheres.exr", "render": tmp_path / "render.png",
-           "scene": tmp_path / "spheres.scene.yaml", "values": tmp_path / "spheres.values.rst"}
+    out = {"png": tmp / "spheres.png", "csv": tmp / "spheres.csv",
+           "exr": tmp / "spheres.exr", "render": tmp / "render.png",
+           "scene": tmp / "spheres.scene.yaml", "values": tmp / "spheres.values.rst",
+           "gold_exr": tmp / "gold.exr", "gold_render": tmp / "gold_render.png",
+           "gold_scene": tmp / "gold.scene.yaml"}
     pigments = {s["diffuse_material"]: CONFIG["materials"][s["diffuse_material"]]
                 for s in fig["spheres"]}
-    run_script("article_spheres.py", tmp_path,
-               {"fig": fig, "pigments": pigments, "wavelengths": WAVELENGTHS,
-                "colour": CONFIG["colour"]},
-               {k: str(v) for k, v in out.items()},
-               {"spectra": [str(spectra / f"{fig['material']}.csv"),
-                            str(spectra / f"{fig['metal_sphere']['material']}.csv")]
-                + [str(spectra / f"{s['diffuse_material']}.csv") for s in fig["spheres"]]})
-    XYZ = read_exr(out["exr"])[0]
-    total = XYZ.sum(-1, keepdims=True)
-    xy = XYZ[..., :2] / np.where(total > 0, total, 1.0)
+    from reflectance.papers.figures import article_spheres as definition
+
+    params = {"fig": fig, "pigments": pigments, "wavelengths": WAVELENGTHS,
+              "colour": CONFIG["colour"]}
+    run_script("article_spheres.py", tmp, params, {k: str(v) for k, v in out.items()},
+               {"spectra": [str(spectra / f"{name}.csv") for name in definition.spectra(params)]})
+    return fig, out, read_exr(out["exr"])[0], read_exr(out["gold_exr"])[0]
+
+
+def _xy_tools():
+    import colour
+
     shape = colour.SpectralShape(360, 830, 5)
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
     d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
@@ -335,10 +340,23 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
             return colour.XYZ_to_xy(colour.sd_to_XYZ(sd, cmfs, d65, shape=shape))
 
+    return xy_of
+
+
+def _xy(XYZ):
+    total = XYZ.sum(-1, keepdims=True)
+    return XYZ[..., :2] / np.where(total > 0, total, 1.0)
+
+
+def test_article_spheres_pair_has_white_highlights_on_coloured_spheres(spheres):
+    from reflectance.optics.spectra import read_spectrum_csv
+
+    fig, out, XYZ, _ = spheres
+    xy_of, xy, spectra = _xy_tools(), _xy(XYZ), ROOT / "spectra"
     white = xy_of(np.ones(95))
     width = XYZ.shape[1]
-    for k, s in zip((0, 2), fig["spheres"]):  # plastic spheres left and right, gold in the middle third
-        half = slice(k * width // 3, (k + 1) * width // 3)
+    for k, s in enumerate(sorted(fig["spheres"], key=lambda s: s["center"][0])):  # left, right
+        half = slice(k * width // 2, (k + 1) * width // 2)
         Y, c = XYZ[:, half, 1], xy[:, half]
         peak = np.unravel_index(np.argmax(Y), Y.shape)
         table = read_spectrum_csv(spectra / f"{s['diffuse_material']}.csv")
@@ -350,18 +368,64 @@ def test_article_spheres_white_highlights_on_coloured_spheres(tmp_path):
         # the body has the pigment's hue (angle around the white point)
         hue = np.arctan2(*(c[body] - white).mean(0)[::-1])
         assert np.degrees(abs(hue - np.arctan2(*(target - white)[::-1]))) < 8.0
-    # the gold sphere: its highlight has gold's colour (F0 from measured n, k, written out here),
-    # not the light's white (the article: "the color of the specular highlight will reflect the color
-    # of the material")
-    au = pd.read_csv(spectra / f"{fig['metal_sphere']['material']}.csv")
+
+
+def _spheres_in(image):
+    """Column ranges of the spheres of a written panel: the floor is spectrally flat under a D65
+    light and the background black, so their pixels are neutral; a sphere's (pigment or gold)
+    are not, or are its white highlight, which lies inside it. One range per connected blob."""
+    from scipy import ndimage
+
+    labels, n = ndimage.label(image.max(-1) - image.min(-1) > 8)
+    runs = []
+    for i in range(1, n + 1):
+        blob = labels == i
+        if blob.sum() > 0.01 * blob.size:  # not a stray antialiased edge pixel
+            columns = np.flatnonzero(blob.any(axis=0))
+            runs.append((columns[0], columns[-1] + 1))
+    return runs
+
+
+def test_article_spheres_built_image_pair_panel_highlights_are_near_white(spheres):
+    """The issue: the pair's highlights peaked at (130, 106, 109) and (101, 109, 123), dim grey.
+    In the written render each plastic sphere's highlight (its brightest pixel) reaches at least
+    240/255 and is nearly neutral (channels within 20/255), and the panel shows two spheres."""
+    fig, out, _, _ = spheres
+    image = np.asarray(Image.open(out["render"]).convert("RGB"), dtype=float)
+    runs = _spheres_in(image)
+    assert len(runs) == 2, runs  # a pair: two spheres, no gold between them
+    for a, b in runs:
+        part = image[:, a:b]
+        peak = part.reshape(-1, 3)[np.argmax(part.sum(-1))]
+        assert peak.max() >= 240, peak
+        assert peak.max() - peak.min() <= 20, peak  # low chroma: white, not pink or blue-grey
+    values = Path(out["values"]).read_text()
+    for s in fig["spheres"]:
+        assert f"|{s['name']}_peak|" in values
+
+
+def test_article_spheres_gold_in_its_own_panel(spheres):
+    """The gold sphere alone in its panel, exposed on its own: its highlight has gold's colour (F0
+    from measured n, k, written out here), not the light's white (the article: "the color of the
+    specular highlight will reflect the color of the material"), and reaches the display maximum
+    of its chromaticity (Cook & Torrance's exposure over the panel: one channel at 255)."""
+    fig, out, pair, XYZ = spheres
+    xy_of, xy = _xy_tools(), _xy(XYZ)
+    white = xy_of(np.ones(95))
+    au = pd.read_csv(ROOT / "spectra" / f"{fig['metal_sphere']['material']}.csv")
     nm = np.arange(360, 835, 5)
     n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
     gold = xy_of(((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))
-    middle = slice(width // 3, 2 * width // 3)
-    Y, c = XYZ[:, middle, 1], xy[:, middle]
-    peak = np.unravel_index(np.argmax(Y), Y.shape)
-    assert np.linalg.norm(c[peak] - gold) < 0.35 * np.linalg.norm(gold - white)
-    assert np.linalg.norm(c[peak] - white) > 0.6 * np.linalg.norm(gold - white)
+    peak = np.unravel_index(np.argmax(XYZ[..., 1]), XYZ.shape[:2])
+    assert np.linalg.norm(xy[peak] - gold) < 0.35 * np.linalg.norm(gold - white)
+    assert np.linalg.norm(xy[peak] - white) > 0.6 * np.linalg.norm(gold - white)
+    image = np.asarray(Image.open(out["gold_render"]).convert("RGB"), dtype=float)
+    assert len(_spheres_in(image)) == 1
+    assert image.reshape(-1, 3)[np.argmax(XYZ[..., 1].ravel())].max() >= 250
+    # and no gold in the pair's panel: nowhere there is the colour of gold's highlight
+    pxy = _xy(pair)
+    bright = pair[..., 1] > 0.5 * pair[..., 1].max()
+    assert not (np.linalg.norm(pxy[bright] - gold, axis=-1) < 0.35 * np.linalg.norm(gold - white)).any()
 
 
 def test_config_check_builds_the_scenes_the_scripts_render(fig8):

@@ -118,7 +118,7 @@ GAMUT_FIGURES = {
     "Blinn 1977 Fig. 8": [
         B77_FIG8_OUTPUTS[f"{part}_exr"] for part in B77_FIG8_PARAMS["fig"]["patterns"]
     ],
-    "Article spheres": [SPHERES_OUTPUTS["exr"]],
+    "Article spheres": [SPHERES_OUTPUTS["exr"], SPHERES_OUTPUTS["gold_exr"]],
 }
 
 

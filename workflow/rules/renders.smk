@@ -222,7 +222,10 @@ rule article_spheres:
     input:
         spectra=[spectrum_csv(name) for name in SPHERES_DEF.spectra(SPHERES_PARAMS)],
     output:
-        **{k: SPHERES_OUTPUTS[k] for k in ("exr", "render", "scene", "values")},
+        **{
+            k: SPHERES_OUTPUTS[k]
+            for k in ("exr", "render", "scene", "values", "gold_exr", "gold_render", "gold_scene")
+        },
         png=report(
             SPHERES_OUTPUTS["png"],
             caption="../report/article_spheres.rst",

@@ -56,9 +56,9 @@ with script_log(snakemake) as log:
         ax = fig.add_axes((x / W, (mh + 0.85) / H, w / W, h / H))
         ax.imshow(images[part], interpolation="nearest")
         ax.set_xticks([]), ax.set_yticks([])
-        ax.set_title(f"({part}) {pattern['method']}: " + ", ".join(
-            f"{key} {value:g}" for key, value in pattern["parameters"].items()),
-            fontsize=T["annotation"], pad=3)
+        # the reader's words (config title), not the texture function's keyword names
+        ax.set_title(f"({part}) " + pattern["title"].format(**pattern["parameters"]),
+                     fontsize=T["annotation"], pad=3)
         ax = fig.add_axes((x / W, 0.4 / H, w / W, mh / H))
         ax.imshow(maps[part], cmap="gray", vmin=cfg["c_min"], vmax=1, origin="lower", extent=(0, 1, 0, 1),
                   aspect="auto", interpolation="antialiased")

@@ -1,5 +1,5 @@
 """Lecture (Russin, Module 3B), "Distribution of microfacet orientations": the slide's own D's against
-the correct ones. (a) Its Gaussian D = exp(-(alpha m)^2), m in the numerator, against Torrance &
+Cook & Torrance 1982's (the slide claims no error in its own; the title says only what is compared). (a) Its Gaussian D = exp(-(alpha m)^2), m in the numerator, against Torrance &
 Sparrow's / Cook & Torrance's exp(-(alpha/m)^2); (b) its Beckmann D with 4 m^2 cos^4 in the denominator
 against Cook & Torrance's printed m^2 cos^4 and the normalised pi m^2 cos^4, with the integral of
 D cos(alpha) over the hemisphere of each (1 for a normalised distribution)."""
@@ -61,7 +61,7 @@ with script_log(snakemake) as log:
     axes[0].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
     axes[1].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
     fig.suptitle("Lecture (Russin, Module 3B), \u201cDistribution of microfacet orientations\u201d:\nthe "
-                 "slide's D's against the correct ones", y=0.995, va="top", linespacing=1.3)
+                 "slide's D's against Cook & Torrance 1982's and the normalised Beckmann", y=0.995, va="top", linespacing=1.3)
     fig.subplots_adjust(wspace=0.32, top=0.8, bottom=0.42, left=0.09, right=0.98)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")

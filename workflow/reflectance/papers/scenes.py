@@ -506,33 +506,42 @@ def sweep_camera_Blinn1977(fig7, sweep):
     return cam
 
 
-def spheres_scene_article(spheres, wavelengths, colour, spectra_dir):
-    """The article's pair of plastic spheres and the gold one (config ``figures.article.spheres``)
-    on a grey floor."""
+def spheres_scene_article(spheres, wavelengths, colour, spectra_dir, panel="pair"):
+    """One panel of the article's spheres (config ``figures.article.spheres``) on a grey floor:
+    ``panel`` "pair" is the article's pair of plastic spheres, "metal" the gold sphere alone
+    (camera ``metal_sphere.image`` over the figure's, so both panels share one scale). Each panel
+    is exposed on its own, by its scene display keys ``exposure[panel]`` ({}: Cook & Torrance's
+    exposure over the panel)."""
     cfg = spheres
-    objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
-                                                 "radius": s["radius"]},
-                "material": {"name": cfg["material"], "diffuse_material": s["diffuse_material"],
-                             "model": "CookTorrance1982", "distribution": cfg["distribution"],
-                             "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
-                             "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
-               for s in cfg["spheres"]]
-    metal = cfg.get("metal_sphere")  # the article: "on metallic materials such as gold ..."
-    if metal:
-        objects.append({"name": metal["name"],
-                        "geometry": {"type": "sphere", "center": metal["center"],
-                                     "radius": metal["radius"]},
-                        "material": {"name": metal["material"], "model": "CookTorrance1982",
-                                     "distribution": cfg["distribution"],
-                                     "convention": cfg["convention"], "m": metal["m"], "s": 1.0,
-                                     "d": 0.0, "fresnel": "exact", "shadowing": "v-cavity"}})
+    if panel not in ("pair", "metal"):
+        raise ValueError(f"panel: 'pair' or 'metal', got {panel!r}")
+    camera = dict(cfg["camera"])
+    if panel == "pair":
+        objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
+                                                     "radius": s["radius"]},
+                    "material": {"name": cfg["material"], "diffuse_material": s["diffuse_material"],
+                                 "model": "CookTorrance1982", "distribution": cfg["distribution"],
+                                 "convention": cfg["convention"], "m": cfg["m"], "s": cfg["s"],
+                                 "d": cfg["d"], "fresnel": "exact", "shadowing": "v-cavity"}}
+                   for s in cfg["spheres"]]
+    else:  # the article: "on metallic materials such as gold ..."; C&T's metals: s = 1, d = 0
+        metal = cfg["metal_sphere"]
+        camera.update(metal["image"])
+        objects = [{"name": metal["name"],
+                    "geometry": {"type": "sphere", "center": metal["center"],
+                                 "radius": metal["radius"]},
+                    "material": {"name": metal["material"], "model": "CookTorrance1982",
+                                 "distribution": cfg["distribution"],
+                                 "convention": cfg["convention"], "m": metal["m"], "s": 1.0,
+                                 "d": 0.0, "fresnel": "exact", "shadowing": "v-cavity"}}]
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
                                                    "normal": [0, 0, 1], "size": [16, 16],
                                                    "resolution": [32, 32]},
                     "material": {"model": "Lambert", "convention": "physical",
                                  "albedo": cfg["floor_albedo"]}})
-    return scene_document(cfg["camera"], objects,
+    return scene_document(camera, objects,
                           [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}], wavelengths,
                           spectra_dir, observer=colour["observer"],
                           ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
-                          display=display_from_colour(colour, illuminant=False))
+                          display={**display_from_colour(colour, illuminant=False),
+                                   **copy.deepcopy(cfg["exposure"][panel])})
