@@ -399,9 +399,9 @@ def test_article_spheres_built_image_pair_panel_highlights_are_near_white(sphere
         peak = part.reshape(-1, 3)[np.argmax(part.sum(-1))]
         assert peak.max() >= 240, peak
         assert peak.max() - peak.min() <= 20, peak  # low chroma: white, not pink or blue-grey
-    values = Path(out["values"]).read_text()
+    values = Path(out["values"]).read_text()  # the caption states each sphere's peak
     for s in fig["spheres"]:
-        assert f"|{s['name']}_peak|" in values
+        assert f"({s['name']})" in values.split("|pair_peaks| replace:: ")[1]
 
 
 def test_article_spheres_gold_in_its_own_panel(spheres):

@@ -104,4 +104,5 @@ with script_log(snakemake) as log:
         "metal_F0": f"{written.clear_coat_F0_Y[metal['name']]:.2f}",
         "coat_F0": f"{written.clear_coat_F0_Y[cfg['spheres'][0]['name']]:.3f}",
         "pair_scale": f"{scale:.3g}", "gold_scale": f"{gold_scale:.3g}",
-        **{f"{name}_peak": "({}, {}, {})".format(*rgb) for name, rgb in peaks.items()}})
+        "pair_peaks": "; ".join("({}, {}, {}) ".format(*rgb) + f"({name})"
+                                for name, rgb in peaks.items())})
