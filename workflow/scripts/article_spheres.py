@@ -2,8 +2,8 @@
 Two coloured plastic spheres (pigment reflectances recovered from Munsell notations; F of a
 measured clear coat, so the highlights are white) with the article's Cook-Torrance model, one
 directional light, a grey floor; beside them, in a panel of its own, the gold sphere of the
-article's metals. Each panel is exposed on its own (config ``exposure``): a shared exposure is
-set by the gold highlight and leaves the plastics' highlights dim grey."""
+article's metals. Each panel has its exposure (config ``exposure``): Cook & Torrance's over both
+would be set by the gold highlight and leave the plastics' highlights dim grey."""
 
 from pathlib import Path
 
@@ -94,7 +94,9 @@ with script_log(snakemake) as log:
                  f"Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}; "
                  f"clear coat F of {cfg['material']}\n"
                  f"{metal['name']}: {metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0); "
-                 f"each panel exposed on its own",
+                 + ("both panels metered on one white card"
+                    if cfg["exposure"]["pair"].get("white") == cfg["exposure"]["metal"].get("white")
+                    and "white" in cfg["exposure"]["pair"] else "each panel exposed on its own"),
                  size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top", linespacing=1.3)
     savefig(fig, out.png, dpi=w_px / width_in, tight=False, tag=display_tag(results["pair"].scene.display.space))
 
