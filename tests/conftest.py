@@ -1,6 +1,7 @@
 import os
 import subprocess
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 from hypothesis import settings
@@ -40,13 +41,29 @@ def pytest_collection_modifyitems(items):
 _REPORTED = pytest.StashKey[dict]()
 
 
+class _Text:
+    """A test report's ``longrepr`` that is a text: shown whole with the test's failure, and its
+    first line alone in the short summary (which on CI would repeat a whole message)."""
+
+    def __init__(self, text):
+        self.text = text
+        self.reprcrash = SimpleNamespace(message=text.splitlines()[0])  # what the summary reads
+
+    def toterminal(self, tw):
+        tw.line(self.text)
+
+    def __str__(self):
+        return self.text
+
+
 @pytest.hookimpl(wrapper=True)
 def pytest_runtest_makereport(item, call):
     """An error is reported once. A session or module fixture that raised gives every test that
     uses it the same exception (the session's build failing: a dozen tests read it): the first
     test it fails reports it, and every later one is skipped with one line naming that test.
-    The build's own failure (``BuildFailed``) is reported as its text alone: it says what the
-    traceback would, and its frames are pytest's and the pool's."""
+    The build's own failure (``BuildFailed``) is reported as its text alone, its first line in
+    the short summary: it says what the traceback would, and its frames are pytest's and the
+    pool's."""
     from build_report import BuildFailed
 
     report = yield
@@ -57,7 +74,7 @@ def pytest_runtest_makereport(item, call):
     if id(error) not in reported:
         reported[id(error)] = (error, item.nodeid)
         if isinstance(error, BuildFailed):
-            report.longrepr = str(error)
+            report.longrepr = _Text(str(error))
         return report
     first = reported[id(error)][1]
     headline = (str(error).splitlines() or [type(error).__name__])[0][:160]
