@@ -160,14 +160,14 @@ def test_a_broken_build_is_reported_once_with_its_rule_and_the_end_of_its_log(
                 "hangs": f"the session's build, snakemake --cores 2, ran past {HANG_TIMEOUT_S} s "
                          f"({TIMEOUT}) and was killed"}[broken]
     assert headline in report, report
-    rule, snakemake_end = report.split("the end of Snakemake's output:\n")
+    rules, snakemake_end = report.split("the end of Snakemake's output:\n")
     state = {"raises": "failed", "hangs": "still running"}[broken]
-    log_end = rule.split(f"rule {RULE} ({state}), the end of its log {LOG}:\n")[1]
-    log_end = log_end.split("\nrule ")[0]
-    assert MARK in log_end, report
+    heading = f"rule {RULE} ({state}), the end of its log {LOG}:\n"
+    assert heading in rules, report
+    assert MARK in rules.split(heading)[1].split("\nrule ")[0], report
     if broken == "raises":
         assert "Exiting because a job execution failed" in snakemake_end, report
-    else:  # killed: its job with it (which held the session's pipe from Snakemake), at once
+    else:  # killed at once, its job too: a job left alive holds Snakemake's output open
         assert wall < HANG_S - 60, wall
     # once in the whole session's output, and a few KB
     assert out.count("the end of Snakemake's output:") == 1, out
