@@ -9,10 +9,13 @@ BUILD_TIMEOUT) kills it. Both inner sessions start with the outer one, on its po
 (``start_with_session``); the hanging one mostly waits.
 """
 
+import os
 import shutil
+import signal
 import sys
 import time
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 
@@ -130,9 +133,12 @@ def _inner_session(runs, root, folder, broken):
         env[TIMEOUT] = str(HANG_TIMEOUT_S)
     xml = folder / "junit.xml"
     start = time.monotonic()
-    proc = runs.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider",
-                     f"--basetemp={folder / 'tmp'}", f"--junitxml={xml}", "tests/test_inner.py"],
-                    cwd=cwd, env=env, timeout=HANG_S + 60)
+    try:
+        proc = runs.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider",
+                         f"--basetemp={folder / 'tmp'}", f"--junitxml={xml}",
+                         "tests/test_inner.py"], cwd=cwd, env=env, timeout=HANG_S + 60)
+    finally:
+        _kill_what_runs_in(folder)
     wall = time.monotonic() - start
     outcomes = {}
     for case in ET.parse(xml).iter("testcase"):
@@ -140,6 +146,19 @@ def _inner_session(runs, root, folder, broken):
         outcomes[case.get("name")] = ((kinds[0].tag, kinds[0].get("message"), kinds[0].text)
                                       if kinds else ("passed", None, None))
     return proc, wall, outcomes
+
+
+def _kill_what_runs_in(folder):
+    """Kill every process working in ``folder``: the inner build runs in a session of its own, so
+    killing the inner pytest (this session ending first, or the inner timeout) leaves it running,
+    for as long as it likes once its output is closed (Linux: read from /proc; elsewhere
+    nothing)."""
+    for entry in Path("/proc").glob("[0-9]*"):
+        try:
+            if Path(os.readlink(entry / "cwd")).is_relative_to(folder):
+                os.kill(int(entry.name), signal.SIGKILL)
+        except OSError:  # gone, or not ours to read
+            pass
 
 
 @pytest.mark.parametrize("broken", sorted(BREAKS))
