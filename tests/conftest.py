@@ -1,6 +1,7 @@
 import os
 import subprocess
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 from hypothesis import settings
@@ -36,6 +37,53 @@ def pytest_collection_modifyitems(items):
     items.sort(key=lambda item: (item.path in late, item.path in background))  # stable
 
 
+# {id of an error: (the error, kept so that its id stays its own; the test that reported it)}
+_REPORTED = pytest.StashKey[dict]()
+
+
+class _Text:
+    """A test report's ``longrepr`` that is a text: shown whole with the test's failure, and its
+    first line alone in the short summary (which on CI would repeat a whole message)."""
+
+    def __init__(self, text):
+        self.text = text
+        self.reprcrash = SimpleNamespace(message=text.splitlines()[0])  # what the summary reads
+
+    def toterminal(self, tw):
+        tw.line(self.text)
+
+    def __str__(self):
+        return self.text
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item, call):
+    """An error is reported once. A session or module fixture that raised gives every test that
+    uses it the same exception (the session's build failing: a dozen tests read it): the first
+    test it fails reports it, and every later one is skipped with one line naming that test.
+    The build's own failure (``BuildFailed``) is reported as its text alone, its first line in
+    the short summary: it says what the traceback would, and its frames are pytest's and the
+    pool's."""
+    from build_report import BuildFailed
+
+    report = yield
+    if not report.failed or call.excinfo is None or call.when == "teardown":
+        return report
+    error = call.excinfo.value
+    reported = item.session.stash.setdefault(_REPORTED, {})
+    if id(error) not in reported:
+        reported[id(error)] = (error, item.nodeid)
+        if isinstance(error, BuildFailed):
+            report.longrepr = _Text(str(error))
+        return report
+    first = reported[id(error)][1]
+    headline = (str(error).splitlines() or [type(error).__name__])[0][:160]
+    path, line = item.reportinfo()[:2]
+    report.outcome = "skipped"
+    report.longrepr = (os.fspath(path), line + 1, f"the same error as {first}: {headline}")
+    return report
+
+
 @pytest.fixture(scope="session", autouse=True)
 def early(request, root, tmp_path_factory):
     """Runs that only wait on subprocesses, started in background threads when the session does
@@ -43,9 +91,9 @@ def early(request, root, tmp_path_factory):
     daemons and runs of tests/test_slurm.py, the failing runs of tests/test_workflow_resume.py,
     the clone, archive and builds of tests/test_archive.py, the lint of tests/test_workflow.py,
     the Sphinx build of tests/test_docs.py, the installed wheel of tests/test_audit_cli.py, the
-    refused runs of tests/test_config_corpus.py; once the build is done, the runs that read it
-    (``after_build``: the kill -9 resume, the generic-cluster run, the dry runs and the report).
-    The tests that need them take their results (or their failure) when they come to them; at
+    refused runs of tests/test_config_corpus.py, the broken builds of tests/test_build_failure.py;
+    once the build is done, the runs that read it (``after_build``: the kill -9 resume, the
+    generic-cluster run, the dry runs and the report). The tests that need them take their results (or their failure) when they come to them; at
     the end of the session, whatever is still running is killed and the daemons are stopped."""
     from side_by_side import SideBySide, workers
 
@@ -95,22 +143,41 @@ def _after_build(built, runs, readers, tmp_path_factory):
     return built
 
 
+#: The session's build is killed after this many seconds (default BUILD_TIMEOUT_S).
+BUILD_TIMEOUT = "REFLECTANCE_TEST_BUILD_TIMEOUT"
+# about twenty times the whole build on an idle machine (README's test section): room for a
+# loaded one, and an end to a hung job before CI's own limit
+BUILD_TIMEOUT_S = 1200
+
+
 def _build(runs, cwd, root):
     """The whole workflow, `snakemake --cores 2`, in a temporary copy of the project, from
     nothing: the copy starts without the committed spectra, so the build exports and derives
     every one again (whether Snakemake would rerun them beside a checkout depends on the files'
-    times)."""
+    times). Killed, its whole process group, after BUILD_TIMEOUT seconds; a failure, or the
+    timeout, raises ``BuildFailed`` with the failing (or still running) rules, the end of
+    their logs and of Snakemake's output (tests/build_report.py)."""
+    from build_report import BuildFailed, report
     from test_workflow import SNAKEMAKE, copy_project
 
     copy_project(root, cwd)
     for spectrum in (cwd / "spectra").glob("*.csv"):
         spectrum.unlink()
     args = ["--cores", "2"]
-    proc = runs.popen(SNAKEMAKE + args, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                      text=True)
-    stdout, stderr = proc.communicate()
+    command = " ".join(["snakemake", *args])
+    timeout = float(runs.environ.get(BUILD_TIMEOUT, BUILD_TIMEOUT_S))
+    try:
+        proc = runs.run(SNAKEMAKE + args, cwd=cwd, timeout=timeout)
+    except subprocess.TimeoutExpired as expired:
+        output = (expired.stdout or "") + (expired.stderr or "")
+        raise BuildFailed(report(
+            f"the session's build, {command}, ran past {timeout:g} s ({BUILD_TIMEOUT}) and was "
+            "killed", cwd, output, failed=False)) from None
     if proc.returncode != 0:
-        raise AssertionError(f"snakemake {' '.join(args)} failed:\n{stdout}\n{stderr}")
+        output = proc.stdout + proc.stderr
+        raise BuildFailed(report(
+            f"the session's build failed: {command} exited with {proc.returncode}",
+            cwd, output, failed=True))
     return cwd
 
 

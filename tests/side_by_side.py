@@ -106,7 +106,8 @@ class SideBySide:
     def run(self, args, timeout=None, **kwargs):
         """``args`` run to its end as :meth:`popen` starts it, output captured as text: the
         ``subprocess.CompletedProcess``. On ``timeout`` (seconds) its whole session is killed
-        and waited for, then ``subprocess.TimeoutExpired`` is raised."""
+        and waited for, then ``subprocess.TimeoutExpired`` is raised with all the output it
+        had written (its ``stdout`` and ``stderr``, text)."""
         proc = self.popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                           **kwargs)
         try:
@@ -116,8 +117,8 @@ class SideBySide:
                 os.killpg(proc.pid, signal.SIGKILL)
             except ProcessLookupError:
                 pass
-            proc.communicate()
-            raise
+            stdout, stderr = proc.communicate()
+            raise subprocess.TimeoutExpired(proc.args, timeout, stdout, stderr) from None
         return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
 
     def callback(self, function, *args, **kwargs):
