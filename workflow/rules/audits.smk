@@ -73,6 +73,7 @@ TARGETS += [
     for figure in DATABASE_FIGURES
     for suffix in (".png", ".pdf", "_answer.rst")
 ]
+TARGETS += DATABASE_SHARDS + DATABASE_SHARD_COUNTS  # kept: a cluster runs each on its own
 
 
 rule audit_fresnel_atlas:
