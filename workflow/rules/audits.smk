@@ -339,8 +339,8 @@ rule audit_database_shard:
         shard=r"\d+",
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 420 MB
-        runtime=10,  # measured 3 s
+        mem_mb=1500,  # script peak 411 MB (one of 2 shards)
+        runtime=10,  # measured 3.5 s of CPU (14 s at load 7)
     params:
         audit=DATABASE_PARAMS,
         shard=lambda wildcards: int(wildcards.shard),
@@ -375,8 +375,8 @@ rule audit_database:
         "benchmarks/audits/database.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 90 MB
-        runtime=10,  # measured under 1 s
+        mem_mb=800,  # script peak 62 MB
+        runtime=10,  # measured 0.3 s of CPU
     params:
         audit=DATABASE_PARAMS,
         shards=DATABASE["shards"],
@@ -402,8 +402,8 @@ rule audit_database_failure_angle:
         "benchmarks/audits/database_failure_angle.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 150 MB
-        runtime=10,  # measured 2 s
+        mem_mb=800,  # script peak 129 MB
+        runtime=10,  # measured 1.2 s of CPU
     params:
         figure=DATABASE["figures"]["failure_angle"],
         levels=DATABASE["levels"],
@@ -431,8 +431,8 @@ rule audit_database_error:
         "benchmarks/audits/database_error.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 160 MB
-        runtime=10,  # measured 3 s
+        mem_mb=800,  # script peak 234 MB
+        runtime=10,  # measured 2.8 s of CPU
     params:
         figure=DATABASE["figures"]["error"],
         levels=DATABASE["levels"],
@@ -461,8 +461,8 @@ rule audit_database_worst:
         "benchmarks/audits/database_worst.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 150 MB
-        runtime=10,  # measured 2 s
+        mem_mb=800,  # script peak 137 MB
+        runtime=10,  # measured 1.4 s of CPU
     params:
         figure=DATABASE["figures"]["worst"],
         space=config["colour"]["space"],
@@ -488,8 +488,8 @@ rule audit_database_glasses:
         "benchmarks/audits/database_glasses.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 150 MB
-        runtime=10,  # measured 2 s
+        mem_mb=800,  # script peak 129 MB
+        runtime=10,  # measured 1.3 s of CPU
     params:
         figure=DATABASE["figures"]["glasses"],
     script:
@@ -520,8 +520,8 @@ rule audit_database_spread:
         "benchmarks/audits/database_spread.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 150 MB
-        runtime=10,  # measured 2 s
+        mem_mb=800,  # script peak 133 MB
+        runtime=10,  # measured 1.6 s of CPU
     params:
         figure=DATABASE["figures"]["spread"],
     script:
