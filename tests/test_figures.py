@@ -94,7 +94,7 @@ EDITS = [
     ("figures.cook_torrance_1982.fig6.panels.a.m", 0.25),
     ("figures.cook_torrance_1982.fig6.camera.fov_deg", 26),
     ("figures.cook_torrance_1982.fig6.published.exposure.highlight_knee", 0.7),
-    ("figures.cook_torrance_1982.fig7.vase_exposure.Obsidian", 2.0),
+    ("figures.cook_torrance_1982.fig7.vase_exposure.Obsidian", 2.5),
     ("figures.cook_torrance_1982.fig8.light.intensity", 0.9),
     ("figures.blinn_1977.fig7.panels.b.c3", 0.4),
     ("figures.blinn_1977.fig7.lights.front.angle_deg", 20),
