@@ -36,8 +36,13 @@ def audit(args, capsys):
 
 def pick(rows, method, angle):
     (row,) = [r for r in rows if r["method"] == method and float(r["angle_deg"]) == angle]
-    return {k: (v if k in ("material", "kind", "method") else float(v or "nan"))
-            for k, v in row.items()}
+    return {k: (v if k in TEXT_COLUMNS else float(v or "nan")) for k, v in row.items()}
+
+
+#: the columns of text; the others are numbers
+TEXT_COLUMNS = ("material", "kind", "illuminant", "observer", "method")
+#: half a unit of the last decimal printed (CIELAB and the differences: 4 decimals), and a margin
+PRINTED_4 = 0.5e-4 + 1e-9
 
 
 def read_nk(path):
@@ -84,9 +89,11 @@ def test_audit_matches_colour_science(copper, angle, capsys, tmp_path, monkeypat
         XYZ = XYZ_colour_science(F)
         assert [row["X"], row["Y"], row["Z"]] == pytest.approx(XYZ, rel=1e-6, abs=1e-9)
         lab = colour.XYZ_to_Lab(XYZ, white_xy)
-        assert [row["L"], row["a"], row["b"]] == pytest.approx(lab, abs=1e-5)
+        assert [row["L"], row["a"], row["b"]] == pytest.approx(lab, abs=PRINTED_4 + 1e-5)
         dE = colour.delta_E(lab, lab_exact, method="CIE 2000")
-        assert row["dE2000_vs_exact"] == pytest.approx(dE, abs=1e-5)
+        assert row["dE2000_vs_exact"] == pytest.approx(dE, abs=PRINTED_4 + 1e-5)
+        assert (row["illuminant"], row["observer"]) == ("D65", "CIE 1931 2 Degree Standard "
+                                                                "Observer")
     if angle == 85.0:  # the fit drifts at grazing: a colour difference anyone sees
         assert pick(rows, "fitted", angle)["dE2000_vs_exact"] > 2
 
@@ -199,7 +206,8 @@ def test_output_folder_gets_csv_and_figure(tmp_path, capsys, monkeypatch):
     printed = capsys.readouterr().out
     assert (out / "audit.csv").read_text() == printed
     assert (out / "audit.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert sorted(p.name for p in out.iterdir()) == ["audit.csv", "audit.pdf", "audit.png"]
+    assert sorted(p.name for p in out.iterdir()) == ["audit.csv", "audit.pdf", "audit.png",
+                                                     "audit_metadata.yaml"]
 
 
 BAD = "bad.csv"

@@ -63,9 +63,9 @@ def check_quick_start(paths, proc):
     brdf_out = next(o for o in outputs if "(5, 95)" in o)
     values = [float(v) for v in re.search(r"\[([^\]]*)\]\s*$", brdf_out).group(1).split()]
     assert max(range(5), key=values.__getitem__) == 3  # the mirror direction, +30 degrees
-    material = next(o for o in outputs if "my_paint" in o).splitlines()
+    material = next(o for o in outputs if "my_glaze" in o).splitlines()
     assert material[1].startswith("measured [")  # the bundled copper's F0
-    assert material[2].startswith("my_paint derived [") and material[-1] == "derived"
+    assert material[2].startswith("my_glaze derived [") and material[-1] == "derived"
 
 
 def shell_commands(readme, folder):

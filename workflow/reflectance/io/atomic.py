@@ -15,7 +15,8 @@ import socket
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_write", "remove_stale_temporaries", "process_alive", "process_start_time"]
+__all__ = ["atomic_write", "write_text", "remove_stale_temporaries", "process_alive",
+           "process_start_time"]
 
 #: a temporary file of :func:`atomic_write`: hidden, then target name, host, pid, mkstemp's 8 characters
 _TEMPORARY = re.compile(r"^\.(?P<name>.+)\.tmp-(?P<host>[A-Za-z0-9-]*)-(?P<pid>\d+)-[a-z0-9_]{8}")
@@ -133,3 +134,19 @@ def atomic_write(path, suffix=None):
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+def write_text(path, text):
+    """Write ``text`` to ``path`` (UTF-8, its line endings as they are) in one rename
+    (:func:`atomic_write`).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> target = pathlib.Path(tempfile.mkdtemp()) / "answer.rst"
+    >>> write_text(target, "**Answer:** 42.\\n")
+    >>> target.read_text()
+    '**Answer:** 42.\\n'
+    """
+    with atomic_write(path) as tmp:
+        Path(tmp).write_bytes(str(text).encode("utf-8"))

