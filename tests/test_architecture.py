@@ -41,7 +41,7 @@ TOP_LEVEL = {
     "scripting": set(),  # the workflow scripts' logging and parameters
     "resume": {"io"},  # what a killed run left (the Snakefile clears it)
     # config.yaml's checks build every figure's scene, without rendering
-    "config": {"papers", "render", "geometry", "optics", "colour", "io"},
+    "config": {"papers", "render", "audit", "geometry", "optics", "colour", "io"},  # audit: audit 8's keys
     # the command: every layer, and the version; not the workflow's support modules
     "cli": {"__init__", "bench", "papers", "audit", "render", "geometry", "optics", "colour",
             "io"},
