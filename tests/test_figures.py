@@ -25,6 +25,16 @@ def _scene_files(outputs):
                   if p.endswith(".scene.yaml"))
 
 
+def test_every_figure_module_is_listed_once():
+    """FIGURES and figure()'s imports name the same modules: every module of the package but
+    its shared declaration, each under its rule's name."""
+    import reflectance.papers.figures as package
+
+    folder = Path(package.__file__).parent
+    assert set(FIGURES) == {p.stem for p in folder.glob("*.py")} - {"__init__", "declaration"}
+    assert all(figure(name).RULE == name for name in FIGURES)
+
+
 @pytest.mark.parametrize("name", FIGURES)
 def test_each_scene_file_output_is_one_scene(name):
     """Every .scene.yaml among a figure's outputs is written by exactly one of its scenes."""
