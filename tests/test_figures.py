@@ -1,18 +1,21 @@
-"""One definition per rendered figure (reflectance.papers.figures): what the config check
-validates is what the job writes; a one-key edit of config.yaml reruns exactly the figures whose
-definitions declare that key; adding a light to Blinn's Fig. 7 is an edit of config.yaml alone."""
+"""One definition per figure (reflectance.papers.figures): what the config check validates is
+what the job writes; a one-key edit of config.yaml reruns exactly the figures whose definitions
+declare that key; adding a light to Blinn's Fig. 7 is an edit of config.yaml alone."""
 
 from __future__ import annotations
 
 import copy
+import re
 import shutil
 from pathlib import Path
 
 import pytest
 import yaml
 
-from reflectance.papers.figures import (FIGURES, READERS, config_value, figure, figure_scenes,
-                                        params_of, rule_keys, select)
+from reflectance.config import ConfigError, check_config
+from reflectance.papers.figures import (ANALYTIC, FIGURES, READERS, config_value,
+                                        declared_key_problems, figure, figure_scenes, params_of,
+                                        rule_keys, select)
 from test_workflow import SNAKEMAKE, _planned_jobs
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -25,14 +28,55 @@ def _scene_files(outputs):
                   if p.endswith(".scene.yaml"))
 
 
+#: the rules files of the figures that render nothing, each with its text's module
+TEXTS = {"cook_torrance_1982.smk": "cook_torrance_1982", "blinn_1977.smk": "blinn_1977",
+         "lecture.smk": "lecture", "article.smk": "article"}
+
+
 def test_every_figure_module_is_listed_once():
     """FIGURES and figure()'s imports name the same modules: every module of the package but
-    its shared declaration, each under its rule's name."""
+    its shared declaration and the texts' modules, each under its rule's name."""
     import reflectance.papers.figures as package
 
     folder = Path(package.__file__).parent
-    assert set(FIGURES) == {p.stem for p in folder.glob("*.py")} - {"__init__", "declaration"}
-    assert all(figure(name).RULE == name for name in FIGURES)
+    assert set(FIGURES) == ({p.stem for p in folder.glob("*.py")}
+                            - {"__init__", "declaration", *TEXTS.values()})
+    assert all(figure(name).RULE == name for name in FIGURES + ANALYTIC)
+
+
+def test_every_analytic_rule_takes_its_definition():
+    """ANALYTIC is exactly the rules of the four texts' rules files, and each of those rules
+    takes its params and outputs from its own definition (``X = figure_def("rule")``)."""
+    import importlib
+
+    rules = []
+    for smk, text in TEXTS.items():
+        source = (ROOT / "workflow/rules" / smk).read_text()
+        names = dict(re.findall(r'(?m)^(\w+) = figure_def\("(\w+)"\)$', source))
+        for block in re.split(r"(?m)^(?=rule )", source)[1:]:
+            rule = re.match(r"rule (\w+):", block).group(1)
+            rules.append(rule)
+            assert rule in importlib.import_module(f"reflectance.papers.figures.{text}")\
+                .DEFINITIONS, (smk, rule)
+            var = {r: v for v, r in names.items()}[rule]
+            params = re.search(r"(?ms)^    params:\n(.*?)^    \w", block).group(1)
+            assert f"**{var}.params," in params or f'{var}.params["' in params, rule
+            outputs = re.search(r"(?ms)^    output:\n(.*?)^    \w", block).group(1)
+            assert "results/" not in outputs and f"{var}.outputs[" in outputs, rule
+    assert sorted(rules) == sorted(ANALYTIC)
+
+
+def test_the_config_check_names_a_declared_key_that_is_absent():
+    """A key a figure declares (so reads) but config.yaml lacks: one line naming the key and
+    the figure, from the config check, before any rule takes its params."""
+    config = copy.deepcopy(CONFIG)
+    del config["figures"]["blinn_1977"]["fig1_4"]["construction_case"]
+    assert declared_key_problems(config) == [
+        "config.yaml has no figures.blinn_1977.fig1_4.construction_case (needed by figure "
+        "blinn77_fig2_4, reflectance.papers.figures)"]
+    with pytest.raises(ConfigError, match="fig1_4.construction_case .needed by figure "
+                                          "blinn77_fig2_4"):
+        check_config(config, check_spectra=False, check_scenes=False)
 
 
 @pytest.mark.parametrize("name", FIGURES)
@@ -103,7 +147,9 @@ READ_BY = {"ct82_fig6": {"audit_gamut_mapping", "readme_strip"},
            "ct82_fig7": {"audit_gamut_mapping", "readme_strip"},
            "ct82_fig8": {"audit_gamut_mapping"}, "blinn77_fig7": {"audit_gamut_mapping"},
            "blinn77_fig8": {"audit_gamut_mapping"}, "article_spheres": {"audit_gamut_mapping"},
-           "blinn77_fig7_sweep": set(), "audit_rgb_rendering": set()}
+           "blinn77_fig7_sweep": set(), "audit_rgb_rendering": set(),
+           # of the figures that render nothing, README's strip reads Fig. 5c's colours
+           **{rule: set() for rule in ANALYTIC}, "ct82_fig5bc": {"readme_strip"}}
 #: provenance hashes every output: it runs again after any job
 AGGREGATING = {"provenance"}
 
@@ -122,6 +168,26 @@ EDITS = [
     ("figures.article.spheres.m", 0.2),
 ]
 
+#: one-key edits of the figures that render nothing, across the four texts: dry-run one after
+#: another in one copy of the build (each edit undone before the next)
+ANALYTIC_EDITS = [
+    ("figures.cook_torrance_1982.fig3.alpha_step_deg", 0.5),
+    ("figures.cook_torrance_1982.fig5.surface_angle_step_deg", 2),  # Fig. 5a only
+    ("figures.cook_torrance_1982.fig5.average_F0_range_nm", [400, 700]),  # Fig. 5c only
+    ("figures.cook_torrance_1982.table1.average_F0_range_nm", [400, 700]),
+    ("figures.errata.theta_deg", 70),
+    ("figures.blinn_1977.fig1_4.construction_case", "c"),  # Figs. 2-4, not Fig. 1
+    ("figures.blinn_1977.fig1_4.n_rays", 50000),  # Figs. 1 and 2-4
+    ("figures.blinn_1977.fig5_6.incidence_deg.fig5", 35),
+    ("figures.blinn_1977.distributions.alpha_step_deg", 0.1),
+    ("figures.lecture.brdf_lobes.polar_step_deg", 0.5),  # the 2-D lobes, not the 3-D
+    ("figures.lecture.brdf_lobes.hemisphere_samples", [91, 181]),  # the 3-D lobes only
+    ("figures.lecture.shadowing_masking.view_deg", 70),
+    ("figures.lecture.distributions.m", [0.3, 0.6]),
+    ("figures.article.distributions.models.phong.n", 30),
+    ("figures.article.phong_example.n", 4),
+]
+
 
 def _overlaps(key, declared):
     return any(key == d or key.startswith(d + ".") or d.startswith(key + ".") for d in declared)
@@ -130,7 +196,8 @@ def _overlaps(key, declared):
 def expected_plan(key, config):
     """The jobs a dry run must plan after editing ``key``: every rule whose definition declares
     the key (or a key above or below it), what reads their files, and the aggregating rules."""
-    readers = {rule for rule in (*FIGURES, *READERS) if _overlaps(key, rule_keys(rule, config))}
+    readers = {rule for rule in (*FIGURES, *ANALYTIC, *READERS)
+               if _overlaps(key, rule_keys(rule, config))}
     return readers | {r for rule in readers for r in READ_BY[rule]} | AGGREGATING
 
 
@@ -142,7 +209,7 @@ def _edit(config, key, value):
 
 
 def test_every_edit_changes_a_key_some_figure_reads():
-    for key, value in EDITS:
+    for key, value in EDITS + ANALYTIC_EDITS:
         _edit(copy.deepcopy(CONFIG), key, value)  # the key exists and the value is new
         assert expected_plan(key, CONFIG) - AGGREGATING, key
 
@@ -166,6 +233,9 @@ def after_build(runs, built, tmp_path_factory, items):
             _edit(config, *EDITS[i])
             (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
             starts.append((5, ("figure edit", i), _dry_run, (runs, cwd)))
+    if "test_an_analytic_one_key_edit_plans_exactly_what_the_definitions_say" in names:
+        cwd = _copy(built, tmp_path_factory)
+        starts.append((5 * len(ANALYTIC_EDITS), "analytic edits", _dry_runs, (runs, cwd)))
     if "test_a_light_added_in_config_is_rendered" in names:
         cwd = _copy(built, tmp_path_factory)
         config = yaml.safe_load((cwd / "config.yaml").read_text())
@@ -185,6 +255,19 @@ def _dry_run(runs, cwd):
     return runs.run(SNAKEMAKE + ["-n", "--cores", "2"], cwd=cwd)
 
 
+def _dry_runs(runs, cwd):
+    """A dry run per edit of ANALYTIC_EDITS, one after another in one copy of the build."""
+    original = (cwd / "config.yaml").read_text()
+    procs = []
+    for key, value in ANALYTIC_EDITS:
+        config = yaml.safe_load(original)
+        _edit(config, key, value)
+        (cwd / "config.yaml").write_text(yaml.safe_dump(config, sort_keys=False))
+        procs.append(_dry_run(runs, cwd))
+    (cwd / "config.yaml").write_text(original)
+    return procs
+
+
 def _new_light(runs, cwd):
     # README's command, every target: Snakemake checks a job's params only where every output
     # has its record, so a run asking for the figure's old files alone would not see the light
@@ -198,6 +281,18 @@ def test_a_one_key_edit_plans_exactly_what_the_definitions_say(after_build, edit
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text
     assert set(_planned_jobs(text)) == expected_plan(EDITS[edit][0], CONFIG) | {"all"}, text
+
+
+@pytest.mark.parametrize("edit", range(len(ANALYTIC_EDITS)),
+                         ids=[key for key, _ in ANALYTIC_EDITS])
+def test_an_analytic_one_key_edit_plans_exactly_what_the_definitions_say(after_build, edit):
+    """The same for the figures that render nothing, in all four texts: a key two figures
+    share reruns both, a key of one of them that one alone."""
+    proc = after_build("analytic edits")[edit]
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text
+    assert set(_planned_jobs(text)) == expected_plan(ANALYTIC_EDITS[edit][0], CONFIG) | {"all"}, \
+        text
 
 
 def test_a_light_added_in_config_is_rendered(after_build):

@@ -326,6 +326,12 @@ def test_masking_G1_of_the_profile(config, tmp_path):
         assert row.G1_simulated == pytest.approx(smith, abs=0.02), row.angle_deg
     by = pd.read_csv(tmp_path / "b.csv")
     assert by["count"].sum() <= fig["n_samples"] and len(by) == fig["slope_bins"]
+    # the light's shadowing is Smith's G1 at incidence_deg and the viewer's masking at view_deg,
+    # each at its own angle (reading the view from incidence_deg once passed the whole suite)
+    assert fig["view_deg"] != fig["incidence_deg"]
+    for name, key in (("light", "incidence_deg"), ("view", "view_deg")):
+        smith = smith_G1_by_hand(math.radians(fig[key]), fig["rms_slope"])
+        np.testing.assert_allclose(by[f"smith_{name}"], smith, rtol=1e-5, err_msg=key)
     # facets tilted towards the light are lit more often than those tilted away (not Smith's constant)
     lit = by.visible_light.dropna().to_numpy()
     assert lit[-3:].mean() > lit[:3].mean() + 0.1

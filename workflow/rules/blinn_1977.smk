@@ -1,47 +1,26 @@
 # Blinn 1977, "Models of light reflection for computer synthesized pictures": the analytic figures
 # (Figs. 1-4 V-groove geometry, Figs. 5-6 polar plots, D1/D2/D3 at equal beta). Figs. 7, 8 elsewhere.
 
-B77_ANALYTIC = config["figures"]["blinn_1977"]
-B77_ANALYTIC_OUT = "results/blinn_1977"
-
-TARGETS += [
-    f"{B77_ANALYTIC_OUT}/{name}"
-    for name in (
-        "fig1.png",
-        "fig1.pdf",
-        "fig1.csv",
-        "fig2_4.png",
-        "fig2_4.pdf",
-        "fig2_4.csv",
-        "fig5.png",
-        "fig5.pdf",
-        "fig5.csv",
-        "fig5_summary.csv",
-        "fig5.values.rst",
-        "fig6.png",
-        "fig6.pdf",
-        "fig6.csv",
-        "fig6_summary.csv",
-        "fig6.values.rst",
-        "distributions.png",
-        "distributions.pdf",
-        "distributions.csv",
-        "distributions_max_difference.csv",
-    )
-]
+# Each figure's keys (the rule's params, exactly) and outputs: its one line in
+# reflectance.papers.figures.blinn_1977.
+B77_FIG1 = figure_def("blinn77_fig1")
+B77_FIG2_4 = figure_def("blinn77_fig2_4")
+B77_FIG5_6 = figure_def("blinn77_fig5_6")
+B77_DISTRIBUTIONS = figure_def("blinn77_distributions")
+TARGETS += figure_targets(B77_FIG1, B77_FIG2_4, B77_FIG5_6, B77_DISTRIBUTIONS)
 
 
 rule blinn77_fig1:
     output:
         png=report(
-            f"{B77_ANALYTIC_OUT}/fig1.png",
+            B77_FIG1.outputs["png"],
             caption="../report/blinn77_fig1.rst",
             category="Blinn 1977",
             subcategory="Figs. 1-4",
         ),
-        pdf=f"{B77_ANALYTIC_OUT}/fig1.pdf",
+        pdf=B77_FIG1.outputs["pdf"],
         csv=report(
-            f"{B77_ANALYTIC_OUT}/fig1.csv",
+            B77_FIG1.outputs["csv"],
             caption="../report/blinn77_fig1_table.rst",
             category="Blinn 1977",
             subcategory="Figs. 1-4",
@@ -55,7 +34,7 @@ rule blinn77_fig1:
         mem_mb=900,
         runtime=10,
     params:
-        fig=B77_ANALYTIC["fig1_4"],
+        **B77_FIG1.params,
     script:
         "../scripts/blinn_1977_fig1.py"
 
@@ -63,14 +42,14 @@ rule blinn77_fig1:
 rule blinn77_fig2_4:
     output:
         png=report(
-            f"{B77_ANALYTIC_OUT}/fig2_4.png",
+            B77_FIG2_4.outputs["png"],
             caption="../report/blinn77_fig2_4.rst",
             category="Blinn 1977",
             subcategory="Figs. 1-4",
         ),
-        pdf=f"{B77_ANALYTIC_OUT}/fig2_4.pdf",
+        pdf=B77_FIG2_4.outputs["pdf"],
         csv=report(
-            f"{B77_ANALYTIC_OUT}/fig2_4.csv",
+            B77_FIG2_4.outputs["csv"],
             caption="../report/blinn77_fig2_4_table.rst",
             category="Blinn 1977",
             subcategory="Figs. 1-4",
@@ -84,7 +63,7 @@ rule blinn77_fig2_4:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=B77_ANALYTIC["fig1_4"],
+        **B77_FIG2_4.params,
     script:
         "../scripts/blinn_1977_fig2_4.py"
 
@@ -92,20 +71,20 @@ rule blinn77_fig2_4:
 rule blinn77_fig5_6:
     output:
         png=report(
-            f"{B77_ANALYTIC_OUT}/{{fig}}.png",
+            B77_FIG5_6.outputs["png"],
             caption="../report/blinn77_fig5_6.rst",
             category="Blinn 1977",
             subcategory="Figs. 5-6",
         ),
-        pdf=f"{B77_ANALYTIC_OUT}/{{fig}}.pdf",
-        csv=f"{B77_ANALYTIC_OUT}/{{fig}}.csv",
+        pdf=B77_FIG5_6.outputs["pdf"],
+        csv=B77_FIG5_6.outputs["csv"],
         summary=report(
-            f"{B77_ANALYTIC_OUT}/{{fig}}_summary.csv",
+            B77_FIG5_6.outputs["summary"],
             caption="../report/blinn77_fig5_6_table.rst",
             category="Blinn 1977",
             subcategory="Figs. 5-6",
         ),
-        values=f"{B77_ANALYTIC_OUT}/{{fig}}.values.rst",
+        values=B77_FIG5_6.outputs["values"],
     log:
         "logs/blinn_1977/{fig}.log",
     benchmark:
@@ -117,8 +96,9 @@ rule blinn77_fig5_6:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=B77_ANALYTIC["fig5_6"],
-        incidence_deg=lambda wildcards: B77_ANALYTIC["fig5_6"]["incidence_deg"][wildcards.fig],
+        fig=B77_FIG5_6.params["fig"],
+        # each job its own figure's angle, of the declared fig5_6.incidence_deg
+        incidence_deg=lambda wildcards: B77_FIG5_6.params["incidence_deg"][wildcards.fig],
         figure_number=lambda wildcards: wildcards.fig[3:],
     script:
         "../scripts/blinn_1977_fig5_6.py"
@@ -127,15 +107,15 @@ rule blinn77_fig5_6:
 rule blinn77_distributions:
     output:
         png=report(
-            f"{B77_ANALYTIC_OUT}/distributions.png",
+            B77_DISTRIBUTIONS.outputs["png"],
             caption="../report/blinn77_distributions.rst",
             category="Blinn 1977",
             subcategory="D1, D2, D3",
         ),
-        pdf=f"{B77_ANALYTIC_OUT}/distributions.pdf",
-        csv=f"{B77_ANALYTIC_OUT}/distributions.csv",
+        pdf=B77_DISTRIBUTIONS.outputs["pdf"],
+        csv=B77_DISTRIBUTIONS.outputs["csv"],
         summary=report(
-            f"{B77_ANALYTIC_OUT}/distributions_max_difference.csv",
+            B77_DISTRIBUTIONS.outputs["summary"],
             caption="../report/blinn77_distributions_table.rst",
             category="Blinn 1977",
             subcategory="D1, D2, D3",
@@ -149,6 +129,6 @@ rule blinn77_distributions:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=B77_ANALYTIC["distributions"],
+        **B77_DISTRIBUTIONS.params,
     script:
         "../scripts/blinn_1977_distributions.py"

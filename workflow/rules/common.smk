@@ -7,6 +7,7 @@ import os
 import re
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 from reflectance.config import ConfigError, check_config, check_once, validate_schema
 from reflectance.papers.figures import figure, params_of, reader_params
@@ -97,6 +98,26 @@ def figure_rule(name):
     definition = figure(name)
     params = params_of(definition, config)
     return definition, params, definition.outputs(params)
+
+
+def figure_def(name):
+    """The figure ``name`` that renders nothing (reflectance.papers.figures.ANALYTIC), for its
+    rule: ``.params`` (its declared keys' values: the rule's params, exactly), ``.outputs``
+    ({name: path}), ``.spectra`` (the CSVs it reads) and ``.targets`` (its files)."""
+    definition = figure(name)
+    params = params_of(definition, config)
+    return SimpleNamespace(
+        definition=definition,
+        params=params,
+        outputs=definition.outputs(params),
+        spectra=[spectrum_csv(material) for material in definition.spectra(params)],
+        targets=definition.targets(params),
+    )
+
+
+def figure_targets(*figures):
+    """The files of these figures (of figure_def), in order."""
+    return [path for fig in figures for path in fig.targets]
 
 
 def ct82_caption(fig, reading):

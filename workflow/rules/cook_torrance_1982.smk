@@ -5,44 +5,32 @@ from reflectance.papers.errata import errata_rows
 
 CT82_OUT = "results/cook_torrance_1982"
 
-TARGETS += [
-    f"{CT82_OUT}/{name}"
-    for name in (
-        "fig4.png",
-        "fig4.pdf",
-        "fig4.csv",
-        "fig4.values.rst",
-        "fig5a.png",
-        "fig5a.csv",
-        "fig5bc.png",
-        "fig5bc.pdf",
-        "fig5bc.csv",
-        "fig5bc.exr",
-        "fig5bc_strip.csv",
-        "fig5bc_approximation.csv",
-        "fig5bc.values.rst",
-    )
-]
+# Each figure's keys (the rule's params, exactly), spectra and outputs: its one line in
+# reflectance.papers.figures.cook_torrance_1982.
+CT82_FIG4 = figure_def("ct82_fig4")
+CT82_FIG5A = figure_def("ct82_fig5a")
+CT82_FIG5BC = figure_def("ct82_fig5bc")
+TARGETS += figure_targets(CT82_FIG4, CT82_FIG5A, CT82_FIG5BC)
 
 
 rule ct82_fig4:
     input:
-        spectrum=spectrum_csv(CT82["fig4"]["material"]),
+        spectrum=CT82_FIG4.spectra[0],
     output:
         png=report(
-            f"{CT82_OUT}/fig4.png",
+            CT82_FIG4.outputs["png"],
             caption="../report/ct82_fig4.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 4",
         ),
-        pdf=f"{CT82_OUT}/fig4.pdf",
+        pdf=CT82_FIG4.outputs["pdf"],
         csv=report(
-            f"{CT82_OUT}/fig4.csv",
+            CT82_FIG4.outputs["csv"],
             caption="../report/ct82_fig4_table.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 4",
         ),
-        values=f"{CT82_OUT}/fig4.values.rst",
+        values=CT82_FIG4.outputs["values"],
     log:
         "logs/cook_torrance_1982/fig4.log",
     benchmark:
@@ -52,24 +40,22 @@ rule ct82_fig4:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=CT82["fig4"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        **CT82_FIG4.params,
     script:
         "../scripts/cook_torrance_1982_fig4.py"
 
 
 rule ct82_fig5a:
     input:
-        spectrum=spectrum_csv(CT82["fig5"]["material"]),
+        spectrum=CT82_FIG5A.spectra[0],
     output:
         png=report(
-            f"{CT82_OUT}/fig5a.png",
+            CT82_FIG5A.outputs["png"],
             caption="../report/ct82_fig5a.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
-        csv=f"{CT82_OUT}/fig5a.csv",
+        csv=CT82_FIG5A.outputs["csv"],
     log:
         "logs/cook_torrance_1982/fig5a.log",
     benchmark:
@@ -79,39 +65,37 @@ rule ct82_fig5a:
         mem_mb=900,
         runtime=10,
     params:
-        fig=CT82["fig5"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        **CT82_FIG5A.params,
     script:
         "../scripts/cook_torrance_1982_fig5a.py"
 
 
 rule ct82_fig5bc:
     input:
-        spectrum=spectrum_csv(CT82["fig5"]["material"]),
+        spectrum=CT82_FIG5BC.spectra[0],
     output:
         png=report(
-            f"{CT82_OUT}/fig5bc.png",
+            CT82_FIG5BC.outputs["png"],
             caption="../report/ct82_fig5bc.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
-        pdf=f"{CT82_OUT}/fig5bc.pdf",
+        pdf=CT82_FIG5BC.outputs["pdf"],
         csv=report(
-            f"{CT82_OUT}/fig5bc.csv",
+            CT82_FIG5BC.outputs["csv"],
             caption="../report/ct82_fig5bc_table.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
-        exr=f"{CT82_OUT}/fig5bc.exr",
-        strip=f"{CT82_OUT}/fig5bc_strip.csv",
+        exr=CT82_FIG5BC.outputs["exr"],
+        strip=CT82_FIG5BC.outputs["strip"],
         approximation=report(
-            f"{CT82_OUT}/fig5bc_approximation.csv",
+            CT82_FIG5BC.outputs["approximation"],
             caption="../report/ct82_fig5bc_approximation.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 5",
         ),
-        values=f"{CT82_OUT}/fig5bc.values.rst",
+        values=CT82_FIG5BC.outputs["values"],
     log:
         "logs/cook_torrance_1982/fig5bc.log",
     benchmark:
@@ -121,9 +105,7 @@ rule ct82_fig5bc:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=CT82["fig5"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        **CT82_FIG5BC.params,
     script:
         "../scripts/cook_torrance_1982_fig5bc.py"
 
@@ -144,21 +126,12 @@ try:
 except ValueError as err:
     raise WorkflowError(f"config.yaml: {err}") from None
 
-TARGETS += [
-    f"{CT82_OUT}/{name}"
-    for name in (
-        "fig1.png",
-        "fig1.pdf",
-        "fig1.csv",
-        "fig2.png",
-        "fig2.csv",
-        "fig3.png",
-        "fig3.csv",
-        "table1.png",
-        "table1.pdf",
-        "table1.csv",
-    )
-] + ["results/errata/errata.csv", "results/errata/errata.png", "results/errata/errata.pdf"]
+CT82_FIG1 = figure_def("ct82_fig1")
+CT82_FIG2 = figure_def("ct82_fig2")
+CT82_FIG3 = figure_def("ct82_fig3")
+CT82_TABLE1 = figure_def("ct82_table1")
+ERRATA = figure_def("errata")
+TARGETS += figure_targets(CT82_FIG1, CT82_FIG2, CT82_FIG3, CT82_TABLE1, ERRATA)
 
 
 rule ct82_fig1:
@@ -166,13 +139,13 @@ rule ct82_fig1:
         symbols=CT82_SYMBOLS,
     output:
         png=report(
-            f"{CT82_OUT}/fig1.png",
+            CT82_FIG1.outputs["png"],
             caption="../report/ct82_fig1.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 1",
         ),
-        pdf=f"{CT82_OUT}/fig1.pdf",
-        csv=f"{CT82_OUT}/fig1.csv",
+        pdf=CT82_FIG1.outputs["pdf"],
+        csv=CT82_FIG1.outputs["csv"],
     log:
         "logs/cook_torrance_1982/fig1.log",
     benchmark:
@@ -182,7 +155,7 @@ rule ct82_fig1:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=CT82["fig1"],
+        **CT82_FIG1.params,
     script:
         "../scripts/cook_torrance_1982_fig1.py"
 
@@ -190,12 +163,12 @@ rule ct82_fig1:
 rule ct82_fig2:
     output:
         png=report(
-            f"{CT82_OUT}/fig2.png",
+            CT82_FIG2.outputs["png"],
             caption="../report/ct82_fig2.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 2",
         ),
-        csv=f"{CT82_OUT}/fig2.csv",
+        csv=CT82_FIG2.outputs["csv"],
     log:
         "logs/cook_torrance_1982/fig2.log",
     benchmark:
@@ -205,7 +178,7 @@ rule ct82_fig2:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=CT82["fig2"],
+        **CT82_FIG2.params,
     script:
         "../scripts/cook_torrance_1982_fig2.py"
 
@@ -213,12 +186,12 @@ rule ct82_fig2:
 rule ct82_fig3:
     output:
         png=report(
-            f"{CT82_OUT}/fig3.png",
+            CT82_FIG3.outputs["png"],
             caption="../report/ct82_fig3.rst",
             category="Cook & Torrance 1982",
             subcategory="Fig. 3",
         ),
-        csv=f"{CT82_OUT}/fig3.csv",
+        csv=CT82_FIG3.outputs["csv"],
     log:
         "logs/cook_torrance_1982/fig3.log",
     benchmark:
@@ -228,28 +201,25 @@ rule ct82_fig3:
         mem_mb=1500,
         runtime=10,
     params:
-        fig=CT82["fig3"],
+        **CT82_FIG3.params,
     script:
         "../scripts/cook_torrance_1982_fig3.py"
 
 
 rule ct82_table1:
     input:
-        spectra=[
-            spectrum_csv(CT82["fig7"]["table1_spectra"].get(row["material"], row["material"]))
-            for row in CT82["table1"]["rows"]
-        ],
+        spectra=CT82_TABLE1.spectra,
         sources="spectra/sources.csv",
     output:
         png=report(
-            f"{CT82_OUT}/table1.png",
+            CT82_TABLE1.outputs["png"],
             caption="../report/ct82_table1.rst",
             category="Cook & Torrance 1982",
             subcategory="Table I",
         ),
-        pdf=f"{CT82_OUT}/table1.pdf",
+        pdf=CT82_TABLE1.outputs["pdf"],
         csv=report(
-            f"{CT82_OUT}/table1.csv",
+            CT82_TABLE1.outputs["csv"],
             caption="../report/ct82_table1.rst",
             category="Cook & Torrance 1982",
             subcategory="Table I",
@@ -263,10 +233,7 @@ rule ct82_table1:
         mem_mb=900,
         runtime=10,
     params:
-        fig=CT82["table1"],
-        spectra=CT82["fig7"]["table1_spectra"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        **CT82_TABLE1.params,
     script:
         "../scripts/cook_torrance_1982_table1.py"
 
@@ -276,18 +243,18 @@ rule errata:
         rows=CT82_ERRATA_ROWS,
     output:
         csv=report(
-            "results/errata/errata.csv",
+            ERRATA.outputs["csv"],
             caption="../report/errata.rst",
             category="Errata",
             subcategory="All texts",
         ),
         png=report(
-            "results/errata/errata.png",
+            ERRATA.outputs["png"],
             caption="../report/errata.rst",
             category="Errata",
             subcategory="All texts",
         ),
-        pdf="results/errata/errata.pdf",
+        pdf=ERRATA.outputs["pdf"],
     log:
         "logs/errata/errata.log",
     benchmark:
@@ -297,6 +264,6 @@ rule errata:
         mem_mb=1000,
         runtime=10,
     params:
-        errata=CT82_ERRATA,
+        **ERRATA.params,
     script:
         "../scripts/errata.py"

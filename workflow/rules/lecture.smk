@@ -1,42 +1,29 @@
 # Lecture: Russin, "Advanced Reflection Models" (JHU 605.767 Applied Computer Graphics, Module 3B):
 # its sample BRDFs, Fresnel reflectance and shadowing / masking slides, rebuilt from the library.
 
-LECTURE = config["figures"]["lecture"]
-LECTURE_OUT = "results/lecture"
-
-TARGETS += [
-    f"{LECTURE_OUT}/{name}"
-    for name in (
-        "brdf_lobes_2d.png",
-        "brdf_lobes_2d.pdf",
-        "brdf_lobes_2d.csv",
-        "brdf_lobes_3d.png",
-        "fresnel.png",
-        "fresnel.pdf",
-        "fresnel.csv",
-        "shadowing_masking.png",
-        "shadowing_masking.pdf",
-        "shadowing_masking_g1.csv",
-        "shadowing_masking_by_slope.csv",
-        "distributions.png",
-        "distributions.pdf",
-        "distributions.csv",
-        "distributions_normalisation.csv",
-    )
-]
+# Each figure's keys (the rule's params, exactly), spectra and outputs: its one line in
+# reflectance.papers.figures.lecture.
+LECTURE_LOBES_2D = figure_def("lecture_brdf_lobes_2d")
+LECTURE_LOBES_3D = figure_def("lecture_brdf_lobes_3d")
+LECTURE_FRESNEL = figure_def("lecture_fresnel")
+LECTURE_SHADOWING = figure_def("lecture_shadowing_masking")
+LECTURE_DISTRIBUTIONS = figure_def("lecture_distributions")
+TARGETS += figure_targets(
+    LECTURE_LOBES_2D, LECTURE_LOBES_3D, LECTURE_FRESNEL, LECTURE_SHADOWING, LECTURE_DISTRIBUTIONS
+)
 
 
 rule lecture_distributions:
     output:
         png=report(
-            f"{LECTURE_OUT}/distributions.png",
+            LECTURE_DISTRIBUTIONS.outputs["png"],
             caption="../report/lecture_distributions.rst",
             category="Lecture",
             subcategory="Microfacet distributions",
         ),
-        pdf=f"{LECTURE_OUT}/distributions.pdf",
-        csv=f"{LECTURE_OUT}/distributions.csv",
-        summary=f"{LECTURE_OUT}/distributions_normalisation.csv",
+        pdf=LECTURE_DISTRIBUTIONS.outputs["pdf"],
+        csv=LECTURE_DISTRIBUTIONS.outputs["csv"],
+        summary=LECTURE_DISTRIBUTIONS.outputs["summary"],
     log:
         "logs/lecture/distributions.log",
     benchmark:
@@ -46,7 +33,7 @@ rule lecture_distributions:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=LECTURE["distributions"],
+        **LECTURE_DISTRIBUTIONS.params,
     script:
         "../scripts/lecture_distributions.py"
 
@@ -54,13 +41,13 @@ rule lecture_distributions:
 rule lecture_brdf_lobes_2d:
     output:
         png=report(
-            f"{LECTURE_OUT}/brdf_lobes_2d.png",
+            LECTURE_LOBES_2D.outputs["png"],
             caption="../report/lecture_brdf_lobes_2d.rst",
             category="Lecture",
             subcategory="Sample BRDFs",
         ),
-        pdf=f"{LECTURE_OUT}/brdf_lobes_2d.pdf",
-        csv=f"{LECTURE_OUT}/brdf_lobes_2d.csv",
+        pdf=LECTURE_LOBES_2D.outputs["pdf"],
+        csv=LECTURE_LOBES_2D.outputs["csv"],
     log:
         "logs/lecture/brdf_lobes_2d.log",
     benchmark:
@@ -70,7 +57,7 @@ rule lecture_brdf_lobes_2d:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=LECTURE["brdf_lobes"],
+        **LECTURE_LOBES_2D.params,
     script:
         "../scripts/lecture_brdf_lobes_2d.py"
 
@@ -78,7 +65,7 @@ rule lecture_brdf_lobes_2d:
 rule lecture_brdf_lobes_3d:
     output:
         png=report(
-            f"{LECTURE_OUT}/brdf_lobes_3d.png",
+            LECTURE_LOBES_3D.outputs["png"],
             caption="../report/lecture_brdf_lobes_3d.rst",
             category="Lecture",
             subcategory="Sample BRDFs",
@@ -92,23 +79,23 @@ rule lecture_brdf_lobes_3d:
         mem_mb=1400,
         runtime=10,
     params:
-        fig=LECTURE["brdf_lobes"],
+        **LECTURE_LOBES_3D.params,
     script:
         "../scripts/lecture_brdf_lobes_3d.py"
 
 
 rule lecture_fresnel:
     input:
-        spectra=[spectrum_csv(name) for name in LECTURE["fresnel"]["materials"]],
+        spectra=LECTURE_FRESNEL.spectra,
     output:
         png=report(
-            f"{LECTURE_OUT}/fresnel.png",
+            LECTURE_FRESNEL.outputs["png"],
             caption="../report/lecture_fresnel.rst",
             category="Lecture",
             subcategory="Fresnel reflectance",
         ),
-        pdf=f"{LECTURE_OUT}/fresnel.pdf",
-        csv=f"{LECTURE_OUT}/fresnel.csv",
+        pdf=LECTURE_FRESNEL.outputs["pdf"],
+        csv=LECTURE_FRESNEL.outputs["csv"],
     log:
         "logs/lecture/fresnel.log",
     benchmark:
@@ -118,9 +105,7 @@ rule lecture_fresnel:
         mem_mb=900,
         runtime=10,
     params:
-        fig=LECTURE["fresnel"],
-        wavelengths=config["wavelengths"],
-        colour=config["colour"],
+        **LECTURE_FRESNEL.params,
     script:
         "../scripts/lecture_fresnel.py"
 
@@ -128,19 +113,19 @@ rule lecture_fresnel:
 rule lecture_shadowing_masking:
     output:
         png=report(
-            f"{LECTURE_OUT}/shadowing_masking.png",
+            LECTURE_SHADOWING.outputs["png"],
             caption="../report/lecture_shadowing_masking.rst",
             category="Lecture",
             subcategory="Shadowing and masking",
         ),
-        pdf=f"{LECTURE_OUT}/shadowing_masking.pdf",
+        pdf=LECTURE_SHADOWING.outputs["pdf"],
         g1=report(
-            f"{LECTURE_OUT}/shadowing_masking_g1.csv",
+            LECTURE_SHADOWING.outputs["g1"],
             caption="../report/lecture_shadowing_masking_table.rst",
             category="Lecture",
             subcategory="Shadowing and masking",
         ),
-        by_slope=f"{LECTURE_OUT}/shadowing_masking_by_slope.csv",
+        by_slope=LECTURE_SHADOWING.outputs["by_slope"],
     log:
         "logs/lecture/shadowing_masking.log",
     benchmark:
@@ -150,6 +135,6 @@ rule lecture_shadowing_masking:
         mem_mb=1000,
         runtime=10,
     params:
-        fig=LECTURE["shadowing_masking"],
+        **LECTURE_SHADOWING.params,
     script:
         "../scripts/lecture_shadowing_masking.py"

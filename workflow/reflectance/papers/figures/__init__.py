@@ -1,6 +1,9 @@
-"""One definition per rendered figure: the config keys it reads, its outputs and its scenes.
+"""One definition per figure: the config keys it reads, its outputs and its scenes.
 
-Each module of this package is one figure, named after its Snakemake rule, and defines:
+Each rendered figure is a module of this package, named after its Snakemake rule; the figures
+that render nothing are one :class:`Figure` line each in their text's module
+(:mod:`.cook_torrance_1982`, :mod:`.blinn_1977`, :mod:`.lecture`, :mod:`.article`, whose
+``DEFINITIONS`` map rule names to them). Each defines:
 
 - ``PARAMS``: ``{name: dotted config key}`` (or a tuple of dotted keys under one parent, giving
   that parent with only those keys), or a function of the config returning that mapping (where a
@@ -19,21 +22,28 @@ What the modules share (:class:`FigureScene`, :func:`params_of`, :func:`select`)
 
 References
 ----------
-The texts in ``../shared/papers/``: Cook & Torrance 1982 Figs. 6-8, Blinn 1977 Figs. 7 and 8,
-the Wikipedia article "Specular highlight" (its pair of spheres).
+The texts in ``../shared/papers/``: Cook & Torrance 1982, Blinn 1977, the lecture (Russin,
+Module 3B), the Wikipedia article "Specular highlight".
 """
 
 from __future__ import annotations
 
-from reflectance.papers.figures.declaration import (FigureScene, config_value, param_keys,
+from reflectance.papers.figures import article, blinn_1977, cook_torrance_1982, lecture
+from reflectance.papers.figures.declaration import (Figure, FigureScene, config_value, param_keys,
                                                     params_of, select)
 
-__all__ = ["FIGURES", "READERS", "FigureScene", "figure", "param_keys", "params_of", "select",
-           "config_value", "figure_scenes", "reader_params", "rule_keys"]
+__all__ = ["ANALYTIC", "FIGURES", "READERS", "Figure", "FigureScene", "figure", "param_keys",
+           "params_of", "select", "config_value", "declared_key_problems", "figure_scenes", "reader_params", "rule_keys"]
 
 #: the rendered figures, by rule name (each a module of this package)
 FIGURES = ("ct82_fig6", "ct82_fig7", "ct82_fig8", "blinn77_fig7", "blinn77_fig7_sweep",
            "blinn77_fig8", "article_spheres")
+
+#: the texts' modules of the figures that render nothing: {rule name: Figure}
+_TEXTS = (cook_torrance_1982, blinn_1977, lecture, article)
+_ANALYTIC = {rule: definition for text in _TEXTS for rule, definition in text.DEFINITIONS.items()}
+#: the figures that render nothing, by rule name (each one line of its text's module)
+ANALYTIC = tuple(_ANALYTIC)
 
 
 #: rules that are no figure module but read figure keys: {rule: (module, its declaration)}
@@ -41,7 +51,10 @@ READERS = {"audit_rgb_rendering": ("ct82_fig7", "RGB_AUDIT_PARAMS")}
 
 
 def figure(name):
-    """The module of the rendered figure ``name`` (one of :data:`FIGURES`)."""
+    """The definition of the figure ``name``: a rendered figure's module (one of
+    :data:`FIGURES`) or an analytic figure's :class:`Figure` (one of :data:`ANALYTIC`)."""
+    if name in _ANALYTIC:
+        return _ANALYTIC[name]
     # imported by name in the code (never a name read from data), and only when asked for
     import reflectance.papers.figures.article_spheres as article_spheres
     import reflectance.papers.figures.blinn77_fig7 as blinn77_fig7
@@ -55,7 +68,7 @@ def figure(name):
                                                   blinn77_fig7_sweep, blinn77_fig8,
                                                   article_spheres)}
     if name not in modules:
-        raise ValueError(f"no rendered figure {name!r}; known: {', '.join(FIGURES)}")
+        raise ValueError(f"no figure {name!r}; known: {', '.join(FIGURES + ANALYTIC)}")
     return modules[name]
 
 
@@ -66,8 +79,8 @@ def reader_params(rule, config):
 
 
 def rule_keys(rule, config):
-    """Every dotted config key the rule ``rule`` (a figure of :data:`FIGURES` or a rule of
-    :data:`READERS`) declares it reads from ``config``."""
+    """Every dotted config key the rule ``rule`` (a figure of :data:`FIGURES` or
+    :data:`ANALYTIC`, or a rule of :data:`READERS`) declares it reads from ``config``."""
     if rule in READERS:
         name, attribute = READERS[rule]
         declared = getattr(figure(name), attribute)
@@ -88,3 +101,16 @@ def figure_scenes(config, spectra_dir="spectra"):
         module = figure(name)
         for scene in module.scenes(params_of(module, config), str(spectra_dir)):
             yield scene.source, scene.name, scene.document
+
+
+def declared_key_problems(config):
+    """One line per figure whose declared keys are not all in ``config`` (naming the key and the
+    figure): the config check's, before any rule takes its params."""
+    problems = []
+    for name in FIGURES + ANALYTIC:
+        try:
+            params_of(figure(name), config)
+        except KeyError as err:
+            problems.append(err.args[0].replace("by a figure", f"by figure {name}, "
+                                                "reflectance.papers.figures"))
+    return problems

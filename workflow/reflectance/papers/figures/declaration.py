@@ -9,7 +9,7 @@ from __future__ import annotations
 import copy
 from typing import NamedTuple
 
-__all__ = ["FigureScene", "config_value", "param_keys", "params_of", "select"]
+__all__ = ["Figure", "FigureScene", "config_value", "param_keys", "params_of", "select"]
 
 
 class FigureScene(NamedTuple):
@@ -91,3 +91,41 @@ def select(declared, config):
             node[rest[-1]] = copy.deepcopy(config_value(config, key))
         params[name] = value
     return params
+
+
+class Figure(NamedTuple):
+    """The definition of a figure that renders nothing (an analytic figure): the same interface
+    as a rendered figure's module (``RULE``, ``PARAMS``, ``spectra``, ``outputs``, ``scenes``),
+    declared in one line per figure by its text's module.
+
+    ``PARAMS`` is ``{param name: dotted key or tuple of keys}`` (:func:`select`); ``OUTPUTS`` is
+    ``{output name: file name}`` under ``folder`` (a file name may hold a Snakemake wildcard, e.g.
+    ``{fig}.png``, whose values ``WILDCARDS`` lists); ``SPECTRA`` is a function of the params
+    giving the materials whose CSV the job reads.
+    """
+
+    RULE: str
+    folder: str
+    PARAMS: dict
+    OUTPUTS: dict
+    SPECTRA: object = None
+    WILDCARDS: dict = {}
+
+    def spectra(self, params):
+        """The materials whose ``spectra/<name>.csv`` the job reads."""
+        return list(self.SPECTRA(params)) if self.SPECTRA else []
+
+    def outputs(self, params):
+        """``{name: path}``, what the rule writes (wildcards left in)."""
+        return {name: f"{self.folder}/{file}" for name, file in self.OUTPUTS.items()}
+
+    def targets(self, params):
+        """Every file the rule writes, each wildcard filled with each of its values."""
+        paths = list(self.outputs(params).values())
+        for wildcard, values in self.WILDCARDS.items():
+            paths = [p.replace(f"{{{wildcard}}}", v) for v in values for p in paths]
+        return paths
+
+    def scenes(self, params, spectra_dir="spectra"):
+        """An analytic figure renders no scene."""
+        return []

@@ -1,0 +1,31 @@
+"""Blinn 1977: the figures that render nothing (Figs. 1-6, D1/D2/D3 at equal beta), one
+declaration each (:class:`Figure`). Figs. 1 and 2-4 share ``fig1_4``, Figs. 5 and 6 share
+``fig5_6``: each declares only the keys it reads, so an edit of one reruns only that one."""
+
+from __future__ import annotations
+
+from reflectance.papers.figures.declaration import Figure
+
+_B77, _OUT = "figures.blinn_1977", "results/blinn_1977"
+
+
+def _keys(parent, *keys):
+    return tuple(f"{_B77}.{parent}.{key}" for key in keys)
+
+
+DEFINITIONS = {figure.RULE: figure for figure in (
+    Figure("blinn77_fig1", _OUT, {"fig": _keys("fig1_4", "n_rays", "n_drawn_rays", "cases")},
+           {"png": "fig1.png", "pdf": "fig1.pdf", "csv": "fig1.csv"}),
+    Figure("blinn77_fig2_4", _OUT, {"fig": _keys("fig1_4", "n_rays", "n_drawn_rays", "cases",
+                                                 "construction_case")},
+           {"png": "fig2_4.png", "pdf": "fig2_4.pdf", "csv": "fig2_4.csv"}),
+    # one rule, one job per figure ({fig}); the rule hands each job its own incidence angle
+    Figure("blinn77_fig5_6", _OUT, {"fig": _keys("fig5_6", "n_directions", "parameter_sets"),
+                                    "incidence_deg": f"{_B77}.fig5_6.incidence_deg"},
+           {"png": "{fig}.png", "pdf": "{fig}.pdf", "csv": "{fig}.csv",
+            "summary": "{fig}_summary.csv", "values": "{fig}.values.rst"},
+           WILDCARDS={"fig": ("fig5", "fig6")}),
+    Figure("blinn77_distributions", _OUT, {"fig": f"{_B77}.distributions"},
+           {"png": "distributions.png", "pdf": "distributions.pdf", "csv": "distributions.csv",
+            "summary": "distributions_max_difference.csv"}),
+)}
