@@ -89,15 +89,12 @@ def _grid_and_colour(args):
     grid = {"start_nm": 360, "end_nm": 830, "step_nm": 5}
     path = Path(args.config)
     if path.exists():
-        import yaml
+        from reflectance.io.yamlfile import YAMLFileError, read_yaml
 
-        try:
-            document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
-        except (OSError, UnicodeDecodeError) as err:
-            raise _config_error(args, f"cannot read: {getattr(err, 'strerror', None) or err}") \
-                from None
-        except yaml.YAMLError as err:
-            raise _config_error(args, f"not valid YAML: {' '.join(str(err).split())}") from None
+        try:  # bounded (aliases, depth, size): reflectance.io.yamlfile
+            document = read_yaml(path, encoding="utf-8-sig")
+        except YAMLFileError as err:
+            raise SystemExit(f"reflectance: --config {err}") from None
         if not isinstance(document, dict) or "wavelengths" not in document:
             if args.config == DEFAULT_CONFIG and isinstance(document, dict):
                 document = {"wavelengths": grid}  # someone else's config.yaml: the built-in grid

@@ -3,7 +3,8 @@
 The checks run in stages, each only if the previous found nothing (a later stage assumes the
 structure an earlier one guarantees), and each names the key of every problem it finds:
 
-1. :func:`read_config`: YAML syntax and duplicated keys, with their line numbers;
+1. :func:`read_config`: YAML syntax and duplicated keys, with their line numbers, and a document
+   that grows when read (aliases, nesting, size), refused before it is built;
 2. :func:`unknown_keys`: every mapping is closed by the schema (``additionalProperties: false``),
    so a key the schema does not name is a typo: reported with a did-you-mean suggestion. The
    schema is the single source of the allowed keys; the few mappings whose keys are keyword
@@ -71,69 +72,19 @@ def _raise(problems, source=SOURCE):
 # 1. YAML: syntax errors and duplicated keys with their line numbers
 # --------------------------------------------------------------------------------------------
 
-class _UniqueKeys:
-    """A safe loader's mappings, refusing a key given twice in one mapping (PyYAML keeps the
-    last)."""
-
-    def construct_mapping(self, node, deep=False):
-        seen = {}
-        for key_node, _ in node.value:
-            key = self.construct_object(key_node, deep=deep)
-            mark = key_node.start_mark
-            try:
-                first = seen.setdefault(key, (mark.line, mark.column))
-            except TypeError:  # an unhashable key: PyYAML's own error follows
-                continue
-            if first != (mark.line, mark.column):  # also twice on one line: {x: 1, x: 2}
-                raise yaml.constructor.ConstructorError(
-                    None, None, f"key {key!r} given twice (first on line {first[0] + 1})", mark)
-        return super().construct_mapping(node, deep=deep)
-
-
-class _UniqueKeyLoader(_UniqueKeys, yaml.SafeLoader):
-    """PyYAML's pure-Python safe loader: its syntax errors name the character found."""
-
-
-#: libyaml's parser where PyYAML has it (ten times faster; every parse of the workflow reads
-#: config.yaml), with the same mappings and key lines.
-_FastUniqueKeyLoader = (type("_FastUniqueKeyLoader", (_UniqueKeys, yaml.CSafeLoader), {})
-                        if hasattr(yaml, "CSafeLoader") else _UniqueKeyLoader)
-
-
-def _load_unique(text, loader_class):
-    loader = loader_class(text)  # a safe loader: data only
-    try:
-        return loader.get_single_data()
-    finally:
-        loader.dispose()
-
-
 def read_config(path="config.yaml"):
-    """The mapping in a YAML config file; ConfigError naming the line of a syntax error."""
+    """The mapping in a YAML config file; ConfigError naming the line of a syntax error or of a
+    key given twice, or a document that grows when read (aliases, depth, size:
+    :func:`reflectance.io.yamlfile.read_yaml`, whose bounds hold before anything is built)."""
+    from reflectance.io.yamlfile import YAMLFileError, read_yaml
+
     path = Path(path)
     if not path.is_file():
         raise ConfigError(f"no config file at {path}")
     try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as err:
-        raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
-    try:
-        try:
-            config = _load_unique(text, _FastUniqueKeyLoader)
-        except yaml.YAMLError:
-            # the pure-Python parser decides (as before, and as Snakemake reads the file); its
-            # message names what it found ('\t', the alias)
-            config = _load_unique(text, _UniqueKeyLoader)
-    except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
-        where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        what = getattr(err, "problem", None) or str(err).replace("\n", " ")
-        context, start = getattr(err, "context", None), getattr(err, "context_mark", None)
-        if context and start is not None and start is not mark:
-            what += f" ({context} that starts on line {start.line + 1}, column {start.column + 1})"
-        elif context:
-            what += f" ({context})"
-        raise ConfigError(f"{path}{where}: not valid YAML: {what}") from None
+        config = read_yaml(path)
+    except YAMLFileError as err:
+        raise ConfigError(str(err)) from None
     if config is None:
         return {}
     if not isinstance(config, dict):

@@ -41,6 +41,7 @@ from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
 from reflectance.io.paths import file_inside, package_data
+from reflectance.io.yamlfile import YAMLFileError, read_yaml
 
 __all__ = [
     "SceneError",
@@ -589,14 +590,10 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     path = Path(path)
     if not path.is_file():
         raise SceneError(f"{path}: no such scene file")
-    try:
-        document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
-    except yaml.YAMLError as err:
-        raise SceneError(f"{path}: not valid YAML: {err}") from None
-    except UnicodeDecodeError as err:
-        raise SceneError(f"{path}: not a UTF-8 text file (byte {err.start})") from None
-    except OSError as err:
-        raise SceneError(f"{path}: cannot read: {err.strerror}") from None
+    try:  # bounded (aliases, depth, size) and no key twice: reflectance.io.yamlfile
+        document = read_yaml(path, encoding="utf-8-sig")
+    except YAMLFileError as err:
+        raise SceneError(str(err)) from None
     if isinstance(document, dict):
         camera = document.get("camera")
         for key, value in (("width", width), ("height", height), ("supersample", supersample)):
