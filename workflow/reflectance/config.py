@@ -35,7 +35,7 @@ from pathlib import Path
 
 import yaml
 
-from reflectance.io.paths import package_data
+from reflectance.io.paths import package_data, project_file
 
 __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unknown_keys",
            "non_finite_numbers", "validate_schema", "check_config", "load_config",
@@ -779,8 +779,9 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
 
     - the illuminant and observer are names colour-science knows;
     - every material a figure names is defined under ``materials``;
-    - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
-      the CSV the workflow writes from it;
+    - a ``source: file`` material's file lies inside the project folder (the parent of
+      ``spectra_dir``; no ``..``, absolute path or symbolic link leading out), exists and reads
+      (columns, units, rows), and is not the CSV the workflow writes from it;
     - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
     - the vases README's strip names (``readme.strip.fig7_vases``) are vases of Fig. 7;
     - the database audit's grid, light, observer, levels and figures' methods, and (with
@@ -819,7 +820,21 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
             problems.append(
                 f"{_key(path)}: unknown material {name!r}; known: {', '.join(sorted(known))}"
             )
+    # the user's own spectrum files: inside the project folder (README), refused before any
+    # is read (reflectance.io.paths: no '..', no absolute path, no symbolic link leading out),
+    # so that no message ever shows a line of a file outside it
+    project = Path(spectra_dir).parent
+    outside = set()
     for name, entry in sorted(known.items()):
+        if entry.get("source") == "file":
+            try:
+                project_file(entry["path"], f"materials.{name}.path", project)
+            except ValueError as err:
+                problems.append(str(err))
+                outside.add(name)
+    for name, entry in sorted(known.items()):
+        if name in outside:
+            continue
         if entry.get("source") == "file" and Path(entry["path"]).resolve() == (
                 Path("spectra") / f"{name}.csv").resolve():
             problems.append(f"materials.{name}.path: {entry['path']} is the file the workflow "

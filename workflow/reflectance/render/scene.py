@@ -194,7 +194,8 @@ GEOMETRY_BUILDERS = {
                                                               g["n_u"], g["n_v"], g["center"]),
     "plane": lambda g, base: plane(g["center"], g["normal"], g["size"], g["resolution"],
                                    g.get("u_direction")),
-    "mesh": lambda g, base: mesh_from_file(Path(base) / g["path"], g["feature_angle"]),
+    "mesh": lambda g, base: mesh_from_file(
+        Path(base) / file_inside(g["path"], base, "the scene file's folder"), g["feature_angle"]),
     "watch": lambda g, base: watch(**g["parameters"]),
 }
 """Scene geometry types and how each is built from its keys (``base``: the scene's folder)."""
