@@ -15,7 +15,7 @@ from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("atomic", "cache", "captions", "figures", "images", "paths", "progress", "provenance",
-            "tables", "yamlfile")
+            "limits", "tables", "yamlfile")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -54,6 +54,9 @@ _EXPORTS = {
     "project_file": "paths",
     "check_name": "paths",
     "YAMLFileError": "yamlfile",
+    "size_problem": "limits",
+    "grid_points": "limits",
+    "physical_memory_bytes": "limits",
     "read_yaml": "yamlfile",
     "load_yaml_text": "yamlfile",
 }
