@@ -211,6 +211,62 @@ CORPUS = [
 ]
 
 
+# Issue 25: sizes that set an array or a loop (family 1) and paths that leave the project
+# (family 3), each refused in ONE line naming the key, before anything is made or read.
+SIZE = r"makes .* about .*(GiB|h)"
+ADAPTIVE = {"enabled": True, "threshold": 2.0, "supersample": 8}
+LIMITS_CORPUS = [
+    # steps and counts: counted, never made (a grid of 10^10 points would exhaust the dry run)
+    ("wavelength-step", set_("wavelengths.step_nm", 1e-7), rf"^config\.yaml: wavelengths\.step_nm: 1e-07 nm {SIZE}"),
+    ("strip-coarse-step", set_(f"{CT}.fig5.strip.step_deg", 1e-8), rf"fig5\.strip\.step_deg: 1e-08 degrees {SIZE}"),
+    ("surface-angle-step", set_(f"{CT}.fig5.surface_angle_step_deg", 1e-9), rf"fig5\.surface_angle_step_deg: 1e-09 degrees {SIZE}"),
+    ("fig3-alpha-step", set_(f"{CT}.fig3.alpha_step_deg", 1e-7), rf"fig3\.alpha_step_deg, \.azimuth_step_deg: 1e-07 and 3 degrees {SIZE}"),
+    ("fig3-azimuth-step", set_(f"{CT}.fig3.azimuth_step_deg", 1e-6), rf"fig3\.alpha_step_deg, \.azimuth_step_deg: 0\.25 and 1e-06 degrees {SIZE}"),
+    ("blinn-distribution-step", set_(f"{B77}.distributions.alpha_step_deg", 1e-9),
+     rf"blinn_1977\.distributions\.alpha_step_deg: 1e-09 degrees {SIZE}"),
+    ("lecture-distribution-step", set_(f"{LEC}.distributions.alpha_step_deg", 1e-9),
+     rf"lecture\.distributions\.alpha_step_deg: 1e-09 degrees {SIZE}"),
+    ("lobes-polar-step", set_(f"{LEC}.brdf_lobes.polar_step_deg", 1e-9), rf"brdf_lobes\.polar_step_deg: 1e-09 degrees {SIZE}"),
+    ("lecture-fresnel-step", set_(f"{LEC}.fresnel.angle_step_deg", 1e-8), rf"lecture\.fresnel\.angle_step_deg: 1e-08 degrees {SIZE}"),
+    # a loop over angles, each of n_samples: its time counts, not its memory
+    ("masking-angle-step", set_(f"{LEC}.shadowing_masking.angle_step_deg", 1e-5),
+     r"shadowing_masking\.angle_step_deg: 1e-05 degrees makes .* surface samples: about \d+ h of work"),
+    ("article-polar-step", set_(f"{ART}.distributions.polar_step_deg", 1e-9),
+     rf"article\.distributions\.polar_step_deg: 1e-09 degrees {SIZE}"),
+    ("atlas-angle-step", set_("audits.fresnel_atlas.angle_step_deg", 1e-7), rf"fresnel_atlas\.angle_step_deg: 1e-07 degrees {SIZE}"),
+    ("sampling-reference-step", set_("audits.spectral_sampling.reference_step_nm", 1e-6),
+     rf"spectral_sampling\.reference_step_nm: 1e-06 nm {SIZE}"),
+    ("sampling-step", set_("audits.spectral_sampling.steps_nm[2]", 1e-7), rf"spectral_sampling\.steps_nm\[2\]: 1e-07 nm {SIZE}"),
+    ("database-step", set_("audits.database.step_nm", 1e-6), rf"audits\.database\.step_nm, \.angle_step_deg: 1e-06 nm and 0\.5 degrees {SIZE}"),
+    ("database-angle-step", set_("audits.database.angle_step_deg", 1e-8), rf"audits\.database\.step_nm, \.angle_step_deg: 5 nm and 1e-08 degrees {SIZE}"),
+    ("failure-angle-bins", set_("audits.database.figures.failure_angle.bin_deg", 1e-10),
+     rf"failure_angle\.bin_deg: 1e-10 degrees {SIZE}"),
+    ("vase-mesh", both(set_(f"{CT}.fig6.vase.n_theta", 4096), set_(f"{CT}.fig6.vase.n_profile_samples", 4096)),
+     rf"fig6\.vase\.n_theta, \.n_profile_samples: 4096 x 4096 {SIZE}"),
+    # adaptive refinement counts in a render's memory (a 2048 px render fits 2 GiB without it)
+    ("memory-adaptive", both(set_(f"{CT}.fig6.camera.width", 2048), set_(f"{CT}.fig6.camera.height", 2048),
+                             set_(f"{CT}.fig6.camera.adaptive", ADAPTIVE)),
+     r"fig6\.camera\.width, \.height, \.supersample: a 2048 x 2048 render with 2 x 2 samples and adaptive refinement needs about 2\.\d GiB"),
+    ("memory-adaptive-vase-image", both(set_(f"{CT}.fig7.vase_image.width", 2048), set_(f"{CT}.fig7.vase_image.height", 2048),
+                                        set_(f"{CT}.fig6.camera.adaptive", ADAPTIVE)),
+     r"fig7\.vase_image\.width, \.height, \.supersample: .* and adaptive refinement needs about"),
+    ("memory-adaptive-spheres", both(set_(f"{ART}.spheres.camera.width", 2048), set_(f"{ART}.spheres.camera.height", 2048),
+                                     set_(f"{ART}.spheres.camera.adaptive", ADAPTIVE)),
+     r"article\.spheres\.camera\.width, \.height, \.supersample: .* and adaptive refinement"),
+    # own spectrum files: a path leaving the project folder is refused unread
+    ("own-file-dotdot", set_("materials.Mine", {"source": "file", "path": "../x.csv", "units": "nm"}),
+     r"^config\.yaml: materials\.Mine\.path: '\.\./x\.csv' leaves the project folder"),
+    ("own-file-dotdot-inside", set_("materials.Mine", {"source": "file", "path": "spectra/../../x.csv", "units": "nm"}),
+     r"materials\.Mine\.path: 'spectra/\.\./\.\./x\.csv' leaves the project folder"),
+    ("own-file-absolute", set_("materials.Mine", {"source": "file", "path": "/etc/hosts", "units": "nm"}),
+     r"materials\.Mine\.path: '/etc/hosts' is absolute; give a path inside the project folder"),
+    ("own-file-proc", set_("materials.Mine", {"source": "file", "path": "/proc/self/environ", "units": "um"}),
+     r"materials\.Mine\.path: '/proc/self/environ' is absolute"),
+    ("own-file-nul", set_("materials.Mine", {"source": "file", "path": "data/x\x00.csv", "units": "nm"}),
+     r"materials\.Mine\.path: "),
+]
+
+
 @pytest.fixture(scope="module")
 def config():
     return read_config(ROOT / "config.yaml")
@@ -252,6 +308,31 @@ def test_bad_edit_is_refused_naming_the_key(config, case_id, edit, expected):
     assert re.search(expected, message), message
     assert all(line.startswith("config.yaml: ") for line in message.splitlines()), message
     assert snapshot(ROOT) == before
+
+
+def test_limits_corpus_is_large_and_distinct():
+    ids = [case[0] for case in CORPUS + LIMITS_CORPUS]
+    assert len(LIMITS_CORPUS) >= 25 and len(set(ids)) == len(ids)
+
+
+@pytest.mark.parametrize("case_id, edit, expected", LIMITS_CORPUS, ids=[c[0] for c in LIMITS_CORPUS])
+def test_size_or_path_is_refused_in_one_line_naming_the_key(config, case_id, edit, expected):
+    """Issue 25: a size is refused by its estimate before anything is made (quickly: a grid of
+    10^10 points is counted), a path leaving the project before it is read; one line."""
+    import time
+
+    bad = copy.deepcopy(config)
+    edit(bad)
+    before = snapshot(ROOT)
+    start = time.perf_counter()
+    with pytest.raises(ConfigError) as info:
+        run_checks(bad)
+    message = str(info.value)
+    assert re.search(expected, message), message
+    assert len(message.splitlines()) == 1 and message.startswith("config.yaml: "), message
+    assert "root:" not in message and "localhost" not in message  # no line of a foreign file
+    assert snapshot(ROOT) == before
+    assert time.perf_counter() - start < 60
 
 
 # --- the YAML itself ---------------------------------------------------------------------------

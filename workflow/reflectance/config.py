@@ -679,12 +679,11 @@ def _grid_sizes(config):
     yield ("figures.cook_torrance_1982.fig5.surface_angle_step_deg",
            f"{fig5['surface_angle_step_deg']:g} degrees",
            [(grid_points(90.0, fig5["surface_angle_step_deg"]), "angles"), (wl, "wavelengths")])
-    f3 = ct["fig3"]
-    for name, span, other, span_other in (("alpha_step_deg", 90.0, "azimuth_step_deg", 360.0),
-                                          ("azimuth_step_deg", 360.0, "alpha_step_deg", 90.0)):
-        yield (f"figures.cook_torrance_1982.fig3.{name}", f"{f3[name]:g} degrees",
-               [(grid_points(span, f3[name]), "angles"),
-                (grid_points(span_other, f3[other]), "angles"), (len(f3["m"]), "slopes m")])
+    f3 = ct["fig3"]  # one grid of two steps: one line naming both
+    yield ("figures.cook_torrance_1982.fig3.alpha_step_deg, .azimuth_step_deg",
+           f"{f3['alpha_step_deg']:g} and {f3['azimuth_step_deg']:g} degrees",
+           [(grid_points(90.0, f3["alpha_step_deg"]), "polar angles"),
+            (grid_points(360.0, f3["azimuth_step_deg"]), "azimuths"), (len(f3["m"]), "slopes m")])
     step = b77["distributions"]["alpha_step_deg"]
     yield ("figures.blinn_1977.distributions.alpha_step_deg", f"{step:g} degrees",
            [(grid_points(90.0, step), "angles"), (3, "distributions")])
@@ -729,10 +728,9 @@ def _grid_sizes(config):
         db_wl = grid_points(max(hi - lo, 0.0), db["step_nm"])
         db_angles = grid_points(90.0, db["angle_step_deg"], 0)
         per_dataset = [(len(db["methods"]), "methods"), (1, "dataset at a time")]
-        yield ("audits.database.step_nm", f"{db['step_nm']:g} nm",
+        yield ("audits.database.step_nm, .angle_step_deg",
+               f"{db['step_nm']:g} nm and {db['angle_step_deg']:g} degrees",
                [(db_wl, "wavelengths"), (db_angles, "angles"), *per_dataset])
-        yield ("audits.database.angle_step_deg", f"{db['angle_step_deg']:g} degrees",
-               [(db_angles, "angles"), (db_wl, "wavelengths"), *per_dataset])
         bins = db.get("figures", {}).get("failure_angle", {}).get("bin_deg")
         if bins is not None:
             yield ("audits.database.figures.failure_angle.bin_deg", f"{bins:g} degrees",
@@ -754,6 +752,8 @@ def size_problems(config, memory=None):
         problem = size_problem(key, value, dims, memory, streamed=bool(streamed and streamed[0]))
         if problem is not None:
             problems.append(problem)
+            if key == "wavelengths.step_nm":
+                break  # the other sizes multiply by it: said once, at its cause
     return problems
 
 
