@@ -361,6 +361,48 @@ def test_duplicated_key_names_both_lines(tmp_path):
         read_config(tmp_path / "config.yaml")
 
 
+# Issue 25 family 2: YAML that grows when read. (id, text added to the project's config.yaml or
+# replacing it, what the one line says after the file's name.) Each is refused within a second,
+# before anything is built, whatever Snakemake would do with the file.
+def _laughs(levels, width):
+    text, previous = 'x-lol0: &l0 ["lol"]\n', "l0"
+    for i in range(1, levels + 1):
+        text += f"x-lol{i}: &l{i} [{', '.join([f'*{previous}'] * width)}]\n"
+        previous = f"l{i}"
+    return text
+
+
+GROWING_YAML = [
+    ("laughs-wide", _laughs(3, 200), r"line \d+: its aliases expand it to more than 1,000,000 nodes"),
+    ("laughs-deep", _laughs(30, 2), r"its aliases expand it to more than 1,000,000 nodes"),
+    ("quadratic-aliases", "x-big: &big [" + ", ".join(["1"] * 2000) + "]\nx-refs: [" + ", ".join(["*big"] * 600) + "]\n",
+     r"its aliases expand it"),
+    ("mapping-aliases", "x-m: &m {" + ", ".join(f"k{i}: {i}" for i in range(1000)) + "}\nx-r: [" + ", ".join(["*m"] * 1200) + "]\n",
+     r"its aliases expand it"),
+    ("deep-flow-sequences", "x-deep: " + "[" * 5000 + "]" * 5000 + "\n", r"line \d+: nested more than 64 levels deep"),
+    ("deep-flow-mappings", "x-deep: " + "{a: " * 3000 + "1" + "}" * 3000 + "\n", r"nested more than 64 levels deep"),
+    ("deep-block-mappings", "x-deep:\n" + "".join(" " * (i + 1) + f"k{i}:\n" for i in range(200)) + " " * 201 + "v: 1\n",
+     r"line \d+: nested more than 64 levels deep"),
+    ("deep-mixed", "x-deep: " + "[{a: " * 100 + "1" + "}]" * 100 + "\n", r"nested more than 64 levels deep"),
+    ("too-large", "# " + "x" * (9 * 2**20) + "\n", r"[\d,]+ bytes; a YAML file read here holds at most 8,388,608"),
+]
+
+
+@pytest.mark.parametrize("case_id, text, expected", GROWING_YAML, ids=[c[0] for c in GROWING_YAML])
+def test_yaml_that_grows_when_read_is_refused_at_once(tmp_path, case_id, text, expected):
+    import time
+
+    path = tmp_path / "config.yaml"
+    path.write_text((ROOT / "config.yaml").read_text() + text)
+    start = time.perf_counter()
+    with pytest.raises(ConfigError) as info:
+        read_config(path)
+    assert time.perf_counter() - start < 1.0
+    message = str(info.value)
+    assert re.search(rf"^{re.escape(str(path))}: (line \d+: )?{expected}", message), message
+    assert len(message.splitlines()) == 1
+
+
 # --- the memory estimate -------------------------------------------------------------------------
 
 def test_memory_estimate_reproduces_the_measured_peaks():
@@ -429,6 +471,16 @@ WORKFLOW_CASES = [
     ("munsell-value", "munsell-value", r"materials\.Rubber\.notation: 'N99'"),
     ("grid-beyond-spectra", set_("wavelengths.start_nm", 300),
      r"wavelengths: the grid 300-830 nm leaves the data of materials\.Cu \(360-830 nm\)"),
+    # issue 25: before Snakemake reads the file (a bomb would hang it), and before any job (a
+    # grid of 10^10 points, an own file outside the project)
+    ("alias-bomb", in_text("wavelengths:", _laughs(9, 9) + "wavelengths:"),
+     r"^config\.yaml: line \d+: its aliases expand it to more than 1,000,000 nodes$"),
+    ("deep-nesting", in_text("wavelengths:", "x-deep: " + "[" * 5000 + "]" * 5000 + "\nwavelengths:"),
+     r"^config\.yaml: line \d+: nested more than 64 levels deep$"),
+    ("strip-step", set_(f"{CT}.fig5.strip.fine_step_deg", 1e-9),
+     r"^config\.yaml: figures\.cook_torrance_1982\.fig5\.strip\.fine_step_deg: 1e-09 degrees makes"),
+    ("own-file-passwd", set_("materials.Mine", {"source": "file", "path": "/etc/passwd", "units": "nm"}),
+     r"^config\.yaml: materials\.Mine\.path: '/etc/passwd' is absolute"),
 ]
 
 
@@ -507,5 +559,6 @@ def test_the_workflow_refuses_before_any_job_naming_the_key(workflow_runs, case_
     lines = [line for line in out.splitlines() if re.search(expected, line)]
     assert lines and all(line.startswith("config.yaml") for line in lines), out
     assert "Traceback" not in out and "Job stats" not in out, out
+    assert "root:" not in out  # no line of a file outside the project
     assert not re.search(r"^(local)?rule \w+:", out, flags=re.M), out
     assert snapshot(project) == before
