@@ -431,6 +431,24 @@ def test_memory_estimate_reproduces_the_measured_peaks():
         assert all(a <= b for a, b in zip(estimates, estimates[1:])), ss
 
 
+def test_adaptive_estimate_covers_the_measured_peaks():
+    """Adaptive refinement's extra memory (bench_hard.yaml, 2 x 2 refined to 8 x 8, measured with
+    /usr/bin/time, CHANGELOG 2026-12-05: 1.17, 1.39, 1.84 GiB at 512, 1024, 2048 px against
+    0.80, 0.82, 1.09 without), and issue 25's adaptive 4096 px Fig. 6 that grew past 6 GB:
+    the estimate is never below a measured peak, and at most 30 % above it at 2048 px."""
+    measured = {512: 1223180 * 2**10, 1024: 1455744 * 2**10, 2048: 1932796 * 2**10, 4096: 6e9}
+    for size, peak in measured.items():
+        estimate = render_memory_bytes(size, size, 2, adaptive=True)
+        assert estimate >= 0.99 * peak, (size, estimate / GiB, peak / GiB)
+        assert estimate <= 1.3 * peak, (size, estimate / GiB, peak / GiB)
+    # the estimate without refinement said 1.49 GiB at 4096 px (issue 25)
+    assert render_memory_bytes(4096, 4096, 2) < 1.5 * GiB < 6e9 <= render_memory_bytes(
+        4096, 4096, 2, adaptive=True)
+    sides = range(64, 8193, 16)
+    estimates = [render_memory_bytes(n, n, 2, adaptive=True) for n in sides]
+    assert all(a <= b for a, b in zip(estimates, estimates[1:]))
+
+
 def test_memory_is_refused_against_the_machine_given(config):
     bad = copy.deepcopy(config)
     bad["figures"]["blinn_1977"]["fig7_sweep"].update(size=1024, supersample=8)
