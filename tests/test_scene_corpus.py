@@ -155,3 +155,20 @@ def test_bad_scene_is_refused_in_one_line_naming_file_and_key(folder, root, case
     assert "secret" not in message
     assert listing(folder.parent) == before
     assert seconds < 10, seconds
+
+
+def test_spectra_dir_is_the_deliberate_exception(folder, root):
+    """README: a scene's ``spectra_dir`` (like the CLI's --spectra-dir) is a folder the user
+    chooses, anywhere: a material there loads; but only ``<name>.csv`` of a plain name is read in
+    it, so no name reaches another file."""
+    outside = folder.parent / "outside"
+    (outside / "Mine.csv").write_text("wavelength_nm,n,k\n350,0.5,2.5\n850,0.3,4.0\n")
+    path = folder / "s.yaml"
+    path.write_text(scene(spectra_dir=str(outside), objects=[
+        {"geometry": {"type": "sphere", "radius": 1.0}, "material": {"name": "Mine", "m": 0.3}}]))
+    assert load_scene(path).objects[0].material.name == "Mine"
+    for name in ("../outside/Mine", "/etc/hosts", "m.csv/.."):
+        path.write_text(scene(spectra_dir=str(outside), objects=[
+            {"geometry": {"type": "sphere", "radius": 1.0}, "material": {"name": name, "m": 0.3}}]))
+        with pytest.raises(SceneError, match=r"objects\[0\]\.material\.name: .* is not a name"):
+            load_scene(path)
