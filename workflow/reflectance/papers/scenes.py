@@ -41,7 +41,6 @@ import copy
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977

@@ -7,7 +7,7 @@ number of samples (one pass) or of pixels (bands), plus adaptive refinement and 
 
 from __future__ import annotations
 
-from reflectance.io.limits import describe_bytes, physical_memory_bytes
+from reflectance.io.limits import physical_memory_bytes
 
 __all__ = ["RENDER_PEAK_MEMORY", "ADAPTIVE_PEAK_MEMORY", "MESH_ELEMENTS_PER_VERTEX",
            "render_memory_bytes", "render_size_problem"]
