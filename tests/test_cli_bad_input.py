@@ -86,6 +86,11 @@ BAD = [
     (["bench", "--grids", "0"], "--grids"),
     (["bench", "--grids", "nan"], "--grids"),
     (["bench", "--grid-size", "0"], "--grid-size"),
+    # issue 25: sizes counted before anything is made, one line naming the option
+    (["audit", "Cu", "--wavelengths", "360", "830", "1e-7"], "--wavelengths: 1e-07 nm from 360 to 830 nm makes"),
+    (["audit", "Cu", "--angle", "0", "10", "--wavelengths", "400", "700", "1e-8"], "--wavelengths: 1e-08 nm"),
+    (["bench", "--grids", "5", "1e-6"], "--grids: 1e-06 nm at --grid-size 512 makes"),
+    (["bench", "--sizes", "64", "16384"], "--sizes 16384, --supersample 2: the ID buffer would be"),
     # --spectra-dir, a folder that does not exist, in every command that looks a material up
     *[(args + ["--spectra-dir", "nope"], "--spectra-dir: no such folder 'nope'")
       for args in (["colour", "Cu", "--angle", "0"], ["spectra"],
@@ -105,6 +110,15 @@ BAD_CONFIGS = [
     ("colour: {space: sRGB}\n", "wavelengths"),
     ("- just\n- a list\n", "wavelengths"),
     ("wavelengths: {start_nm: 360\n", "not valid YAML"),
+    # issue 25: a grid too fine to make; YAML that grows when read; a key given twice
+    ("wavelengths: {start_nm: 360, end_nm: 830, step_nm: 1.0e-8}\n", "wavelengths.step_nm: 1e-08 nm"),
+    ('x0: &a ["lol"]\n' + "".join(f"x{i}: &{chr(97 + i)} [{', '.join([f'*{chr(96 + i)}'] * 9)}]\n"
+                                   for i in range(1, 9))
+     + "wavelengths: {start_nm: 360, end_nm: 830, step_nm: 5}\n", "its aliases expand it"),
+    ("x: " + "[" * 3000 + "]" * 3000 + "\nwavelengths: {start_nm: 360, end_nm: 830, step_nm: 5}\n",
+     "nested more than 64 levels deep"),
+    ("wavelengths: {start_nm: 360, end_nm: 830, step_nm: 5}\nwavelengths: {start_nm: 400}\n",
+     "key 'wavelengths' given twice"),
 ]
 
 
@@ -142,7 +156,7 @@ def test_bad_option_is_refused_naming_it(args, named, workdir, root):
     assert listing(workdir) == before  # nothing written
 
 
-@pytest.mark.parametrize("content, named", BAD_CONFIGS, ids=[c for c, _ in BAD_CONFIGS])
+@pytest.mark.parametrize("content, named", BAD_CONFIGS, ids=[c[:60] for c, _ in BAD_CONFIGS])
 def test_bad_config_is_refused_naming_file_and_key(content, named, workdir, root):
     (workdir / "bad.yaml").write_text(content)
     before = listing(workdir)

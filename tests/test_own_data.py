@@ -1,6 +1,7 @@
 """The user's own spectra in the workflow: `materials.<Name>: {source: file, path, units}`."""
 
 import copy
+import re
 
 import numpy as np
 import pytest
@@ -26,10 +27,12 @@ def with_material(config, **entry):
 
 
 @pytest.mark.parametrize("text, units", [(NM, "nm"), (UM, "um"), (REFLECTANCE, "nm")])
-def test_own_file_is_accepted(config, tmp_path, text, units):
-    path = tmp_path / "mine.csv"
-    path.write_text(text)
-    c = with_material(config, path=str(path), units=units, reference="my lab, 2026")
+def test_own_file_is_accepted(config, tmp_path, monkeypatch, text, units):
+    monkeypatch.chdir(tmp_path)  # the project folder: the file's path is relative to it
+    (tmp_path / "spectra").mkdir()  # (every spectrum pending: made by the jobs)
+    (tmp_path / "data").mkdir()
+    (tmp_path / "data" / "mine.csv").write_text(text)
+    c = with_material(config, path="data/mine.csv", units=units, reference="my lab, 2026")
     validate_schema(c)
     check_config(c)
 
@@ -43,11 +46,13 @@ def test_own_file_is_accepted(config, tmp_path, text, units):
     (UM.replace("0.85", "850"), "um", {}, "micrometres"),
     (NM.replace("850,", "700,"), "nm", {}, "the grid 360-830 nm leaves the data of materials.Mine"),
 ])
-def test_bad_own_file_is_named(config, tmp_path, text, units, entry, says):
+def test_bad_own_file_is_named(config, tmp_path, monkeypatch, text, units, entry, says):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "spectra").mkdir()
     path = tmp_path / "mine.csv"
     if text is not None:
         path.write_text(text)
-    c = with_material(config, path=str(path), units=units)
+    c = with_material(config, path="mine.csv", units=units)
     c["materials"]["Mine"].update(entry)
     with pytest.raises(Exception) as err:
         validate_schema(c)
@@ -62,6 +67,44 @@ def test_own_file_inside_spectra_is_refused(config, tmp_path, monkeypatch):
     c = with_material(config, path="spectra/Mine.csv", units="nm")
     with pytest.raises(ConfigError, match=r"materials\.Mine\.path: .*outside spectra/"):
         check_config(c, check_spectra=False)
+
+
+#: where an own file may not lie: (path written in config.yaml, how it is made in the folder
+#: tmp_path/outside beside the project tmp_path/project, what the message says)
+LEAVING = [
+    ("../outside/mine.csv", None, r"'\.\./outside/mine\.csv' leaves the project folder"),
+    ("data/../../outside/mine.csv", None, r"leaves the project folder"),
+    ("ABSOLUTE", None, r"is absolute; give a path inside the project folder"),
+    ("data/link.csv", "data/link.csv", r"'data/link\.csv' leaves the project folder"),
+    ("linked/mine.csv", "linked", r"'linked/mine\.csv' leaves the project folder"),
+]
+
+
+@pytest.mark.parametrize("value, link, says", LEAVING, ids=["dotdot", "dotdot-inside",
+                                                           "absolute", "file-link", "folder-link"])
+def test_own_file_outside_the_project_is_refused_unread(config, tmp_path, monkeypatch, value,
+                                                        link, says):
+    """README: the path is relative to the project folder. One leaving it (.., absolute, a
+    symbolic link to a file or folder outside) is refused before it is read: the message names
+    the key and never shows a line of the file (its header here is a secret)."""
+    project, outside = tmp_path / "project", tmp_path / "outside"
+    (project / "data").mkdir(parents=True)
+    outside.mkdir()
+    (outside / "mine.csv").write_text("secret-header-line,x\n1,2\n")
+    if link == "data/link.csv":
+        (project / link).symlink_to(outside / "mine.csv")
+    elif link == "linked":
+        (project / link).symlink_to(outside)
+    if value == "ABSOLUTE":
+        value = str(outside / "mine.csv")
+    monkeypatch.chdir(project)
+    c = with_material(config, path=value, units="nm")
+    validate_schema(c)
+    with pytest.raises(ConfigError) as err:
+        check_config(c)
+    message = str(err.value)
+    assert re.search(rf"^config\.yaml: materials\.Mine\.path: .*{says}", message, re.M), message
+    assert "secret" not in message and len(message.splitlines()) == 1, message
 
 
 def test_micrometre_file_reads_as_the_nanometre_one(tmp_path, grid):

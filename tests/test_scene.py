@@ -178,7 +178,7 @@ def test_load_scene_reads_files_and_applies_overrides(root, tmp_path, spectra):
         load_scene(tmp_path / "missing.yaml")
     bad = tmp_path / "bad.yaml"
     bad.write_text("camera: [unclosed")
-    with pytest.raises(SceneError, match="bad.yaml: not valid YAML"):
+    with pytest.raises(SceneError, match=r"bad.yaml, line 1, column \d+: not valid YAML"):
         load_scene(bad)
     bad.write_text("- just\n- a list\n")
     with pytest.raises(SceneError, match="a scene must be a mapping"):

@@ -82,6 +82,25 @@ def _config_error(args, message):
     return SystemExit(f"reflectance: --config {args.config}: {message}")
 
 
+def _check_size(key, value, dims, streamed=False):
+    """SystemExit with one line if the arrays of a size given here cannot fit or take more than
+    an hour (:func:`reflectance.io.limits.size_problem`), before anything is made."""
+    from reflectance.io.limits import size_problem
+
+    problem = size_problem(key, value, dims, streamed=streamed)
+    if problem is not None:
+        raise SystemExit(f"reflectance: {problem}")
+
+
+def _wavelength_points(start, end, step):
+    """Points of the grid (counted, not made); 1 for a grid wavelength_grid refuses."""
+    from reflectance.io.limits import grid_points
+
+    if not all(math.isfinite(v) for v in (start, end, step)) or step <= 0:
+        return 1
+    return grid_points(max(end - start, 0.0), step)
+
+
 def _grid_and_colour(args):
     """Wavelength grid: from --config if it exists (its ``wavelengths``), else the built-in one."""
     from reflectance.optics.spectra import wavelength_grid
@@ -89,15 +108,12 @@ def _grid_and_colour(args):
     grid = {"start_nm": 360, "end_nm": 830, "step_nm": 5}
     path = Path(args.config)
     if path.exists():
-        import yaml
+        from reflectance.io.yamlfile import YAMLFileError, read_yaml
 
-        try:
-            document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
-        except (OSError, UnicodeDecodeError) as err:
-            raise _config_error(args, f"cannot read: {getattr(err, 'strerror', None) or err}") \
-                from None
-        except yaml.YAMLError as err:
-            raise _config_error(args, f"not valid YAML: {' '.join(str(err).split())}") from None
+        try:  # bounded (aliases, depth, size): reflectance.io.yamlfile
+            document = read_yaml(path, encoding="utf-8-sig")
+        except YAMLFileError as err:
+            raise SystemExit(f"reflectance: --config {err}") from None
         if not isinstance(document, dict) or "wavelengths" not in document:
             if args.config == DEFAULT_CONFIG and isinstance(document, dict):
                 document = {"wavelengths": grid}  # someone else's config.yaml: the built-in grid
@@ -115,6 +131,9 @@ def _grid_and_colour(args):
         if grid["start_nm"] >= grid["end_nm"]:
             raise _config_error(args, f"wavelengths: start_nm {grid['start_nm']} must be below "
                                       f"end_nm {grid['end_nm']}")
+        _check_size(f"--config {args.config}: wavelengths.step_nm", f"{grid['step_nm']:g} nm",
+                    [(_wavelength_points(grid["start_nm"], grid["end_nm"], grid["step_nm"]),
+                      "wavelengths"), (1025, "Fresnel table cosines")])
     elif args.config != DEFAULT_CONFIG:
         raise _config_error(args, "no such file")
     try:
@@ -668,6 +687,17 @@ def _run_bench(args):
 
     if min(args.sizes) < 1 or args.runs < 1 or args.supersample < 1:
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")
+    from reflectance.render.memory import render_size_problem
+
+    for size in args.sizes:  # the renders (adaptive or not: the larger estimate)
+        problem = render_size_problem(f"--sizes {size}, --supersample {args.supersample}", size,
+                                      size, args.supersample, adaptive=args.adaptive != "off")
+        if problem is not None:
+            raise SystemExit(f"reflectance: {problem}")
+    for step in args.grids:  # each grid shades the --grid-size image, brute force too
+        _check_size("--grids", f"{step:g} nm at --grid-size {args.grid_size}",
+                    [(_wavelength_points(360.0, 830.0, step), "wavelengths"),
+                     (args.grid_size**2 * args.supersample**2, "samples")], streamed=True)
     spectra_dirs = _spectra_dirs(args)
     try:
         scene = args.scene or _default_bench_scene()
@@ -848,6 +878,10 @@ def _run_audit(args):
                 "average_range_nm": args.average_range or (380.0, 780.0),
                 "angles": angles.tolist(), "methods": methods,
                 "command": _command_line(args)}
+    start, end, step = settings["wavelengths"]
+    _check_size("--wavelengths", f"{step:g} nm from {start:g} to {end:g} nm",
+                [(_wavelength_points(start, end, step), "wavelengths"),
+                 (len(angles), "angles"), (len(methods), "methods")])
     try:
         from reflectance.colour.display import display_space
 

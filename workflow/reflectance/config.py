@@ -3,7 +3,8 @@
 The checks run in stages, each only if the previous found nothing (a later stage assumes the
 structure an earlier one guarantees), and each names the key of every problem it finds:
 
-1. :func:`read_config`: YAML syntax and duplicated keys, with their line numbers;
+1. :func:`read_config`: YAML syntax and duplicated keys, with their line numbers, and a document
+   that grows when read (aliases, nesting, size), refused before it is built;
 2. :func:`unknown_keys`: every mapping is closed by the schema (``additionalProperties: false``),
    so a key the schema does not name is a typo: reported with a did-you-mean suggestion. The
    schema is the single source of the allowed keys; the few mappings whose keys are keyword
@@ -34,11 +35,15 @@ from pathlib import Path
 
 import yaml
 
-from reflectance.io.paths import package_data
+from reflectance.io.limits import grid_points, physical_memory_bytes, size_problem
+from reflectance.io.paths import package_data, project_file
+from reflectance.render.memory import (MESH_ELEMENTS_PER_VERTEX, render_memory_bytes,
+                                       render_size_problem)
 
 __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unknown_keys",
            "non_finite_numbers", "validate_schema", "check_config", "load_config",
-           "wavelengths_from_config", "render_sizes", "render_memory_bytes"]
+           "wavelengths_from_config", "render_sizes", "render_memory_bytes", "size_problems",
+           "physical_memory_bytes"]
 
 #: The JSON schema of config.yaml (also used by the Snakefile's ``validate()``).
 SCHEMA_PATH = Path(__file__).resolve().parents[1] / "schemas" / "config.schema.json"
@@ -71,69 +76,19 @@ def _raise(problems, source=SOURCE):
 # 1. YAML: syntax errors and duplicated keys with their line numbers
 # --------------------------------------------------------------------------------------------
 
-class _UniqueKeys:
-    """A safe loader's mappings, refusing a key given twice in one mapping (PyYAML keeps the
-    last)."""
-
-    def construct_mapping(self, node, deep=False):
-        seen = {}
-        for key_node, _ in node.value:
-            key = self.construct_object(key_node, deep=deep)
-            mark = key_node.start_mark
-            try:
-                first = seen.setdefault(key, (mark.line, mark.column))
-            except TypeError:  # an unhashable key: PyYAML's own error follows
-                continue
-            if first != (mark.line, mark.column):  # also twice on one line: {x: 1, x: 2}
-                raise yaml.constructor.ConstructorError(
-                    None, None, f"key {key!r} given twice (first on line {first[0] + 1})", mark)
-        return super().construct_mapping(node, deep=deep)
-
-
-class _UniqueKeyLoader(_UniqueKeys, yaml.SafeLoader):
-    """PyYAML's pure-Python safe loader: its syntax errors name the character found."""
-
-
-#: libyaml's parser where PyYAML has it (ten times faster; every parse of the workflow reads
-#: config.yaml), with the same mappings and key lines.
-_FastUniqueKeyLoader = (type("_FastUniqueKeyLoader", (_UniqueKeys, yaml.CSafeLoader), {})
-                        if hasattr(yaml, "CSafeLoader") else _UniqueKeyLoader)
-
-
-def _load_unique(text, loader_class):
-    loader = loader_class(text)  # a safe loader: data only
-    try:
-        return loader.get_single_data()
-    finally:
-        loader.dispose()
-
-
 def read_config(path="config.yaml"):
-    """The mapping in a YAML config file; ConfigError naming the line of a syntax error."""
+    """The mapping in a YAML config file; ConfigError naming the line of a syntax error or of a
+    key given twice, or a document that grows when read (aliases, depth, size:
+    :func:`reflectance.io.yamlfile.read_yaml`, whose bounds hold before anything is built)."""
+    from reflectance.io.yamlfile import YAMLFileError, read_yaml
+
     path = Path(path)
     if not path.is_file():
         raise ConfigError(f"no config file at {path}")
     try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as err:
-        raise ConfigError(f"{path}: not UTF-8 text ({err.reason} at byte {err.start})") from None
-    try:
-        try:
-            config = _load_unique(text, _FastUniqueKeyLoader)
-        except yaml.YAMLError:
-            # the pure-Python parser decides (as before, and as Snakemake reads the file); its
-            # message names what it found ('\t', the alias)
-            config = _load_unique(text, _UniqueKeyLoader)
-    except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
-        where = f", line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        what = getattr(err, "problem", None) or str(err).replace("\n", " ")
-        context, start = getattr(err, "context", None), getattr(err, "context_mark", None)
-        if context and start is not None and start is not mark:
-            what += f" ({context} that starts on line {start.line + 1}, column {start.column + 1})"
-        elif context:
-            what += f" ({context})"
-        raise ConfigError(f"{path}{where}: not valid YAML: {what}") from None
+        config = read_yaml(path)
+    except YAMLFileError as err:
+        raise ConfigError(str(err)) from None
     if config is None:
         return {}
     if not isinstance(config, dict):
@@ -659,89 +614,146 @@ def _texture_values(config):
 
 # --- renders: their sizes and memory ---------------------------------------------------------
 
-#: Peak resident memory (bytes) of ``reflectance render`` of the Fig. 6b vase, square (side in
-#: pixels), 2 x 2 samples per pixel, two lights, its EXR and PNG written: VTK, the mesh and the
-#: images included (README, "Speed and memory"; measured 2026-12-02 with ``/usr/bin/time``).
-RENDER_PEAK_MEMORY = {256: 606904 * 2**10, 512: 835764 * 2**10, 1024: 855748 * 2**10,
-                      2048: 1142600 * 2**10, 4096: 1557504 * 2**10}
-
-
-def render_memory_bytes(width, height, supersample, whole=False):
-    """Estimated peak memory (bytes) of rendering an image of this size and writing it.
-
-    An image of at most :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples is traced
-    in one pass, and its per-sample arrays (ID buffer, float64 positions, normals, the shadow
-    pass's candidates) set the peak: a line in the number of samples through the measured 256
-    and 512 px peaks (:data:`RENDER_PEAK_MEMORY`; 0.51 GiB fixed, 298 bytes per sample); so is
-    any image of a figure that traces it ``whole`` besides its render (C&T Fig. 8's part table,
-    Blinn's light sweep). A larger image is traced in bands of at most
-    :data:`~reflectance.render.camera.TILE_SAMPLES` samples, so what grows is the image itself
-    (XYZ, display, EXR and PNG buffers): a line in the number of pixels through the 2048 and
-    4096 px peaks (0.96 GiB fixed, 34 bytes per pixel), and never below the one-pass line at its
-    largest image, so that the estimate grows with the image across the two (it over-estimates
-    the 1024 px peak: 1.09 against 0.82 GiB).
-    """
-    from reflectance.render.camera import SINGLE_TILE_SAMPLES
-
-    def line(x0, m0, x1, m1, x):
-        return m0 + (m1 - m0) * (x - x0) / (x1 - x0)
-
-    def one_pass(samples):
-        return line(256**2 * 4, m[256], 512**2 * 4, m[512], samples)
-
-    m, pixels = RENDER_PEAK_MEMORY, width * height
-    samples = pixels * supersample**2
-    if whole or samples <= SINGLE_TILE_SAMPLES:
-        return one_pass(samples)
-    return max(one_pass(SINGLE_TILE_SAMPLES), line(2048**2, m[2048], 4096**2, m[4096], pixels))
-
-
-def physical_memory_bytes():
-    """This machine's physical memory (None where the system does not tell)."""
-    try:
-        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
-    except (ValueError, OSError, AttributeError):
-        return None
-
-
 #: the cameras whose figures also trace their whole image at once, however large
 #: (:func:`render_memory_bytes`'s ``whole``): C&T Fig. 8's part table, Blinn's light sweep
 WHOLE_IMAGE_TRACES = ("figures.cook_torrance_1982.fig8.camera", "figures.blinn_1977.fig7_sweep")
 
 
+def _refines(camera, supersample):
+    """Whether a camera mapping's adaptive refinement adds samples (scene schema's
+    ``camera.adaptive``: on, and finer than the camera's own n x n)."""
+    adaptive = camera.get("adaptive") or {}
+    return bool(adaptive.get("enabled")) and adaptive.get("supersample", 8) > supersample
+
+
 def render_sizes(config):
-    """(keys, width, height, supersample, whole) of every render of the figures, keys naming the
-    size; ``whole``: the figure traces its whole image at once (:data:`WHOLE_IMAGE_TRACES`)."""
+    """(keys, width, height, supersample, whole, adaptive) of every render of the figures, keys
+    naming the size; ``whole``: the figure traces its whole image at once
+    (:data:`WHOLE_IMAGE_TRACES`); ``adaptive``: its camera refines adaptively."""
     figures = config["figures"]
     ct, b77 = figures["cook_torrance_1982"], figures["blinn_1977"]
     sizes = [(key, ".width, .height, .supersample", cam["width"], cam["height"],
-              cam["supersample"]) for key, cam in _cameras(config)]
+              cam["supersample"], cam) for key, cam in _cameras(config)]
     vi = ct["fig7"]["vase_image"]
     sizes.append(("figures.cook_torrance_1982.fig7.vase_image", ".width, .height, .supersample",
-                  vi["width"], vi["height"], vi["supersample"]))
+                  vi["width"], vi["height"], vi["supersample"], {**ct["fig6"]["camera"], **vi}))
     sweep, cam = b77["fig7_sweep"], b77["fig7"]["camera"]
     sizes.append(("figures.blinn_1977.fig7_sweep", ".size, .supersample", sweep["size"],
                   max(1, round(sweep["size"] * cam["height"] / cam["width"])),
-                  sweep["supersample"]))
-    return [(f"{key}{fields}", w, h, ss, key in WHOLE_IMAGE_TRACES)
-            for key, fields, w, h, ss in sizes]
+                  sweep["supersample"], cam))
+    return [(f"{key}{fields}", w, h, ss, key in WHOLE_IMAGE_TRACES, _refines(c, ss))
+            for key, fields, w, h, ss, c in sizes]
 
 
 def _render_memory(config, memory=None):
-    from reflectance.render.camera import MAX_BUFFER_SIDE
-
-    memory = physical_memory_bytes() if memory is None else memory
     problems = []
-    for keys, width, height, ss, whole in render_sizes(config):
-        if max(width, height) * ss > MAX_BUFFER_SIDE:
-            problems.append(f"{keys}: the ID buffer would be {width * ss} x {height * ss} pixels; "
-                            f"at most {MAX_BUFFER_SIDE} per side: lower the size or supersample")
-            continue
-        need = render_memory_bytes(width, height, ss, whole)
-        if memory is not None and need > memory:
-            problems.append(f"{keys}: a {width} x {height} render with {ss} x {ss} samples needs "
-                            f"about {need / 2**30:.1f} GiB; this machine has "
-                            f"{memory / 2**30:.1f} GiB: lower the size or supersample")
+    for keys, width, height, ss, whole, adaptive in render_sizes(config):
+        problem = render_size_problem(keys, width, height, ss, whole, adaptive, memory)
+        if problem is not None:
+            problems.append(problem)
+    return problems
+
+
+# --- every size that sets an array or a loop: bounded before any work ------------------------
+
+def _grid_sizes(config):
+    """(key, value as given, dims[, streamed]) of every step and count of config.yaml that sets
+    an array or a loop beyond what the schema bounds: the size's own points first, then the
+    other dimensions of the arrays it makes (:func:`reflectance.io.limits.size_problem`;
+    ``streamed``: a loop over them, whose time only counts). Counted from the numbers alone:
+    nothing is made."""
+    figures, audits = config["figures"], config.get("audits", {})
+    ct, b77, lec, art = (figures["cook_torrance_1982"], figures["blinn_1977"],
+                         figures["lecture"], figures["article"])
+    w = config["wavelengths"]
+    wl = grid_points(max(w["end_nm"] - w["start_nm"], 0.0), w["step_nm"])
+    # the colour tables and every Fresnel figure: wavelengths x the renderer's table of c
+    yield "wavelengths.step_nm", f"{w['step_nm']:g} nm", [(wl, "wavelengths"),
+                                                          (1025, "Fresnel table cosines")]
+    st, fig5 = ct["fig5"]["strip"], ct["fig5"]
+    for name, span in (("step_deg", st["fine_from_deg"]),
+                       ("fine_step_deg", 90.0 - st["fine_from_deg"])):
+        yield (f"figures.cook_torrance_1982.fig5.strip.{name}", f"{st[name]:g} degrees",
+               [(grid_points(max(span, 0.0), st[name]), "angles"), (len(fig5["rows"]), "rows"),
+                (wl, "wavelengths")])
+    yield ("figures.cook_torrance_1982.fig5.surface_angle_step_deg",
+           f"{fig5['surface_angle_step_deg']:g} degrees",
+           [(grid_points(90.0, fig5["surface_angle_step_deg"]), "angles"), (wl, "wavelengths")])
+    f3 = ct["fig3"]  # one grid of two steps: one line naming both
+    yield ("figures.cook_torrance_1982.fig3.alpha_step_deg, .azimuth_step_deg",
+           f"{f3['alpha_step_deg']:g} and {f3['azimuth_step_deg']:g} degrees",
+           [(grid_points(90.0, f3["alpha_step_deg"]), "polar angles"),
+            (grid_points(360.0, f3["azimuth_step_deg"]), "azimuths"), (len(f3["m"]), "slopes m")])
+    step = b77["distributions"]["alpha_step_deg"]
+    yield ("figures.blinn_1977.distributions.alpha_step_deg", f"{step:g} degrees",
+           [(grid_points(90.0, step), "angles"), (3, "distributions")])
+    step = lec["distributions"]["alpha_step_deg"]
+    yield ("figures.lecture.distributions.alpha_step_deg", f"{step:g} degrees",
+           [(grid_points(90.0, step), "angles"), (max(1, len(lec["distributions"]["m"])),
+                                                  "slopes m")])
+    lobes = lec["brdf_lobes"]
+    yield ("figures.lecture.brdf_lobes.polar_step_deg", f"{lobes['polar_step_deg']:g} degrees",
+           [(grid_points(180.0, lobes["polar_step_deg"]), "angles"),
+            (len(lobes["models"]), "models")])
+    fr = lec["fresnel"]
+    yield ("figures.lecture.fresnel.angle_step_deg", f"{fr['angle_step_deg']:g} degrees",
+           [(grid_points(90.0, fr["angle_step_deg"]), "angles"),
+            (len(fr.get("materials", [])) + len(fr.get("dielectrics", {})), "materials"),
+            (wl, "wavelengths")])
+    sm = lec["shadowing_masking"]
+    yield ("figures.lecture.shadowing_masking.angle_step_deg",
+           f"{sm['angle_step_deg']:g} degrees",
+           [(grid_points(89.0, sm["angle_step_deg"]), "angles"),
+            (sm["n_samples"], "surface samples")], True)
+    ad = art["distributions"]
+    yield ("figures.article.distributions.polar_step_deg", f"{ad['polar_step_deg']:g} degrees",
+           [(grid_points(180.0, ad["polar_step_deg"]), "angles"), (len(ad["models"]), "models")])
+    if "fresnel_atlas" in audits:
+        at = audits["fresnel_atlas"]
+        yield ("audits.fresnel_atlas.angle_step_deg", f"{at['angle_step_deg']:g} degrees",
+               [(grid_points(90.0, at["angle_step_deg"], 0), "angles"),
+                (len(at["materials"]), "materials"), (len(at["methods"]), "methods"),
+                (wl, "wavelengths")])
+    if "spectral_sampling" in audits:
+        sp = audits["spectral_sampling"]
+        lo, hi = sp["range_nm"]
+        for key, value in ([("reference_step_nm", sp["reference_step_nm"])]
+                           + [(f"steps_nm[{i}]", v) for i, v in enumerate(sp["steps_nm"])]):
+            yield (f"audits.spectral_sampling.{key}", f"{value:g} nm",
+                   [(grid_points(max(hi - lo, 0.0), value), "wavelengths"),
+                    (len(sp["materials"]), "materials"), (1025, "Fresnel table cosines")])
+    if "database" in audits:
+        db = audits["database"]
+        lo, hi = db["range_nm"]
+        db_wl = grid_points(max(hi - lo, 0.0), db["step_nm"])
+        db_angles = grid_points(90.0, db["angle_step_deg"], 0)
+        per_dataset = [(len(db["methods"]), "methods"), (1, "dataset at a time")]
+        yield ("audits.database.step_nm, .angle_step_deg",
+               f"{db['step_nm']:g} nm and {db['angle_step_deg']:g} degrees",
+               [(db_wl, "wavelengths"), (db_angles, "angles"), *per_dataset])
+        bins = db.get("figures", {}).get("failure_angle", {}).get("bin_deg")
+        if bins is not None:
+            yield ("audits.database.figures.failure_angle.bin_deg", f"{bins:g} degrees",
+                   [(grid_points(90.0, bins), "bins"), (len(db["methods"]), "methods")])
+    vase = ct["fig6"]["vase"]
+    yield ("figures.cook_torrance_1982.fig6.vase.n_theta, .n_profile_samples",
+           f"{vase['n_theta']} x {vase['n_profile_samples']}",
+           [(vase["n_theta"] * vase["n_profile_samples"], "vertices"),
+            (MESH_ELEMENTS_PER_VERTEX, "values per vertex")])
+
+
+def size_problems(config, memory=None):
+    """One line per size of config.yaml whose arrays cannot fit in ``memory`` bytes (default:
+    this machine's) or take more than :data:`reflectance.io.limits.MAX_SECONDS`, naming the key
+    and the estimate; checked before anything is made (a grid of a billion points is counted,
+    not made)."""
+    problems = []
+    for key, value, dims, *streamed in _grid_sizes(config):
+        problem = size_problem(key, value, dims, memory, streamed=bool(streamed and streamed[0]))
+        if problem is not None:
+            problems.append(problem)
+            if key == "wavelengths.step_nm":
+                break  # the other sizes multiply by it: said once, at its cause
     return problems
 
 
@@ -828,8 +840,9 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
 
     - the illuminant and observer are names colour-science knows;
     - every material a figure names is defined under ``materials``;
-    - a ``source: file`` material's file exists and reads (columns, units, rows), and is not
-      the CSV the workflow writes from it;
+    - a ``source: file`` material's file lies inside the project folder (the parent of
+      ``spectra_dir``; no ``..``, absolute path or symbolic link leading out), exists and reads
+      (columns, units, rows), and is not the CSV the workflow writes from it;
     - the rules between keys of :func:`_cross_field`, Munsell notations, texture parameters;
     - every key a figure's definition declares it reads is in the config (its rule's params);
     - the vases README's strip names (``readme.strip.fig7_vases``) are vases of Fig. 7;
@@ -839,13 +852,20 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     - (``check_spectra``) the wavelength grid is ordered and inside every material's data range
       (taken from the data source, see :func:`reflectance.optics.spectra.coverage_nm`);
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
-      fits in ``memory`` bytes (default: this machine's physical memory).
+      fits in ``memory`` bytes (default: this machine's physical memory), adaptive refinement
+      included.
+
+    Before all of these, every size that sets an array or a loop (:func:`size_problems`: steps,
+    counts, grids) is counted against ``memory`` and an hour of work, so that no later check
+    makes an array it cannot hold.
     """
     # colour-science's names, read from the tables it wrote once (reflectance.colour.tables:
     # its own lookup rules, no import of colour-science); the observer must be one of the
     # standard observers the colour path uses (colorimetry accepts no other CMFS)
     from reflectance.colour import tables
 
+    # first the sizes, counted: every later check may make a grid of them
+    _raise(size_problems(config, memory))
     problems = []
     c = config.get("colour", {})
     if tables.resolve_illuminant(c.get("illuminant")) is None:
@@ -869,7 +889,21 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
             problems.append(
                 f"{_key(path)}: unknown material {name!r}; known: {', '.join(sorted(known))}"
             )
+    # the user's own spectrum files: inside the project folder (README), refused before any
+    # is read (reflectance.io.paths: no '..', no absolute path, no symbolic link leading out),
+    # so that no message ever shows a line of a file outside it
+    project = Path(spectra_dir).parent
+    outside = set()
     for name, entry in sorted(known.items()):
+        if entry.get("source") == "file":
+            try:
+                project_file(entry["path"], f"materials.{name}.path", project)
+            except ValueError as err:
+                problems.append(str(err))
+                outside.add(name)
+    for name, entry in sorted(known.items()):
+        if name in outside:
+            continue
         if entry.get("source") == "file" and Path(entry["path"]).resolve() == (
                 Path("spectra") / f"{name}.csv").resolve():
             problems.append(f"materials.{name}.path: {entry['path']} is the file the workflow "

@@ -431,7 +431,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
 
     Ours is ``python -m reflectance render SCENE.yaml -o OUT.exr --quiet`` on ``document`` (a
     scene document as :func:`crosscheck_scene` gives it; table shading, ``spectra_dir`` and
-    mesh paths made absolute against ``base_dir``) at ``size`` x ``size`` pixels with
+    mesh and material files copied from ``base_dir``) at ``size`` x ``size`` pixels with
     ``supersample`` x ``supersample`` samples (its material files copied beside it), as the
     in-process rungs; Mitsuba's is
     :mod:`reflectance.bench.mitsuba_command` on ``scene`` (exported by
@@ -457,15 +457,16 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     ours_doc.pop("_source", None)
     ours_doc["camera"].update(width=int(size), height=int(size), supersample=int(supersample))
     ours_doc["spectral"] = "table"  # as the in-process rungs (load_bench_scene's spectral)
-    for obj in ours_doc.get("objects", []):  # a mesh file relative to the scene file's folder
-        geometry = obj.get("geometry", {})
-        if geometry.get("type") == "mesh" and base_dir is not None:
-            geometry["path"] = str((Path(base_dir) / geometry["path"]).resolve())
     with tempfile.TemporaryDirectory(prefix="reflectance-commands-") as folder:
         folder = Path(folder)
         (folder / "scene.yaml").write_text(yaml.safe_dump(ours_doc, sort_keys=False))
-        # a material file must stay inside the scene file's folder: copied there, as it lies
+        # a mesh or material file must stay inside the scene file's folder (reflectance.io.paths;
+        # the scene was loaded, so each is): copied there, as it lies
         for obj in ours_doc.get("objects", []):
+            geometry = obj.get("geometry", {})
+            if geometry.get("type") == "mesh":
+                (folder / geometry["path"]).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(Path(base_dir or ".") / geometry["path"], folder / geometry["path"])
             for material in [obj.get("material", {}), *obj.get("parts", {}).values()]:
                 if "file" in material:
                     (folder / material["file"]).parent.mkdir(parents=True, exist_ok=True)

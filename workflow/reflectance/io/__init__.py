@@ -15,7 +15,7 @@ from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
 _MODULES = ("atomic", "cache", "captions", "figures", "images", "paths", "progress", "provenance",
-            "tables")
+            "limits", "tables", "yamlfile")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -53,6 +53,12 @@ _EXPORTS = {
     "file_inside": "paths",
     "project_file": "paths",
     "check_name": "paths",
+    "YAMLFileError": "yamlfile",
+    "size_problem": "limits",
+    "grid_points": "limits",
+    "physical_memory_bytes": "limits",
+    "read_yaml": "yamlfile",
+    "load_yaml_text": "yamlfile",
 }
 
 __getattr__, __dir__, __all__ = attach(__name__, _MODULES, _EXPORTS)

@@ -391,14 +391,12 @@ def errata_rows(path):
     """The errata file's texts and rows, checked: every row holds only text keys, has a
     registered id, and names one of the file's texts. Raises :class:`ErrataError` naming the file
     and the row otherwise."""
-    import yaml
+    from reflectance.io.yamlfile import YAMLFileError, read_yaml
 
-    try:
-        with open(path, encoding="utf-8-sig") as stream:
-            data = yaml.safe_load(stream)
-    except (OSError, UnicodeDecodeError, yaml.YAMLError) as err:
-        raise ErrataError(f"{path}: cannot read the errata rows: "
-                          f"{' '.join(str(err).split())}") from None
+    try:  # bounded (aliases, depth, size), no key twice
+        data = read_yaml(path, encoding="utf-8-sig")
+    except YAMLFileError as err:
+        raise ErrataError(f"cannot read the errata rows: {err}") from None
     if not isinstance(data, dict) or set(data) != {"texts", "rows"}:
         keys = sorted(data) if isinstance(data, dict) else type(data).__name__
         raise _bad(path, "top level", f"must be a mapping with exactly 'texts' and 'rows', "

@@ -41,7 +41,6 @@ import copy
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
@@ -183,7 +182,9 @@ def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, sp
     """
     if not isinstance(config, dict):
         path = Path(config or CONFIG_PATH)
-        config, spectra_default = yaml.safe_load(path.read_text()), path.parent / "spectra"
+        from reflectance.io.yamlfile import read_yaml
+
+        config, spectra_default = read_yaml(path), path.parent / "spectra"
     else:
         spectra_default = Path("spectra")
     fig6 = config["figures"]["cook_torrance_1982"]["fig6"]

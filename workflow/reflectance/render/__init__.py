@@ -6,7 +6,8 @@ camera and lights; idbuffer (VTK chooses the triangle), samples, visibility, sha
 pixels get more samples); tracing (a band's visibility and shadows, and the kept trace);
 session (what one render holds while it runs); integrator (shade and box-filter band by band,
 refine); rgb (a scene also rendered as a three-channel RGB renderer would); scene (scene
-files); pipeline (render, write); composite (grids with one exposure). The bench of its speed
+files); memory (a render's memory, estimated from its size before it starts); pipeline
+(render, write); composite (grids with one exposure). The bench of its speed
 and accuracy, and the path tracer's cross-check, are :mod:`reflectance.bench`.
 
 Public names are loaded on first use (``from reflectance.render import name``), so importing
@@ -16,7 +17,8 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("adaptive", "camera", "composite", "idbuffer", "integrator", "lights", "parallel",
+_MODULES = ("adaptive", "camera", "composite", "idbuffer", "integrator", "lights", "memory",
+            "parallel",
             "pipeline", "primitives", "rays", "rgb", "samples", "scene", "session", "shading",
             "shadows", "tracing", "visibility")
 
@@ -38,6 +40,8 @@ _EXPORTS = {
     "part_pixels": "composite",
     "MAX_TRIANGLES": "idbuffer",
     "MAX_BUFFER_SIDE": "camera",
+    "render_memory_bytes": "memory",
+    "render_size_problem": "memory",
     "encode_ids": "idbuffer",
     "decode_ids": "idbuffer",
     "id_buffer": "idbuffer",

@@ -41,6 +41,9 @@ from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
 from reflectance.io.paths import file_inside, package_data
+from reflectance.io.yamlfile import YAMLFileError, read_yaml
+from reflectance.io.limits import grid_points, size_problem
+from reflectance.render.memory import MESH_ELEMENTS_PER_VERTEX, render_size_problem
 
 __all__ = [
     "SceneError",
@@ -55,6 +58,8 @@ __all__ = [
     "load_scene",
     "write_scene_file",
     "constant_index_material",
+    "size_problems",
+    "GEOMETRY_VERTICES",
 ]
 
 SCENE_SCHEMA_PATH = package_data("scene.schema.yaml")
@@ -193,7 +198,8 @@ GEOMETRY_BUILDERS = {
                                                               g["n_u"], g["n_v"], g["center"]),
     "plane": lambda g, base: plane(g["center"], g["normal"], g["size"], g["resolution"],
                                    g.get("u_direction")),
-    "mesh": lambda g, base: mesh_from_file(Path(base) / g["path"], g["feature_angle"]),
+    "mesh": lambda g, base: mesh_from_file(
+        Path(base) / file_inside(g["path"], base, "the scene file's folder"), g["feature_angle"]),
     "watch": lambda g, base: watch(**g["parameters"]),
 }
 """Scene geometry types and how each is built from its keys (``base``: the scene's folder)."""
@@ -461,6 +467,56 @@ def _geometry(check, path, g, transform, base):
                      _rotation(transform["rotation_deg"]))
 
 
+#: vertices of a geometry type, from its validated keys (the mesh it builds; a mesh file's and a
+#: watch's are bounded where they are read or by their own parameters' schema)
+GEOMETRY_VERTICES = {
+    "sphere": lambda g: g["n_theta"] * g["n_phi"],
+    "vase": lambda g: 2 * g["n_theta"] * (g["n_profile_samples"] + g["n_rim_samples"]),
+    "torus": lambda g: g["n_u"] * g["n_v"],
+    "superellipsoid": lambda g: g["n_u"] * g["n_v"],
+    "plane": lambda g: (g["resolution"][0] + 1) * (g["resolution"][1] + 1),
+}
+
+
+def size_problems(doc, memory=None):
+    """One line (key: what it makes, the estimate) per size of a validated scene mapping that
+    cannot fit in ``memory`` bytes (default: this machine's) or would take more than an hour
+    (:func:`reflectance.io.limits.size_problem`): the wavelength grid with the Fresnel table
+    (and with every sample, brute force), each object's mesh, and the render itself, adaptive
+    refinement included (:func:`reflectance.render.memory.render_size_problem`). Counted from
+    the numbers: nothing is made."""
+    problems = []
+    w, c = doc["wavelengths"], doc["camera"]
+    n_wl = grid_points(max(w["end_nm"] - w["start_nm"], 0.0), w["step_nm"])
+    given = f"{w['step_nm']:g} nm from {w['start_nm']:g} to {w['end_nm']:g} nm"
+    dims = [(n_wl, "wavelengths"), (doc["fresnel_table_size"], "Fresnel table cosines"),
+            (max(1, len(doc["lights"])), "lights")]
+    problems.append(size_problem("wavelengths.step_nm, fresnel_table_size",
+                                 f"{given} and {doc['fresnel_table_size']} cosines", dims,
+                                 memory, streamed=True))
+    if doc["spectral"] == "brute-force":
+        samples = c["width"] * c["height"] * c["supersample"] ** 2
+        problems.append(size_problem("wavelengths.step_nm, spectral", f"{given}, brute force",
+                                     [(samples, "samples"), (n_wl, "wavelengths"),
+                                      (max(1, len(doc["lights"])), "lights")], memory,
+                                     streamed=True))
+    for i, obj in enumerate(doc["objects"]):
+        g = obj["geometry"]
+        if g["type"] in GEOMETRY_VERTICES:
+            vertices = GEOMETRY_VERTICES[g["type"]](g)
+            problems.append(size_problem(f"objects[{i}].geometry", f"a {g['type']} of "
+                                         f"{vertices:,} vertices",
+                                         [(vertices, "vertices"),
+                                          (MESH_ELEMENTS_PER_VERTEX, "values per vertex")],
+                                         memory))
+    adaptive = c["adaptive"]
+    problems.append(render_size_problem(
+        "camera.width, .height, .supersample", c["width"], c["height"], c["supersample"],
+        adaptive=adaptive["enabled"] and adaptive["supersample"] > c["supersample"],
+        memory=memory))
+    return [p for p in problems if p is not None]
+
+
 def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     """A :class:`Scene` from a scene mapping (as a scene file holds it).
 
@@ -483,6 +539,9 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     """
     doc = validate_scene(document, source)
     check = _Checker(source)
+    for problem in size_problems(doc):
+        check.problems.append(f"{source}: {problem}")
+    check.raise_if_any()  # nothing is made of a size that cannot fit
     w = doc["wavelengths"]
     grid = check.run(["wavelengths"], wavelength_grid, w["start_nm"], w["end_nm"], w["step_nm"])
     observer = doc["observer"]
@@ -589,14 +648,10 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     path = Path(path)
     if not path.is_file():
         raise SceneError(f"{path}: no such scene file")
-    try:
-        document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
-    except yaml.YAMLError as err:
-        raise SceneError(f"{path}: not valid YAML: {err}") from None
-    except UnicodeDecodeError as err:
-        raise SceneError(f"{path}: not a UTF-8 text file (byte {err.start})") from None
-    except OSError as err:
-        raise SceneError(f"{path}: cannot read: {err.strerror}") from None
+    try:  # bounded (aliases, depth, size) and no key twice: reflectance.io.yamlfile
+        document = read_yaml(path, encoding="utf-8-sig")
+    except YAMLFileError as err:
+        raise SceneError(str(err)) from None
     if isinstance(document, dict):
         camera = document.get("camera")
         for key, value in (("width", width), ("height", height), ("supersample", supersample)):
