@@ -856,9 +856,14 @@ def _run_audit(args):
         W, observer = audit_weights(grid, settings["illuminant"], settings["observer"])
         material = resolve_material(args.material, grid, spectra_dirs)
         warnings = [f"{material.name}: {why}" for why in smooth_F0_warnings(material)]
-        table = audit_table(material, angles, W, methods=methods, space=settings["space"],
-                            average_range_nm=settings["average_range_nm"], observer=observer,
-                            illuminant=settings["illuminant"])
+        try:
+            table = audit_table(material, angles, W, methods=methods, space=settings["space"],
+                                average_range_nm=settings["average_range_nm"],
+                                observer=observer, illuminant=settings["illuminant"])
+        except ValueError as err:  # (a file's material is named after it: say the file)
+            if args.material == material.name:
+                raise
+            raise ValueError(f"{args.material}: {err}") from None
         if args.output is not None:
             from reflectance.audit.shortcuts import write_audit
 

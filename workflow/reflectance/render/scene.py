@@ -556,6 +556,13 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
         if ok and mesh is not None:
             objects.append(SceneObject(obj.get("name", f"object {i}"), mesh, material, parts))
     check.raise_if_any()
+    emitters = [m for o in objects for m in (o.material, *o.part_materials.values())
+                if m is not None and m.emission is not None]
+    if not lights and not emitters:
+        # (the ambient term is a fraction of the lights: with none, the image would be black)
+        check.add(["lights"], "no light, and no object emits: the render would be black; "
+                  "give at least one light")
+        check.raise_if_any()
     composed = check.run(["objects"], _compose, objects, doc["objects"])
     check.raise_if_any()
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
