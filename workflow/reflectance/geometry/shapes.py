@@ -166,7 +166,9 @@ def _cached_mesh(kind, build, *args):
     written, just build."""
     import zipfile
 
-    from reflectance.io.cache import DISK_FOLDERS, file_name, prune, store
+    import io
+
+    from reflectance.io.cache import DISK_FOLDERS, file_name, load, prune, store
 
     try:
         path = _mesh_cache_directory() / file_name(_MESH_FORMAT, kind, args, ".npz",
@@ -174,7 +176,7 @@ def _cached_mesh(kind, build, *args):
     except (TypeError, ValueError, OSError, RuntimeError):  # not plain values; no home folder
         return build(*args)
     try:
-        with np.load(path, allow_pickle=False) as data:
+        with np.load(io.BytesIO(load(path)), allow_pickle=False) as data:  # checked: issue 25
             arrays = {name: data[name] for name in _MESH_ARRAYS}
         n_points, n_tris = len(arrays["points"]), len(arrays["tris"])
         for name, (dtype, columns) in _MESH_ARRAYS.items():
