@@ -425,6 +425,9 @@ def _run_brdf(args):
         raise SystemExit(f"reflectance: {method} needs --material or --n for its Fresnel term")
     if args.k != 0.0 and args.n is None:
         raise SystemExit("reflectance: --k needs --n (a material's k comes with --material)")
+    if args.n is not None and args.k == 0.0 and args.n < 1.0:
+        raise SystemExit(f"reflectance: --n {args.n:g}: a dielectric's index (--k 0) must be at "
+                         f"least 1 (the light comes from air); a metal's n < 1 needs its --k")
     if args.convention is not None and method not in ("Lambert", "CookTorrance1982"):
         raise SystemExit(f"reflectance: --convention applies to Lambert and CookTorrance1982, "
                          f"not {method}")

@@ -302,6 +302,10 @@ def _material(check, path, m, grid, spectra_dirs, base, cache, observer):
         check.add(path, f"give one of 'name' (a material), 'file' (its CSV file) or 'index' "
                         f"(a constant n, k), not {' and '.join(map(repr, given))}")
         ok = False
+    elif "index" in m and m["index"]["k"] == 0 and m["index"]["n"] < 1:
+        check.add(path + ["index", "n"], f"{m['index']['n']:g}: a dielectric's index (k = 0) "
+                  f"must be at least 1 (the light comes from air); a metal's n < 1 needs its k")
+        ok = False
     elif "index" in m:
         specular = constant_index_material(m["index"]["n"], m["index"]["k"], grid)
     elif "name" in m:
