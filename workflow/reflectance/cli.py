@@ -673,6 +673,10 @@ def _run_bench(args):
         raise SystemExit("reflectance: --sizes, --runs and --supersample must be >= 1")
     spectra_dirs = _spectra_dirs(args)
     try:
+        if args.scene is not None:  # read and checked here, before any size's process starts
+            from reflectance.render.scene import load_scene
+
+            load_scene(args.scene, spectra_dir=spectra_dirs)
         scene = args.scene or _default_bench_scene()
         progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
@@ -1028,6 +1032,11 @@ def main(argv=None):
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return 0
+    except KeyboardInterrupt:  # Ctrl-C: one line, not a traceback; the shell's status 128 + 2
+        # (every output is written whole or not at all: reflectance.io.atomic)
+        print(f"\nreflectance: {argv[0] if argv else ''}: interrupted; no file written",
+              file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":  # pragma: no cover

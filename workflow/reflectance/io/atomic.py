@@ -137,6 +137,10 @@ def atomic_write(path, suffix=None):
         yield Path(tmp)
         os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the file ordinary permissions
         os.replace(tmp, path)
+    except OSError as err:  # (a full disk: named by the file asked for, not the temporary)
+        if err.filename is None or Path(err.filename) != Path(tmp):
+            raise
+        raise type(err)(err.errno, err.strerror, str(path)) from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
