@@ -831,7 +831,8 @@ def _figure_scene_problems(config, spectra_dir):
         try:
             scene_from_dict(document, source=f"{key} (scene {label})")
         except SceneError as err:
-            for line in str(err).splitlines()[1:]:
+            lines = str(err).splitlines()
+            for line in lines[1:] if lines[0] == "invalid scene:" else lines:
                 missing = re.search(r"unknown material '([^']+)'", line)
                 if missing and missing.group(1) in pending:
                     continue  # its spectrum is made by a job before the render

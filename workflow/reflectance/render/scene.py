@@ -65,6 +65,14 @@ class SceneError(ValueError):
     """A scene file holds something the renderer cannot use; the message names file and key."""
 
 
+def _scene_error(problems):
+    """One problem: its line (which names the scene file and key); several: a line each, under
+    a heading."""
+    if len(problems) == 1:
+        return SceneError(problems[0])
+    return SceneError("invalid scene:\n  " + "\n  ".join(problems))
+
+
 def _key(parts):
     out = ""
     for p in parts:
@@ -111,7 +119,7 @@ def validate_scene(document, source="<scene>"):
         # the deepest (most specific) errors first; if/then wrappers add nothing
         lines = sorted({f"{source}: {_key(list(e.absolute_path))}: {e.message}"
                         for e in errors})
-        raise SceneError("invalid scene:\n  " + "\n  ".join(lines))
+        raise _scene_error(lines)
     return document
 
 
@@ -225,7 +233,7 @@ class _Checker:
 
     def raise_if_any(self):
         if self.problems:
-            raise SceneError("invalid scene:\n  " + "\n  ".join(self.problems))
+            raise _scene_error(self.problems)
 
 
 def _illuminant(check, path, name):
