@@ -552,3 +552,105 @@ def test_a_metal_may_have_n_below_1(workdir, root, capsys):
     assert main(["brdf", "cook-torrance", "--n", "0.05", "--k", "3.6", "--m", "0.3",
                  "--incidence", "30", "--angles", "0"]) in (0, None)
     assert capsys.readouterr().out.startswith("theta_out_deg,")
+
+
+BUSY_SCENE = """\
+camera: {position: [0, -5, 1], look_at: [0, 0, 0.3], fov_deg: 35, width: 800, height: 600,
+         supersample: 3}
+objects:
+  - {geometry: {type: sphere, center: [0, 0, 0.5], radius: 0.5}, material: {name: Cu, m: 0.3}}
+  - {geometry: {type: plane, center: [0, 0, 0], normal: [0, 0, 1], size: [6, 6]},
+     material: {model: Lambert, albedo: 0.5}}
+lights: [{type: directional, direction: [-0.4, -0.6, 0.7]}]
+"""
+
+
+def _command(*args):
+    return [sys.executable, "-m", "reflectance.cli", *args]
+
+
+def test_ctrl_c_during_render_is_one_line_and_exit_130(workdir, root):
+    """SIGINT while the renderer works (after its first band's progress line): one line, the
+    shell's status for it (128 + 2), no traceback, no file."""
+    import signal
+    import time
+
+    (workdir / "busy.yaml").write_text(BUSY_SCENE)
+    before = listing(workdir)
+    proc = subprocess.Popen(_command("render", "busy.yaml", "-o", "busy.exr", "--png", "busy.png",
+                                     "--spectra-dir", str(root / "spectra")),
+                            cwd=workdir, stderr=subprocess.PIPE, text=True,
+                            env=dict(os.environ, PYTHONPATH=str(root / "workflow")),
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    lines = []
+    for line in proc.stderr:  # progress: the render has begun
+        lines.append(line)
+        if "visibility" in line:
+            break
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGINT)
+    rest = proc.stderr.read()
+    proc.wait(timeout=120)
+    assert proc.returncode == 130, rest
+    assert "Traceback" not in rest and "KeyboardInterrupt" not in rest
+    said = [line for line in rest.splitlines() if line.startswith("reflectance: ")]
+    assert said == ["reflectance: render: interrupted; no file written"], rest
+    assert listing(workdir) == before
+
+
+#: run the command with its files limited to 64 KiB (as a disk that fills up: EFBIG, the signal
+#: ignored), in a process of its own
+SMALL_DISK = ("import os, resource, signal, sys\n"
+              "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
+              "limit = int(os.environ['FILE_LIMIT'])\n"
+              "resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))\n"
+              "from reflectance.cli import main\n"
+              "sys.exit(main())\n")
+
+
+@pytest.mark.parametrize("output, limit", [(["-o", "full.exr"], 65536),
+                                           (["--png", "full.png"], 1024)])
+def test_a_full_disk_is_one_line_naming_the_file(output, limit, workdir, root):
+    """An image that does not fit: one line naming the file (not OpenEXR's RuntimeError), exit
+    status 1, no file (nor a hidden temporary) left."""
+    (workdir / "big.yaml").write_text(SCENE.replace("width: 8, height: 6", "width: 256, height: 256"))
+    before = listing(workdir)
+    proc = subprocess.run([sys.executable, "-c", SMALL_DISK, "render", "big.yaml", *output,
+                           "--quiet", "--spectra-dir", str(root / "spectra")],
+                          cwd=workdir, capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ, PYTHONPATH=str(root / "workflow"),
+                                   FILE_LIMIT=str(limit)))
+    assert proc.returncode == 1, proc.stderr
+    assert "Traceback" not in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+    assert proc.stderr.startswith(f"reflectance: cannot write {output[-1]} ("), proc.stderr
+    assert "nothing written" in proc.stderr and ".tmp-" not in proc.stderr, proc.stderr
+    assert listing(workdir) == before
+
+
+def test_a_jobs_write_error_is_one_line_in_its_log(tmp_path):
+    """Inside a job (reflectance.scripting.script_log), a file that cannot be written is one
+    line of the log naming it, and the job fails; other errors keep their traceback."""
+    from types import SimpleNamespace
+
+    from reflectance.io.atomic import write_text
+    from reflectance.scripting import script_log
+
+    job = SimpleNamespace(log=[str(tmp_path / "job.log")], rule="a_rule")
+    real_replace = os.replace
+
+    def full(src, dst):
+        raise OSError(28, "No space left on device", str(src))
+
+    os.replace = full
+    try:
+        with pytest.raises(SystemExit) as info, script_log(job):
+            write_text(tmp_path / "out.csv", "a,b\n")
+    finally:
+        os.replace = real_replace
+    assert info.value.code == 1
+    log = (tmp_path / "job.log").read_text()
+    assert log == f"ERROR cannot write {tmp_path / 'out.csv'}: No space left on device\n", log
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["job.log"]
+    with pytest.raises(ZeroDivisionError), script_log(job):
+        1 / 0
+    assert "Traceback" in (tmp_path / "job.log").read_text()

@@ -138,8 +138,8 @@ def atomic_write(path, suffix=None):
         os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the file ordinary permissions
         os.replace(tmp, path)
     except OSError as err:  # (a full disk: named by the file asked for, not the temporary)
-        if err.filename is None or Path(err.filename) != Path(tmp):
-            raise
+        if err.errno is None or (err.filename is not None and Path(err.filename) != Path(tmp)):
+            raise  # (a write on the open file names none: it is this one too)
         raise type(err)(err.errno, err.strerror, str(path)) from None
     finally:
         if os.path.exists(tmp):

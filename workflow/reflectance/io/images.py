@@ -420,7 +420,7 @@ def _write_error(path, err):
         full = False
     if full:
         return OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
-    first = (str(err).strip().splitlines() or ["failed"])[0]
+    first = (str(err).strip().splitlines() or ["failed"])[0].replace(f' "{path}"', "")
     return OSError(errno.EIO, f"the writer failed ({first[:200]})", str(path))
 
 
