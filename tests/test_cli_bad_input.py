@@ -654,3 +654,19 @@ def test_a_jobs_write_error_is_one_line_in_its_log(tmp_path):
     with pytest.raises(ZeroDivisionError), script_log(job):
         1 / 0
     assert "Traceback" in (tmp_path / "job.log").read_text()
+
+
+def test_an_audit_colour_that_is_not_finite_names_the_material():
+    """The last guard, behind the spectrum files' bound: a material built in code with k = 1e200
+    (k^2 overflows) is refused by the audit, naming it, the method and the angle."""
+    from reflectance.audit.shortcuts import audit_table
+    from reflectance.colour.colorimetry import tristimulus_weights
+    from reflectance.optics.spectra import wavelength_grid
+    from reflectance.render.scene import constant_index_material
+
+    grid = wavelength_grid(380, 780, 10)
+    with np.errstate(over="ignore", invalid="ignore"):
+        material = constant_index_material(1.5, 1e200, grid)
+    with pytest.raises(ValueError, match=r"its exact colour at 0 degrees is not finite \(X, Y, Z = "
+                                         r"nan, nan, nan\)"):
+        audit_table(material, [0, 60], tristimulus_weights(grid, "D65"), methods=("exact",))
