@@ -98,3 +98,67 @@ def test_clear_disk_removes_the_caches_folders_and_nothing_else(tmp_path, monkey
     cache.clear(disk=True)  # nothing to remove but the meshes: fine
     monkeypatch.setenv(cache.CACHE_ENVIRONMENT_VARIABLE, str(tmp_path / "none"))
     cache.clear(disk=True)  # no cache folder at all: nothing to do
+
+
+# --- a changed cache file is computed again, never used (issue 25) -------------------------------
+
+def _tamper(path, old, new):
+    """Change bytes of a cached file inside what it holds, keeping it a readable file of its
+    kind: what a reader without a checksum would take as it is."""
+    data = path.read_bytes()
+    assert old in data
+    path.write_bytes(data.replace(old, new, 1))
+
+
+def test_a_changed_colour_table_is_computed_again(tmp_path, monkeypatch):
+    """A CIE 1931 CMF table (.npy) whose numbers changed after it was written: colour-science's
+    own values come back, and the file is rewritten."""
+    import colour
+
+    from reflectance.colour import tables
+
+    monkeypatch.setenv(cache.CACHE_ENVIRONMENT_VARIABLE, str(tmp_path))
+    key = "CIE 1931 2 Degree Standard Observer"
+    grid = tuple(float(w) for w in range(400, 701, 10))
+    tables.cmfs_aligned(key, grid)
+    (path,) = tables.cache_directory().glob("observers-aligned-*.npy")
+    stored = np.load(io_bytes(cache.load(path)))
+    # the table's first float64 (x_bar at 400 nm) set to 0.5 in the file itself
+    _tamper(path, stored[0, 0].tobytes(), np.float64(0.5).tobytes())
+    truth = (colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER[key].copy()
+             .align(colour.SpectralShape(400, 700, 10)).values)
+    np.testing.assert_array_equal(tables.cmfs_aligned(key, grid), truth)
+    np.testing.assert_array_equal(np.load(io_bytes(cache.load(path))), truth)  # rewritten
+
+
+def test_a_changed_mesh_is_built_again(tmp_path, monkeypatch):
+    """A cached vase (.npz) with a vertex moved: the built vertices come back, not the moved one."""
+    from reflectance.geometry.shapes import vase
+
+    monkeypatch.setenv(cache.CACHE_ENVIRONMENT_VARIABLE, str(tmp_path))
+    profile = [(0.35, 0.0), (0.55, 0.15), (0.75, 0.45), (0.7, 0.75), (0.4, 1.05)]
+    first = np.array(vase(profile, 16, 10, 0.03).points)
+    (path,) = tmp_path.glob("meshes-*/*.npz")
+    # stored uncompressed (np.savez): the points' bytes sit in the file as they are
+    _tamper(path, first[:4].tobytes(), (first[:4] + 0.25).tobytes())
+    with pytest.raises(ValueError, match="does not match its checksum"):
+        cache.load(path)
+    cache.clear()
+    np.testing.assert_array_equal(np.array(vase(profile, 16, 10, 0.03).points), first)
+    cache.load(path)  # rewritten with its checksum
+
+
+def test_a_cache_file_without_its_checksum_is_not_used(tmp_path):
+    path = tmp_path / "old.npy"
+    np.save(path, np.arange(3.0))  # as an earlier version wrote it: no checksum
+    with pytest.raises(ValueError, match="checksum"):
+        cache.load(path)
+    path.write_bytes(b"x")  # shorter than any checksum
+    with pytest.raises(ValueError, match="checksum"):
+        cache.load(path)
+
+
+def io_bytes(data):
+    import io
+
+    return io.BytesIO(data)

@@ -6,6 +6,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from reflectance.cli import main
@@ -307,3 +308,379 @@ def test_implicit_config_yaml(workdir, root, capsys):
     (workdir / "config.yaml").write_text("wavelengths: {start_nm: 360, end_nm: 830, step_nm: 0}\n")
     message = refused(["colour", "Cu", "--angle", "0"], root)
     assert "--config config.yaml: wavelengths.step_nm" in message
+
+
+# --- issue 25: mesh files VTK would crash on, answers that are not finite, late or raw errors ----
+
+#: a tetrahedron: four vertices, four faces (0-based)
+TET_POINTS = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)]
+TET_FACES = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
+
+
+def _obj(points=TET_POINTS, faces=None, extra=""):
+    faces = faces or [" ".join(str(i + 1) for i in f) for f in TET_FACES]
+    return ("".join(f"v {x} {y} {z}\n" for x, y, z in points) + extra
+            + "".join(f"f {f}\n" for f in faces)).encode()
+
+
+def _ply_ascii(points=TET_POINTS, faces=TET_FACES, n_vertices=None):
+    head = (f"ply\nformat ascii 1.0\nelement vertex {n_vertices or len(points)}\n"
+            "property float x\nproperty float y\nproperty float z\n"
+            f"element face {len(faces)}\nproperty list uchar int vertex_indices\nend_header\n")
+    return (head + "".join(f"{x} {y} {z}\n" for x, y, z in points)
+            + "".join(f"{len(f)} {' '.join(map(str, f))}\n" for f in faces)).encode()
+
+
+def _ply_binary(points=TET_POINTS, faces=TET_FACES, order="<", n_vertices=None, n_faces=None,
+                cut=0):
+    import struct
+
+    name = "binary_little_endian" if order == "<" else "binary_big_endian"
+    head = (f"ply\nformat {name} 1.0\nelement vertex {n_vertices or len(points)}\n"
+            "property float x\nproperty float y\nproperty float z\n"
+            f"element face {n_faces or len(faces)}\nproperty list uchar int vertex_indices\n"
+            "end_header\n").encode()
+    body = b"".join(struct.pack(order + "3f", *p) for p in points)
+    body += b"".join(struct.pack(order + "B3i", 3, *f) for f in faces)
+    return head + (body[:-cut] if cut else body)
+
+
+def _stl_binary(points=TET_POINTS, count=None, cut=0):
+    import struct
+
+    body = b"".join(struct.pack("<12fH", 0, 0, 0, *points[a], *points[b], *points[c], 0)
+                    for a, b, c in TET_FACES)
+    data = b"\0" * 80 + struct.pack("<I", len(TET_FACES) if count is None else count) + body
+    return data[:-cut] if cut else data
+
+
+def _stl_ascii(points=TET_POINTS, faces=TET_FACES):
+    facets = "".join("facet normal 0 0 0\n outer loop\n"
+                     + "".join(f"  vertex {' '.join(map(str, points[i]))}\n" for i in f)
+                     + " endloop\nendfacet\n" for f in faces)
+    return f"solid tet\n{facets}endsolid tet\n".encode()
+
+
+def _vtk_ascii(points=TET_POINTS, faces=TET_FACES):
+    return ("# vtk DataFile Version 4.2\ntet\nASCII\nDATASET POLYDATA\n"
+            f"POINTS {len(points)} float\n" + "".join(f"{x} {y} {z}\n" for x, y, z in points)
+            + f"POLYGONS {len(faces)} {4 * len(faces)}\n"
+            + "".join(f"3 {' '.join(map(str, f))}\n" for f in faces)).encode()
+
+
+def _vtk_binary_claiming(n_points):
+    return (b"# vtk DataFile Version 4.2\ntet\nBINARY\nDATASET POLYDATA\n"
+            + f"POINTS {n_points} float\n".encode() + b"\0" * 48)
+
+
+def _vtp(points=TET_POINTS, faces=TET_FACES, n_points=None):
+    flat = " ".join(str(v) for p in points for v in p)
+    connectivity = " ".join(str(i) for f in faces for i in f)
+    offsets = " ".join(str(3 * (i + 1)) for i in range(len(faces)))
+    return (f'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" '
+            f'byte_order="LittleEndian">\n<PolyData>\n<Piece NumberOfPoints='
+            f'"{n_points or len(points)}" NumberOfPolys="{len(faces)}">\n'
+            f'<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">{flat}'
+            f'</DataArray></Points>\n<Polys><DataArray type="Int64" Name="connectivity" '
+            f'format="ascii">{connectivity}</DataArray>\n<DataArray type="Int64" Name="offsets" '
+            f'format="ascii">{offsets}</DataArray></Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n'
+            ).encode()
+
+
+NAN_POINTS = [(0.0, 0.0, 0.0), (1.0, float("nan"), 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)]
+INF_POINTS = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (float("inf"), 1.0, 0.0), (0.0, 0.0, 1.0)]
+
+#: (file name, its bytes, what the one line must say besides the file's name); none of them
+#: may reach VTK's reader (several would crash it: exit -11, no message)
+BAD_MESHES = [
+    ("index.obj", _obj(faces=["1 2 3", "1 2 9"]), "v index 9 is out of range"),
+    ("relative.obj", _obj(faces=["1 2 3", "-1 -2 -7"]), "v index -7 is out of range"),
+    ("zero.obj", _obj(faces=["0 1 2"]), "v index 0 is out of range"),
+    ("texture.obj", _obj(faces=["1/1 2/2 3/5"], extra="vt 0 0\nvt 1 0\nvt 0 1\n"),
+     "vt index 5 is out of range"),
+    ("nan.obj", _obj(points=NAN_POINTS), "vertex 1 has a coordinate that is not finite"),
+    ("inf.obj", _obj(points=INF_POINTS), "vertex 2 has a coordinate that is not finite"),
+    ("words.obj", _obj(faces=["1 2 three"]), "'three' is not an index"),
+    ("negative.ply", _ply_ascii(faces=[(0, 1, 2), (0, -1, 3)]), "index -1 is out of range"),
+    ("short.ply", _ply_ascii(n_vertices=400), "declares 404 element lines but the file holds"),
+    ("count.ply", _ply_ascii().replace(b"3 1 2 3\n", b"4 1 2 3\n"), "says 4 indices, holds 3"),
+    ("nan_ascii.ply", _ply_ascii(points=NAN_POINTS), "vertex 1 has a coordinate"),
+    ("big_endian.ply", _ply_binary(faces=[(0, 1, 2), (0, 1, 70000)], order=">"),
+     "face index 70000 is out of range: the file has 4 vertices"),
+    ("faces.ply", _ply_binary(n_faces=2_000_000_000),
+     "declares 2000000000 face elements but only"),
+    ("inf.ply", _ply_binary(points=INF_POINTS), "vertex 2 has a coordinate that is not finite"),
+    ("list_cut.ply", _ply_binary(cut=5), "lists run past the end of the file"),
+    ("no_header_end.ply", b"ply\nformat ascii 1.0\nelement vertex 3\n", "no 'ply' ... 'end_header'"),
+    ("cut.stl", _stl_binary(cut=30), "a binary STL of 4 triangles has 284 bytes, this file 254"),
+    ("count.stl", _stl_binary(count=4_000_000_000), "a binary STL of 4000000000 triangles"),
+    ("inf.stl", _stl_binary(points=INF_POINTS), "has a coordinate that is not finite"),
+    ("nan_ascii.stl", _stl_ascii(points=NAN_POINTS), "has a coordinate that is not finite"),
+    ("two.stl", _stl_ascii(faces=[(0, 1)]), "holds 2 vertices, not three per facet"),
+    ("index.vtk", _vtk_ascii(faces=[(0, 1, 2), (0, 1, 12)]),
+     "a cell's vertex index 12 is out of range: the file has 4 vertices"),
+    ("nan.vtk", _vtk_ascii(points=NAN_POINTS), "vertex 1 has a coordinate that is not finite"),
+    ("points.vtk", _vtk_binary_claiming(3_000_000_000), "POINTS declares 3000000000 entries"),
+    ("index.vtp", _vtp(faces=[(0, 1, 2), (3, 1, 40)]), "connectivity index 40 is out of range"),
+    ("cut.vtp", _vtp()[:200], "not well-formed XML"),
+    ("points.vtp", _vtp(n_points=2_000_000_000), "declares 2000000000 points"),
+]
+
+MESH_SCENE = """\
+camera: {{position: [3, -4, 2], look_at: [0.3, 0.3, 0.3], fov_deg: 30, width: 8, height: 6}}
+objects:
+  - geometry: {{type: mesh, path: {path}}}
+    material: {{name: Cu, m: 0.3}}
+lights: [{{type: directional, direction: [0, -1, 1]}}]
+"""
+
+
+@pytest.mark.parametrize("name, data, said", BAD_MESHES, ids=[c[0] for c in BAD_MESHES])
+def test_bad_mesh_file_is_refused_before_vtk_reads_it(name, data, said, workdir, root):
+    (workdir / name).write_bytes(data)
+    (workdir / "mesh.yaml").write_text(MESH_SCENE.format(path=name))
+    before = listing(workdir)
+    message = refused(["render", "mesh.yaml", "-o", "out.exr", "--png", "out.png", "--quiet"],
+                      root)
+    assert f"{name}: " in message and said in message, message
+    assert "mesh.yaml: objects[0].geometry" in message
+    assert "\n" not in message.strip()
+    assert listing(workdir) == before
+
+
+@pytest.mark.parametrize("name, data", [
+    ("tet.obj", _obj()), ("tet_ascii.ply", _ply_ascii()), ("tet_le.ply", _ply_binary()),
+    ("tet_be.ply", _ply_binary(order=">")), ("tet.stl", _stl_binary()),
+    ("tet_ascii.stl", _stl_ascii()), ("tet.vtk", _vtk_ascii()), ("tet.vtp", _vtp())])
+def test_the_same_meshes_intact_are_read(name, data, workdir, root):
+    """The writers above make readable files: each refusal is of its one defect."""
+    from reflectance.geometry.shapes import mesh_from_file
+
+    (workdir / name).write_bytes(data)
+    mesh = mesh_from_file(workdir / name)
+    assert mesh.n_cells == 4
+    np.testing.assert_allclose(np.unique(np.asarray(mesh.points), axis=0),
+                               np.unique(np.array(TET_POINTS), axis=0))
+
+
+# scenes that read, but whose answer would be wrong or black (the mesh scene's header)
+def _scene(objects="  - geometry: {type: sphere, radius: 1.0}\n    material: {name: Cu, m: 0.3}\n",
+           lights="[{type: directional, direction: [0, -1, 1]}]"):
+    return ("camera: {position: [0, -5, 0], look_at: [0, 0, 0], fov_deg: 30, width: 8, "
+            f"height: 6}}\nobjects:\n{objects}lights: {lights}\n")
+
+
+BAD_SCENES = [
+    ("dark.yaml", _scene(lights="[]"), "dark.yaml: lights: no light, and no object emits"),
+    ("dielectric.yaml", _scene(objects="  - geometry: {type: sphere, radius: 1.0}\n"
+                                       "    material: {index: {n: 0.7}, m: 0.3}\n"),
+     "dielectric.yaml: objects[0].material.index.n: 0.7: a dielectric's index (k = 0) must be "
+     "at least 1"),
+    ("huge_n.yaml", _scene(objects="  - geometry: {type: sphere, radius: 1.0}\n"
+                                   "    material: {index: {n: 1.0e+300}, m: 0.3}\n"),
+     "huge_n.yaml: objects[0].material.index.n: 1e+300 is greater than the maximum"),
+    ("huge_k.yaml", _scene(objects="  - geometry: {type: sphere, radius: 1.0}\n"
+                                   "    material: {index: {n: 1.5, k: 1.0e+160}, m: 0.3}\n"),
+     "huge_k.yaml: objects[0].material.index.k: 1e+160 is greater than the maximum"),
+    ("sky.yaml", _scene(lights="[{type: directional, direction: [0, -1, 1], solid_angle: 20}]"),
+     "sky.yaml: lights[0].solid_angle: 20 is greater than the maximum of 12.566"),
+]
+
+
+@pytest.mark.parametrize("name, text, said", BAD_SCENES, ids=[c[0] for c in BAD_SCENES])
+def test_scene_with_a_wrong_answer_is_refused(name, text, said, workdir, root):
+    (workdir / name).write_text(text)
+    before = listing(workdir)
+    message = refused(["render", name, "-o", "out.exr", "--png", "out.png", "--quiet"], root)
+    assert said in message, message
+    assert "\n" not in message.strip()
+    assert listing(workdir) == before
+
+
+#: spectrum files whose numbers would overflow the Fresnel equations (NaN colours, exit 0 before)
+BAD_SPECTRA = [
+    ("huge_k", "wavelength_nm,n,k\n350,0.5,1e300\n850,0.5,1e300\n",
+     "huge_k.csv, data row 1 (line 2): k = 1e+300 is above 1e+06"),
+    ("huge_n", "wavelength_nm,n,k\n350,1.5,0\n600,2e7,0\n850,1.5,0\n",
+     "huge_n.csv, data row 2 (line 3): n = 2e+07 is above 1e+06"),
+]
+
+
+@pytest.mark.parametrize("stem, text, said", BAD_SPECTRA, ids=[c[0] for c in BAD_SPECTRA])
+@pytest.mark.parametrize("command", ["audit", "colour", "brdf"])
+def test_spectrum_that_overflows_is_refused_by_every_command(stem, text, said, command, workdir,
+                                                             root):
+    (workdir / f"{stem}.csv").write_text(text)
+    args = {"audit": ["audit", f"{stem}.csv", "--angle", "0", "60", "-o", "out"],
+            "colour": ["colour", stem, "--angle", "0", "--spectra-dir", "."],
+            "brdf": ["brdf", "cook-torrance", "--material", stem, "--m", "0.3", "--incidence",
+                     "30", "--angles", "0", "--spectra-dir", "."]}[command]
+    before = listing(workdir)
+    message = refused(args, root)
+    assert said in message, message
+    assert "\n" not in message.strip()
+    assert listing(workdir) == before  # (audit: no out/, not even audit.png alone)
+
+
+def test_audit_output_is_all_files_or_none(workdir, root, monkeypatch):
+    """The last of audit -o's files fails: none of them is left, and an earlier run's files
+    stay as they were."""
+    import reflectance.io.provenance as provenance
+
+    def fail(*args, **kwargs):
+        raise OSError(28, "No space left on device", "audit_metadata.yaml")
+
+    assert main(["audit", "Cu", "--angle", "0", "60", "-o", "kept", "--spectra-dir",
+                 str(root / "spectra")]) in (0, None)
+    kept = {p.name: p.read_bytes() for p in (workdir / "kept").iterdir()}
+    monkeypatch.setattr(provenance, "write_metadata", fail)
+    before = listing(workdir)
+    for out in ("new", "kept"):
+        message = refused(["audit", "Au", "--angle", "0", "60", "-o", out], root)
+        assert "No space left on device" in message and "\n" not in message.strip()
+        assert listing(workdir) == before
+    assert {p.name: p.read_bytes() for p in (workdir / "kept").iterdir()} == kept
+
+
+@pytest.mark.parametrize("args, said", [
+    (["brdf", "cook-torrance", "--n", "0.5", "--m", "0.3", "--incidence", "30", "--angles", "0"],
+     "--n 0.5: a dielectric's index (--k 0) must be at least 1"),
+    (["brdf", "torrance-sparrow", "--n", "0.99", "--incidence", "30", "--angles", "0"],
+     "--n 0.99: a dielectric's index"),
+    (["bench", "--scene", "nope.yaml", "--sizes", "8", "--runs", "1"],
+     "nope.yaml: no such scene file"),
+    (["bench", "--scene", "dark.yaml", "--sizes", "8", "--runs", "1"],
+     "dark.yaml: lights: no light"),
+])
+def test_late_errors_come_first_as_one_line(args, said, workdir, root):
+    (workdir / "dark.yaml").write_text(_scene(lights="[]"))
+    before = listing(workdir)
+    message = refused(args, root)
+    assert said in message, message
+    assert "\n" not in message.strip()
+    assert listing(workdir) == before
+
+
+def test_a_metal_may_have_n_below_1(workdir, root, capsys):
+    """n < 1 is refused only for a dielectric: silver's n is about 0.05 in the visible."""
+    assert main(["brdf", "cook-torrance", "--n", "0.05", "--k", "3.6", "--m", "0.3",
+                 "--incidence", "30", "--angles", "0"]) in (0, None)
+    assert capsys.readouterr().out.startswith("theta_out_deg,")
+
+
+BUSY_SCENE = """\
+camera: {position: [0, -5, 1], look_at: [0, 0, 0.3], fov_deg: 35, width: 800, height: 600,
+         supersample: 3}
+objects:
+  - {geometry: {type: sphere, center: [0, 0, 0.5], radius: 0.5}, material: {name: Cu, m: 0.3}}
+  - {geometry: {type: plane, center: [0, 0, 0], normal: [0, 0, 1], size: [6, 6]},
+     material: {model: Lambert, albedo: 0.5}}
+lights: [{type: directional, direction: [-0.4, -0.6, 0.7]}]
+"""
+
+
+def _command(*args):
+    return [sys.executable, "-m", "reflectance.cli", *args]
+
+
+def test_ctrl_c_during_render_is_one_line_and_exit_130(workdir, root):
+    """SIGINT while the renderer works (after its first band's progress line): one line, the
+    shell's status for it (128 + 2), no traceback, no file."""
+    import signal
+    import time
+
+    (workdir / "busy.yaml").write_text(BUSY_SCENE)
+    before = listing(workdir)
+    proc = subprocess.Popen(_command("render", "busy.yaml", "-o", "busy.exr", "--png", "busy.png",
+                                     "--spectra-dir", str(root / "spectra")),
+                            cwd=workdir, stderr=subprocess.PIPE, text=True,
+                            env=dict(os.environ, PYTHONPATH=str(root / "workflow")),
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    lines = []
+    for line in proc.stderr:  # progress: the render has begun
+        lines.append(line)
+        if "visibility" in line:
+            break
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGINT)
+    rest = proc.stderr.read()
+    proc.wait(timeout=120)
+    assert proc.returncode == 130, rest
+    assert "Traceback" not in rest and "KeyboardInterrupt" not in rest
+    said = [line for line in rest.splitlines() if line.startswith("reflectance: ")]
+    assert said == ["reflectance: render: interrupted; no file written"], rest
+    assert listing(workdir) == before
+
+
+#: run the command with its files limited to 64 KiB (as a disk that fills up: EFBIG, the signal
+#: ignored), in a process of its own
+SMALL_DISK = ("import os, resource, signal, sys\n"
+              "signal.signal(signal.SIGXFSZ, signal.SIG_IGN)\n"
+              "limit = int(os.environ['FILE_LIMIT'])\n"
+              "resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))\n"
+              "from reflectance.cli import main\n"
+              "sys.exit(main())\n")
+
+
+@pytest.mark.parametrize("output, limit", [(["-o", "full.exr"], 65536),
+                                           (["--png", "full.png"], 1024)])
+def test_a_full_disk_is_one_line_naming_the_file(output, limit, workdir, root):
+    """An image that does not fit: one line naming the file (not OpenEXR's RuntimeError), exit
+    status 1, no file (nor a hidden temporary) left."""
+    (workdir / "big.yaml").write_text(SCENE.replace("width: 8, height: 6", "width: 256, height: 256"))
+    before = listing(workdir)
+    proc = subprocess.run([sys.executable, "-c", SMALL_DISK, "render", "big.yaml", *output,
+                           "--quiet", "--spectra-dir", str(root / "spectra")],
+                          cwd=workdir, capture_output=True, text=True, timeout=300,
+                          env=dict(os.environ, PYTHONPATH=str(root / "workflow"),
+                                   FILE_LIMIT=str(limit)))
+    assert proc.returncode == 1, proc.stderr
+    assert "Traceback" not in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+    assert proc.stderr.startswith(f"reflectance: cannot write {output[-1]} ("), proc.stderr
+    assert "nothing written" in proc.stderr and ".tmp-" not in proc.stderr, proc.stderr
+    assert listing(workdir) == before
+
+
+def test_a_jobs_write_error_is_one_line_in_its_log(tmp_path):
+    """Inside a job (reflectance.scripting.script_log), a file that cannot be written is one
+    line of the log naming it, and the job fails; other errors keep their traceback."""
+    from types import SimpleNamespace
+
+    from reflectance.io.atomic import write_text
+    from reflectance.scripting import script_log
+
+    job = SimpleNamespace(log=[str(tmp_path / "job.log")], rule="a_rule")
+    real_replace = os.replace
+
+    def full(src, dst):
+        raise OSError(28, "No space left on device", str(src))
+
+    os.replace = full
+    try:
+        with pytest.raises(SystemExit) as info, script_log(job):
+            write_text(tmp_path / "out.csv", "a,b\n")
+    finally:
+        os.replace = real_replace
+    assert info.value.code == 1
+    log = (tmp_path / "job.log").read_text()
+    assert log == f"ERROR cannot write {tmp_path / 'out.csv'}: No space left on device\n", log
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["job.log"]
+    with pytest.raises(ZeroDivisionError), script_log(job):
+        1 / 0
+    assert "Traceback" in (tmp_path / "job.log").read_text()
+
+
+def test_an_audit_colour_that_is_not_finite_names_the_material():
+    """The last guard, behind the spectrum files' bound: a material built in code with k = 1e200
+    (k^2 overflows) is refused by the audit, naming it, the method and the angle."""
+    from reflectance.audit.shortcuts import audit_table
+    from reflectance.colour.colorimetry import tristimulus_weights
+    from reflectance.optics.spectra import wavelength_grid
+    from reflectance.render.scene import constant_index_material
+
+    grid = wavelength_grid(380, 780, 10)
+    with np.errstate(over="ignore", invalid="ignore"):
+        material = constant_index_material(1.5, 1e200, grid)
+    with pytest.raises(ValueError, match=r"its exact colour at 0 degrees is not finite \(X, Y, Z = "
+                                         r"nan, nan, nan\)"):
+        audit_table(material, [0, 60], tristimulus_weights(grid, "D65"), methods=("exact",))

@@ -210,6 +210,32 @@ CORPUS = [
      r"figures\.cook_torrance_1982\.fig8\.camera\.width, \.height, \.supersample: a 2048 x 2048 render .* needs about 5\.\d GiB"),
 ]
 
+# issue 25, family 6: what failed late, inside a job (a grid of an audit's own that its range
+# does not hold; a dielectric's n below 1, a TypeError in Blinn's Fig. 7 job), refused first
+AUD = "audits"
+CORPUS += [
+    ("audit-step", set_(f"{AUD}.spectral_sampling.steps_nm[1]", 7),
+     r"^config\.yaml: audits\.spectral_sampling\.steps_nm\[1\]: 7 nm does not divide "
+     r"audits\.spectral_sampling\.range_nm \[380, 780\] \(400 nm\)$"),
+    ("audit-reference-step", set_(f"{AUD}.spectral_sampling.reference_step_nm", 3),
+     r"audits\.spectral_sampling\.reference_step_nm: 3 nm does not divide"),
+    ("audit-range-step", set_(f"{AUD}.spectral_sampling.range_nm", [380, 790]),
+     r"audits\.spectral_sampling\.steps_nm\[2\]: 20 nm does not divide .*\(410 nm\)"),
+    ("audit-range-reversed", set_(f"{AUD}.spectral_sampling.range_nm", [780, 380]),
+     r"audits\.spectral_sampling\.range_nm: \[780, 380\] must be increasing"),
+    ("audit-three-wavelengths", set_(f"{AUD}.spectral_sampling.three_wavelengths_nm[0]", 800.0),
+     r"audits\.spectral_sampling\.three_wavelengths_nm\[0\]: 800 nm lies outside"),
+    ("atlas-angle-step", set_(f"{AUD}.fresnel_atlas.angle_step_deg", 0.7),
+     r"audits\.fresnel_atlas\.angle_step_deg: 0\.7 degrees does not divide the 90"),
+    ("blinn-dielectric-n", set_(f"{B77}.fig7.panels.b.n", 0.99),
+     r"figures\.blinn_1977\.fig7\.panels\.b\.n: 0\.99 is less than the minimum of 1"),
+    ("article-dielectric-n", set_(f"{ART}.distributions.models.cook_torrance.n", 0.9),
+     r"figures\.article\.distributions\.models\.cook_torrance\.n: 0\.9 is less than the minimum of 1"),
+    ("lecture-dielectric-n", set_(f"{LEC}.brdf_lobes.models.cook_torrance.n", 0.8),
+     r"figures\.lecture\.brdf_lobes\.models\.cook_torrance\.n: 0\.8 with k = 0 is a "
+     r"dielectric's index below 1"),
+]
+
 
 # Issue 25: sizes that set an array or a loop (family 1) and paths that leave the project
 # (family 3), each refused in ONE line naming the key, before anything is made or read.

@@ -172,12 +172,12 @@ def test_errata_article_phong_example_arithmetic():
     base = L_ART @ (E_ART - 2 * N_ART * (N_ART @ E_ART))
     assert base == pytest.approx(-0.5196 - 0.4, abs=1e-4)
     assert base**3 == pytest.approx(-0.7777, abs=1e-4)
-    assert base**3 != pytest.approx(0.9196, abs=0.1)
+    assert abs(base) == pytest.approx(0.9196, abs=1e-4)  # the printed "cube": the base's size
     H = np.array([0.133, 0.65])
     assert np.linalg.norm(H) == pytest.approx(0.66347, abs=1e-5)
-    assert np.linalg.norm(H) != pytest.approx(0.668, abs=1e-3)
+    assert 0.668 - np.linalg.norm(H) == pytest.approx(0.004532, abs=1e-6)  # the printed norm
     np.testing.assert_allclose(H / np.linalg.norm(H), [0.20048, 0.979701], atol=2e-5)
-    assert 0.133 / 0.668 != pytest.approx(0.20048, abs=1e-3)
+    assert 0.133 / 0.668 == pytest.approx(0.199102, abs=1e-6)  # dividing by it: not 0.20048
 
 
 def test_errata_article_phong_reflection_vector_sign():
@@ -205,7 +205,8 @@ def test_errata_article_half_vector_needs_four_times_the_exponent():
     blinn = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "BlinnPhong1977", p_d=0.0, p_s=1.0, c1=3.0)
     phong = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "Phong1975", p_d=0.0, p_s=1.0, c1=3.0)
     assert blinn == pytest.approx(0.940332, abs=5e-5)  # the article (from rounded 0.133, 0.65)
-    assert blinn != pytest.approx(phong, rel=0.1)
+    assert phong == pytest.approx(0.7777, abs=1e-4)  # the article's (R.V)^3, its sign mended
+    assert blinn - phong == pytest.approx(0.940332 - 0.7777, abs=1e-4)
     four_n = (N_ART @ L_ART) * brdf(L_ART, E_ART, N_ART, "BlinnPhong1977", p_d=0.0, p_s=1.0, c1=12.0)
     assert four_n == pytest.approx(phong, rel=0.01)
     assert (N_ART @ ((L_ART + E_ART) / 2)) ** 3 == pytest.approx(0.274625, abs=2e-4)
@@ -224,7 +225,9 @@ def test_errata_blinn_triangle_angles_sum_to_pi():
     assert result.case == "b"
     assert result.G_masking == pytest.approx(G_b, abs=1e-3)
     assert 1 - result.m_masking / result.facet_length == pytest.approx(G_b, abs=1e-12)
-    assert result.G_masking != pytest.approx(2 - G_b, abs=0.5)
+    # the literal 2 pi: 2 - G_b, above the simulated fraction by 2 (1 - G_b), and above 1
+    assert (2 - G_b) - result.G_masking == pytest.approx(2 * (1 - G_b), abs=2e-3)
+    assert 2 - G_b > 1
     # f = pi - (b + c): sin f = sin(b + c); f = 2 pi - (b + c): sin f = -sin(b + c)
     b, c = 0.7, 0.9
     assert np.sin(np.pi - (b + c)) == pytest.approx(np.sin(b + c))
@@ -249,7 +252,7 @@ def test_errata_blinn_projects_E_not_B():
         assert N_Z @ E_p == pytest.approx(N_Z @ E, abs=1e-15)
         assert H @ E_p == pytest.approx(H @ E, abs=1e-15)
         L_p = L - (L @ axis) * axis
-        assert N_Z @ L_p != pytest.approx(N_Z @ E, abs=1e-3)
+        assert N_Z @ L_p == pytest.approx(N_Z @ L, abs=1e-15)  # L's own N.L, not N.E
         # the plane figure, from the unit in-plane eye vector: 1 - m/l, simulated
         result = simulate_vgroove(L, E, n_rays=20_000)
         G_b = 2 * (N_Z @ H) * (N_Z @ E) / (E @ H)
@@ -330,7 +333,9 @@ def test_errata_lecture_glare_term_is_inverse_cosine():
         surface_per_projected_area = 1.0 / projected_area(square, V)
         assert surface_per_projected_area == pytest.approx(1 / np.cos(theta), rel=1e-12)
         if theta > 0:
-            assert surface_per_projected_area != pytest.approx(1 / theta, rel=0.05)
+            # the lecture's 1/angle, against the truth: off by the factor angle / cos(angle)
+            assert (1 / theta) / surface_per_projected_area == pytest.approx(np.cos(theta) / theta,
+                                                                           rel=1e-12)
 
 
 # --- the figures of Cook & Torrance 1982 Figs. 1-3, Table I and the errata, built end to end -------

@@ -168,8 +168,18 @@ def test_bench_reports_each_size_and_phase(root, capsys):
     assert lines[-1] == "reflectance bench: [1/1] done"
 
 
-def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
+#: a scene for the bench commands below (the bench reads and checks it before its sizes run)
+X_SCENE = ("camera: {position: [0, -5, 0], look_at: [0, 0, 0], fov_deg: 30, width: 8, height: 6}\n"
+           "objects: [{geometry: {type: sphere, radius: 1.0},\n"
+           "           material: {model: Lambert, albedo: 0.5}}]\n"
+           "lights: [{type: directional, direction: [0, -1, 1]}]\n")
+
+
+def test_bench_quiet_prints_no_progress(monkeypatch, capsys, tmp_path):
     import reflectance.bench.run as bench
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "x.yaml").write_text(X_SCENE)
 
     def fake_run_bench(*args, progress=None, **kwargs):
         progress.update(0, "size 8 (1/1)")
@@ -182,12 +192,15 @@ def test_bench_quiet_prints_no_progress(monkeypatch, capsys):
     assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
 
 
-def test_bench_command_defaults_are_the_librarys(monkeypatch):
+def test_bench_command_defaults_are_the_librarys(monkeypatch, tmp_path):
     """`reflectance bench` without options passes run_bench its own defaults for the references
     and the cross-check (the parser reads them from reflectance.bench.measure)."""
     import inspect
 
     import reflectance.bench.run as bench
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "x.yaml").write_text(X_SCENE)
 
     real = inspect.signature(bench.run_bench)
     passed = {}

@@ -363,7 +363,8 @@ def test_a_bad_material_file_is_named_with_its_key(tmp_path, value, files, says)
 def test_cook_torrance_with_s_0_needs_no_m(spectra):
     """Cook & Torrance 1982 Table I: m "not used" for a material with s = 0."""
     document = {"camera": {"position": [0, -5, 0], "look_at": [0, 0, 0], "fov_deg": 30,
-                           "width": 8, "height": 8}, "lights": [],
+                           "width": 8, "height": 8},
+                "lights": [{"type": "directional", "direction": [0, -1, 1]}],
                 "objects": [{"geometry": {"type": "sphere", "radius": 1},
                              "material": {"name": "Cu", "s": 0.0, "d": 1.0}}]}
     assert scene_from_dict(document, spectra_dir=spectra).objects[0].material.roughness is None

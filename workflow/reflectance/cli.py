@@ -444,6 +444,9 @@ def _run_brdf(args):
         raise SystemExit(f"reflectance: {method} needs --material or --n for its Fresnel term")
     if args.k != 0.0 and args.n is None:
         raise SystemExit("reflectance: --k needs --n (a material's k comes with --material)")
+    if args.n is not None and args.k == 0.0 and args.n < 1.0:
+        raise SystemExit(f"reflectance: --n {args.n:g}: a dielectric's index (--k 0) must be at "
+                         f"least 1 (the light comes from air); a metal's n < 1 needs its --k")
     if args.convention is not None and method not in ("Lambert", "CookTorrance1982"):
         raise SystemExit(f"reflectance: --convention applies to Lambert and CookTorrance1982, "
                          f"not {method}")
@@ -700,6 +703,10 @@ def _run_bench(args):
                      (args.grid_size**2 * args.supersample**2, "samples")], streamed=True)
     spectra_dirs = _spectra_dirs(args)
     try:
+        if args.scene is not None:  # read and checked here, before any size's process starts
+            from reflectance.render.scene import load_scene
+
+            load_scene(args.scene, spectra_dir=spectra_dirs)
         scene = args.scene or _default_bench_scene()
         progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
         results = run_bench(scene, args.sizes, args.supersample, args.runs,
@@ -890,9 +897,14 @@ def _run_audit(args):
         W, observer = audit_weights(grid, settings["illuminant"], settings["observer"])
         material = resolve_material(args.material, grid, spectra_dirs)
         warnings = [f"{material.name}: {why}" for why in smooth_F0_warnings(material)]
-        table = audit_table(material, angles, W, methods=methods, space=settings["space"],
-                            average_range_nm=settings["average_range_nm"], observer=observer,
-                            illuminant=settings["illuminant"])
+        try:
+            table = audit_table(material, angles, W, methods=methods, space=settings["space"],
+                                average_range_nm=settings["average_range_nm"],
+                                observer=observer, illuminant=settings["illuminant"])
+        except ValueError as err:  # (a file's material is named after it: say the file)
+            if args.material == material.name:
+                raise
+            raise ValueError(f"{args.material}: {err}") from None
         if args.output is not None:
             from reflectance.audit.shortcuts import write_audit
 
@@ -1054,6 +1066,11 @@ def main(argv=None):
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
         return 0
+    except KeyboardInterrupt:  # Ctrl-C: one line, not a traceback; the shell's status 128 + 2
+        # (every output is written whole or not at all: reflectance.io.atomic)
+        print(f"\nreflectance: {argv[0] if argv else ''}: interrupted; no file written",
+              file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -435,6 +435,7 @@ ANGLE_STEPS = [
     (("figures", "lecture", "brdf_lobes", "polar_step_deg"), 180.0),
     (("figures", "lecture", "fresnel", "angle_step_deg"), 90.0),
     (("figures", "article", "distributions", "polar_step_deg"), 180.0),
+    (("audits", "fresnel_atlas", "angle_step_deg"), 90.0),
 ]
 
 
@@ -489,6 +490,33 @@ def _cross_field(config):
     if not _sum_is_one([lobe[0] for lobe in lobes]):
         problems.append(f"figures.article.distributions.models.mixture.lobes: the weights (first "
                         f"of each [w, m]) must sum to 1, got {[lobe[0] for lobe in lobes]}")
+
+    # audit 4's own grids: each step divides its range (issue 25: else wavelength_grid fails in
+    # the job)
+    sampling = config.get("audits", {}).get("spectral_sampling")
+    if sampling is not None:
+        lo, hi = sampling["range_nm"]
+        key = "audits.spectral_sampling"
+        if not lo < hi:
+            problems.append(f"{key}.range_nm: [{lo:g}, {hi:g}] must be increasing")
+        else:
+            steps = [(f"{key}.steps_nm[{i}]", step) for i, step in enumerate(sampling["steps_nm"])]
+            for name, step in steps + [(f"{key}.reference_step_nm",
+                                        sampling["reference_step_nm"])]:
+                if not _whole_steps(hi - lo, step):
+                    problems.append(f"{name}: {step:g} nm does not divide {key}.range_nm "
+                                    f"[{lo:g}, {hi:g}] ({hi - lo:g} nm)")
+            for i, wl in enumerate(sampling["three_wavelengths_nm"]):
+                if not lo <= wl <= hi:
+                    problems.append(f"{key}.three_wavelengths_nm[{i}]: {wl:g} nm lies outside "
+                                    f"{key}.range_nm [{lo:g}, {hi:g}]")
+
+    # a dielectric (k = 0) has n >= 1: the papers' light comes from air (issue 25)
+    ct_lobe = lecture["brdf_lobes"]["models"]["cook_torrance"]
+    if ct_lobe["k"] == 0 and ct_lobe["n"] < 1:
+        problems.append(f"figures.lecture.brdf_lobes.models.cook_torrance.n: {ct_lobe['n']:g} with "
+                        f"k = 0 is a dielectric's index below 1 (light from inside it); give "
+                        f"n >= 1, or k > 0 for a metal")
 
     # ranges that must hold something
     grid = None
@@ -815,7 +843,8 @@ def _figure_scene_problems(config, spectra_dir):
         try:
             scene_from_dict(document, source=f"{key} (scene {label})")
         except SceneError as err:
-            for line in str(err).splitlines()[1:]:
+            lines = str(err).splitlines()
+            for line in lines[1:] if lines[0] == "invalid scene:" else lines:
                 missing = re.search(r"unknown material '([^']+)'", line)
                 if missing and missing.group(1) in pending:
                     continue  # its spectrum is made by a job before the render

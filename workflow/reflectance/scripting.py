@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import errno
 import logging
 import sys
 import traceback
@@ -45,6 +46,10 @@ def command_line_job(rule, argv=None):
                            params=SimpleNamespace(**json.loads(args.params)))
 
 
+_WRITE_ERRORS = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO}
+"""The errors of a write that the disk refused."""
+
+
 @contextlib.contextmanager
 def script_log(snakemake):
     """Send a script's output and any traceback to ``snakemake.log[0]``; yield a logger."""
@@ -63,6 +68,15 @@ def script_log(snakemake):
         sys.stdout = sys.stderr = stream
         try:
             yield logger
+        except OSError as err:
+            if err.filename is None:
+                traceback.print_exc(file=stream)
+                raise
+            # a file that cannot be written or read (a full disk, a lost folder): one line naming
+            # it, no traceback (issue 25); the job fails
+            logger.error("cannot %s %s: %s", "write" if err.errno in _WRITE_ERRORS else "use",
+                         err.filename, err.strerror or err)
+            raise SystemExit(1) from None
         except BaseException:
             traceback.print_exc(file=stream)
             raise

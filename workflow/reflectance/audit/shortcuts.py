@@ -55,6 +55,7 @@ __all__ = [
     "DE2000_LEVELS",
     "default_angles_deg",
     "looks_like_path",
+    "check_finite_colours",
     "resolve_material",
     "observer_name",
     "audit_weights",
@@ -380,6 +381,23 @@ def shortcuts_XYZ(material, cos_theta, W, methods, space="sRGB", average_range_n
 
 # --- the table ------------------------------------------------------------------------------------
 
+def check_finite_colours(material, XYZ, methods, angles_deg):
+    """Refuse colours that are not finite (an n or k so large that the Fresnel equations
+    overflow: k = 1e300 squared), naming the material, the method and the angle (issue 25).
+
+    Raises
+    ------
+    ValueError
+    """
+    bad = ~np.isfinite(XYZ).all(axis=-1)
+    if bad.any():
+        i, j = (int(v[0]) for v in np.nonzero(bad))
+        raise ValueError(
+            f"{material.name}: its {methods[i]} colour at {float(angles_deg[j]):g} degrees is not "
+            f"finite (X, Y, Z = {', '.join(f'{v:g}' for v in XYZ[i, j])}): its data overflow "
+            f"the Fresnel equations (largest n {np.max(material.n):g}, k {np.max(material.k):g})")
+
+
 def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sRGB",
                 average_range_nm=(380, 780), observer="CIE 1931 2 Degree Standard Observer",
                 illuminant="D65"):
@@ -428,8 +446,10 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     methods = list(dict.fromkeys(methods))
     white = W.sum(axis=0)
     white_xy = XYZ_to_xy(white)
-    every = shortcuts_XYZ(material, cos_theta, W, methods, space, average_range_nm)
+    with np.errstate(over="ignore", invalid="ignore"):  # (refused below, by name)
+        every = shortcuts_XYZ(material, cos_theta, W, methods, space, average_range_nm)
     XYZ = np.stack([every[m] for m in methods])                          # (method, angle, 3)
+    check_finite_colours(material, XYZ, methods, angles)
     exact = every["exact"]
     Lab = XYZ_to_Lab(XYZ, white_xy)
     dE2000 = delta_E_CIE2000(Lab, XYZ_to_Lab(exact, white_xy))
@@ -619,15 +639,19 @@ def write_audit(table, out_dir, white, space="sRGB", title="", metadata=None):
     from reflectance.io.figures import savefig
     from reflectance.io.provenance import metadata_path, write_metadata
 
+    from reflectance.io.atomic import staged_folder
+
     out = Path(out_dir)
     if out.exists() and not out.is_dir():
         raise ValueError(f"-o {out}: exists and is not a folder")
     fig = _figure(dict(table, _white=np.asarray(white)), space, title)
     text = format_audit_csv(table)
-    savefig(fig, out / "audit.png", out / "audit.pdf", tag=display_tag(space))  # its swatches
-    write_text(out / "audit.csv", text)
-    written = [out / "audit.csv", out / "audit.png", out / "audit.pdf"]
-    if metadata is not None:
-        write_metadata(metadata_path(out / "audit.csv"), metadata, tables=[out / "audit.csv"])
-        written.append(metadata_path(out / "audit.csv"))
-    return written
+    names = ["audit.csv", "audit.png", "audit.pdf"]
+    with staged_folder(out) as stage:  # every file, or none (issue 25)
+        savefig(fig, stage / "audit.png", stage / "audit.pdf", tag=display_tag(space))
+        write_text(stage / "audit.csv", text)
+        if metadata is not None:
+            write_metadata(metadata_path(stage / "audit.csv"), metadata,
+                           tables=[stage / "audit.csv"])
+            names.append(metadata_path(stage / "audit.csv").name)
+    return [out / name for name in names]

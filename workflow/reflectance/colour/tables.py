@@ -25,12 +25,14 @@ three variant tables are colour-science's own (``lower_keys``, ``slugified_keys`
 from __future__ import annotations
 
 import functools
+import io
 import json
 
 import numpy as np
 
 from reflectance.io.cache import (CACHE_ENVIRONMENT_VARIABLE, cache_root, distribution_version,
                                   file_name)
+from reflectance.io.cache import load as _load
 from reflectance.io.cache import store as _store
 
 __all__ = [
@@ -75,7 +77,7 @@ def _array(kind, parts, compute, ndim):
     """The float64 array ``compute()`` (a colour-science computation), cached under (kind, parts)."""
     path = _path(kind, parts, ".npy")
     try:
-        value = np.load(path, allow_pickle=False)
+        value = np.load(io.BytesIO(_load(path)), allow_pickle=False)  # checked: issue 25
         if value.dtype == np.float64 and value.ndim == ndim:
             value.setflags(write=False)
             return value
@@ -107,7 +109,7 @@ def _names(kind):
     """colour-science's keys of ``kind`` and its lower / slug / canonical variant -> key tables."""
     path = _path(f"names-{kind}", [], ".json")
     try:
-        names = json.loads(path.read_text())
+        names = json.loads(_load(path))
         if isinstance(names, dict) and set(names) == {"keys", "lower", "slug", "canonical"}:
             return names
     except (OSError, ValueError):
@@ -286,7 +288,7 @@ def munsell_value_and_Y(notation):
     """
     path = _path("munsell", [notation], ".json")
     try:
-        stored = json.loads(path.read_text())
+        stored = json.loads(_load(path))
         V, Y = stored["V"], stored["Y"]
         if isinstance(V, float) and (Y is None or isinstance(Y, float)):
             return V, Y

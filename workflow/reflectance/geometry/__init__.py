@@ -1,7 +1,8 @@
 """Geometry: the shapes the renderer and the papers" figures draw.
 
 Modules: vectors (3-vector helpers), shapes (vase of revolution, sphere, torus, superellipsoid,
-plane, mesh files), watch (C&T 1982 Fig. 8), texture (Blinn 1977's texture patterns).
+plane, mesh files), mesh_files (mesh files checked before VTK reads them), watch (C&T 1982
+Fig. 8), texture (Blinn 1977's texture patterns).
 
 Public names are loaded on first use (``from reflectance.geometry import name``), so importing
 the package stays cheap.
@@ -10,7 +11,7 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("shapes", "texture", "vectors", "watch")
+_MODULES = ("mesh_files", "shapes", "texture", "vectors", "watch")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -23,6 +24,7 @@ _EXPORTS = {
     "plane": "shapes",
     "MESH_FILE_SUFFIXES": "shapes",
     "mesh_from_file": "shapes",
+    "check_mesh_file": "mesh_files",
     "place": "shapes",
     "compose": "shapes",
     "analytic_spheres": "shapes",

@@ -166,7 +166,9 @@ def _cached_mesh(kind, build, *args):
     written, just build."""
     import zipfile
 
-    from reflectance.io.cache import DISK_FOLDERS, file_name, prune, store
+    import io
+
+    from reflectance.io.cache import DISK_FOLDERS, file_name, load, prune, store
 
     try:
         path = _mesh_cache_directory() / file_name(_MESH_FORMAT, kind, args, ".npz",
@@ -174,7 +176,7 @@ def _cached_mesh(kind, build, *args):
     except (TypeError, ValueError, OSError, RuntimeError):  # not plain values; no home folder
         return build(*args)
     try:
-        with np.load(path, allow_pickle=False) as data:
+        with np.load(io.BytesIO(load(path)), allow_pickle=False) as data:  # checked: issue 25
             arrays = {name: data[name] for name in _MESH_ARRAYS}
         n_points, n_tris = len(arrays["points"]), len(arrays["tris"])
         for name, (dtype, columns) in _MESH_ARRAYS.items():
@@ -788,7 +790,19 @@ def mesh_from_file(path, feature_angle=30.0):
                          f"known: {list(MESH_FILE_SUFFIXES)}")
     if not path.is_file():
         raise ValueError(f"{path}: mesh file not found")
-    return _with_attributes(pv.read(path), float(feature_angle), str(path))
+    from reflectance.geometry.mesh_files import check_mesh_file, check_read_mesh
+
+    check_mesh_file(path)  # what would crash VTK's reader, or exhaust memory, is refused first
+    from pyvista.core.utilities import VtkErrorCatcher
+
+    try:
+        with VtkErrorCatcher(raise_errors=True, send_to_logging=False):
+            mesh = pv.read(path)
+    except RuntimeError as err:
+        first = str(err).strip().splitlines()[0] if str(err).strip() else "an error"
+        raise ValueError(f"{path}: VTK cannot read it ({first[:200]})") from None
+    check_read_mesh(mesh, path)  # (the formats whose payload VTK alone decodes)
+    return _with_attributes(mesh, float(feature_angle), str(path))
 
 
 def place(mesh, offset=(0.0, 0.0, 0.0), scale=1.0, rotation=None):

@@ -15,8 +15,8 @@ import socket
 import tempfile
 from pathlib import Path
 
-__all__ = ["atomic_write", "write_text", "remove_stale_temporaries", "process_alive",
-           "process_start_time"]
+__all__ = ["atomic_write", "write_text", "staged_folder", "remove_stale_temporaries",
+           "process_alive", "process_start_time"]
 
 #: a temporary file of :func:`atomic_write`: hidden, then target name, host, pid, mkstemp's 8 characters
 _TEMPORARY = re.compile(r"^\.(?P<name>.+)\.tmp-(?P<host>[A-Za-z0-9-]*)-(?P<pid>\d+)-[a-z0-9_]{8}")
@@ -90,6 +90,12 @@ def remove_stale_temporaries(folder):
                 with contextlib.suppress(FileNotFoundError):  # another writer was quicker
                     os.unlink(entry.path)
                     removed.append(Path(entry.path))
+            elif (match and match["host"] == host and not process_alive(int(match["pid"]))
+                  and entry.is_dir(follow_symlinks=False)):  # a staged_folder's
+                import shutil
+
+                shutil.rmtree(entry.path, ignore_errors=True)
+                removed.append(Path(entry.path))
     return removed
 
 
@@ -131,6 +137,10 @@ def atomic_write(path, suffix=None):
         yield Path(tmp)
         os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the file ordinary permissions
         os.replace(tmp, path)
+    except OSError as err:  # (a full disk: named by the file asked for, not the temporary)
+        if err.errno is None or (err.filename is not None and Path(err.filename) != Path(tmp)):
+            raise  # (a write on the open file names none: it is this one too)
+        raise type(err)(err.errno, err.strerror, str(path)) from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
@@ -150,3 +160,54 @@ def write_text(path, text):
     """
     with atomic_write(path) as tmp:
         Path(tmp).write_bytes(str(text).encode("utf-8"))
+
+
+@contextlib.contextmanager
+def staged_folder(folder):
+    """Yield a hidden folder beside ``folder`` to write several files into; only if the block
+    succeeds are they moved into ``folder`` (all of them, or none: issue 25).
+
+    A ``folder`` that does not exist yet is the staged folder renamed, in one step; into one that
+    exists, each file is renamed onto its name (files of ``folder`` that the block did not write
+    stay). A failed or interrupted block leaves nothing: its staged folder is removed then, or, if
+    the process was killed, by the next write beside it (:func:`remove_stale_temporaries`).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "out"
+    >>> with staged_folder(out) as tmp:
+    ...     _ = (tmp / "a.txt").write_text("a"), (tmp / "b.txt").write_text("b")
+    >>> sorted(p.name for p in out.iterdir())
+    ['a.txt', 'b.txt']
+    >>> try:
+    ...     with staged_folder(out) as tmp:
+    ...         _ = (tmp / "a.txt").write_text("changed")
+    ...         raise ValueError("a later file failed")
+    ... except ValueError:
+    ...     pass
+    >>> (out / "a.txt").read_text(), sorted(p.name for p in out.parent.iterdir())
+    ('a', ['out'])
+    """
+    import shutil
+
+    folder = Path(folder)
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(folder.parent)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{folder.name}.tmp-{_host()}-{os.getpid()}-",
+                                dir=folder.parent))
+    umask = os.umask(0)
+    os.umask(umask)
+    try:
+        yield tmp
+        os.chmod(tmp, 0o777 & ~umask)  # mkdtemp makes 0700
+        try:
+            os.rename(tmp, folder)  # (a folder that does not exist: all files in one step)
+        except OSError:
+            if not folder.is_dir():
+                raise
+            for entry in sorted(tmp.iterdir()):
+                os.replace(entry, folder / entry.name)
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)

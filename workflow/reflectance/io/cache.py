@@ -18,8 +18,9 @@ the meshes of :mod:`reflectance.geometry.shapes`) keeps a folder of its own ther
 (:data:`DISK_FOLDERS`), named after what its values depend on, and names each file by a hash of
 what it holds; a folder for a code or library version no longer in use is pruned
 (:func:`prune`). Files are written atomically (a temporary file, then a rename), so a reader sees
-a whole file or none; an unwritable or unreadable cache is ignored (the values are computed
-again).
+a whole file or none; each ends with the SHA-256 of what it holds, checked by :func:`load`, so a
+file changed after it was written (by hand, a disk error, another program) is computed again, never
+used (issue 25); an unwritable or unreadable cache is ignored (the values are computed again).
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ import tempfile
 from pathlib import Path
 
 __all__ = ["Memo", "MEMOS", "BUILT_MESHES", "COMPOSED_MESHES", "TRACES", "clear",
-           "CACHE_ENVIRONMENT_VARIABLE", "DISK_FOLDERS", "cache_root", "file_name", "store",
+           "CACHE_ENVIRONMENT_VARIABLE", "DISK_FOLDERS", "cache_root", "file_name", "store", "load",
            "distribution_version", "source_digest", "prune"]
 
 MEMOS = {}
@@ -154,14 +155,38 @@ def file_name(layout, kind, parts, suffix, default=None):
     return f"{kind}-{digest.hexdigest()[:24]}{suffix}"
 
 
+_CHECKSUM_MARK = b"\nreflectance-sha256:"
+"""What precedes the SHA-256 (32 bytes) that ends every cached file."""
+
+
 def store(path, write):
-    """Write ``path`` atomically with ``write(file)``; give up silently if the cache is unwritable."""
+    """Write ``path`` atomically with ``write(file)``, followed by the SHA-256 of what it wrote
+    (:func:`load` checks it); give up silently if the cache is unwritable.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "value.txt"
+    >>> store(path, lambda file: file.write(b"42"))
+    >>> load(path)
+    b'42'
+    >>> _ = path.write_bytes(path.read_bytes().replace(b"42", b"43", 1))   # changed afterwards
+    >>> load(path)
+    Traceback (most recent call last):
+    ...
+    ValueError: ...value.txt: its content does not match its checksum
+    """
+    import io
+
     tmp = None
     try:
+        buffer = io.BytesIO()
+        write(buffer)
+        payload = buffer.getvalue()
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
         with os.fdopen(fd, "wb") as file:
-            write(file)
+            file.write(payload + _CHECKSUM_MARK + hashlib.sha256(payload).digest())
         os.replace(tmp, path)
     except OSError:
         if tmp is not None:
@@ -169,6 +194,26 @@ def store(path, write):
                 os.unlink(tmp)
             except OSError:
                 pass
+
+
+def load(path):
+    """The bytes :func:`store` wrote to ``path``, once their SHA-256 matches the one stored
+    after them.
+
+    Raises
+    ------
+    OSError
+        The file cannot be read (or is missing).
+    ValueError
+        Its content does not match its checksum (changed since it was written, or written
+        without one): compute the value again.
+    """
+    data = Path(path).read_bytes()
+    end = len(data) - 32 - len(_CHECKSUM_MARK)
+    payload, mark, digest = data[:max(end, 0)], data[end:end + len(_CHECKSUM_MARK)], data[-32:]
+    if end < 0 or mark != _CHECKSUM_MARK or hashlib.sha256(payload).digest() != digest:
+        raise ValueError(f"{path}: its content does not match its checksum")
+    return payload
 
 
 def distribution_version(module, distribution):

