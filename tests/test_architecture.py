@@ -38,7 +38,8 @@ TOP_LEVEL = {
     "__init__": set(),  # loads the subpackages by name on first use (import_module)
     "__main__": {"cli"},
     "lazy": set(),  # the public faces' loader
-    "scripting": set(),  # the workflow scripts' logging and parameters
+    # the workflow scripts' logging and parameters, and their audits' metadata files (the version)
+    "scripting": {"__init__", "io"},
     "resume": {"io"},  # what a killed run left (the Snakefile clears it)
     # config.yaml's checks build every figure's scene, without rendering
     "config": {"papers", "render", "audit", "geometry", "optics", "colour", "io"},  # audit: audit 8's keys
