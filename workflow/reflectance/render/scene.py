@@ -53,6 +53,7 @@ __all__ = [
     "validate_scene",
     "scene_from_dict",
     "load_scene",
+    "scene_from_text",
     "write_scene_file",
     "constant_index_material",
 ]
@@ -590,13 +591,25 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     if not path.is_file():
         raise SceneError(f"{path}: no such scene file")
     try:
-        document = yaml.safe_load(path.read_text(encoding="utf-8-sig"))
-    except yaml.YAMLError as err:
-        raise SceneError(f"{path}: not valid YAML: {err}") from None
-    except UnicodeDecodeError as err:
-        raise SceneError(f"{path}: not a UTF-8 text file (byte {err.start})") from None
+        text = path.read_bytes()
     except OSError as err:
         raise SceneError(f"{path}: cannot read: {err.strerror}") from None
+    return scene_from_text(text, str(path), path.parent, spectra_dir=spectra_dir, width=width,
+                           height=height, supersample=supersample, spectral=spectral,
+                           wavelengths=wavelengths)
+
+
+def scene_from_text(text, source, base_dir, spectra_dir=None, width=None, height=None,
+                    supersample=None, spectral=None, wavelengths=None):
+    """A scene from the bytes of a scene file (``reflectance render -`` reads them from standard
+    input), named ``source`` in messages, its relative paths taken from ``base_dir``; the other
+    parameters as for :func:`load_scene`."""
+    try:
+        document = yaml.safe_load(text.decode("utf-8-sig") if isinstance(text, bytes) else text)
+    except yaml.YAMLError as err:
+        raise SceneError(f"{source}: not valid YAML: {err}") from None
+    except UnicodeDecodeError as err:
+        raise SceneError(f"{source}: not a UTF-8 text file (byte {err.start})") from None
     if isinstance(document, dict):
         camera = document.get("camera")
         for key, value in (("width", width), ("height", height), ("supersample", supersample)):
@@ -606,7 +619,7 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
             document["spectral"] = spectral
         if wavelengths is not None:
             document["wavelengths"] = dict(wavelengths)
-    return scene_from_dict(document, source=str(path), base_dir=path.parent,
+    return scene_from_dict(document, source=source, base_dir=Path(base_dir),
                            spectra_dir=spectra_dir)
 
 
