@@ -49,7 +49,10 @@
     out.landing = document.querySelector("#app") ? document.querySelector("#app").innerText : "";
     // numbered lists on the landing page (it has none: Docutils reads an initial, "J. F. Blinn",
     // at the start of a line as a list's letter), each as the HTML that opens it
+    // (Docutils marks its enumerated lists with the numbering's kind; the report's own
+    // navigation is an <ol> too, without)
     out.landingLists = Array.from(document.querySelectorAll("#app ol"))
+      .filter((ol) => /\b(arabic|loweralpha|upperalpha|lowerroman|upperroman)\b/.test(ol.className))
       .map((ol) => ol.outerHTML.slice(0, 120));
     out.badLinks.push(...badLinks());
     for (const category of Object.keys(categories)) {
