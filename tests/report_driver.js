@@ -40,12 +40,20 @@
       .filter((url) => !/^(#|data:|https?:|mailto:|javascript:)/.test(url));
   }
 
-  const out = { landing: "", menu: [], categories: {}, results: {}, badLinks: [], errors };
+  const out = { landing: "", landingLists: [], menu: [], categories: {}, results: {}, badLinks: [],
+                errors };
 
   async function run() {
     for (let i = 0; i < 100 && typeof app === "undefined"; i++) await sleep(50);
     await sleep(200);
     out.landing = document.querySelector("#app") ? document.querySelector("#app").innerText : "";
+    // numbered lists on the landing page (it has none: Docutils reads an initial, "J. F. Blinn",
+    // at the start of a line as a list's letter), each as the HTML that opens it
+    // (Docutils marks its enumerated lists with the numbering's kind; the report's own
+    // navigation is an <ol> too, without)
+    out.landingLists = Array.from(document.querySelectorAll("#app ol"))
+      .filter((ol) => /\b(arabic|loweralpha|upperalpha|lowerroman|upperroman)\b/.test(ol.className))
+      .map((ol) => ol.outerHTML.slice(0, 120));
     out.badLinks.push(...badLinks());
     for (const category of Object.keys(categories)) {
       app.setView({ navbarMode: "menu" });

@@ -38,7 +38,8 @@ TOP_LEVEL = {
     "__init__": set(),  # loads the subpackages by name on first use (import_module)
     "__main__": {"cli"},
     "lazy": set(),  # the public faces' loader
-    "scripting": set(),  # the workflow scripts' logging and parameters
+    # the workflow scripts' logging and parameters, and their audits' metadata files (the version)
+    "scripting": {"__init__", "io"},
     "resume": {"io"},  # what a killed run left (the Snakefile clears it)
     # config.yaml's checks build every figure's scene, without rendering
     "config": {"papers", "render", "audit", "geometry", "optics", "colour", "io"},  # audit: audit 8's keys
@@ -224,3 +225,81 @@ def test_each_subpackage_has_a_public_face():
         assert package.__all__, name
         for public in package.__all__:
             assert getattr(package, public) is not None, f"reflectance.{name}.{public}"
+
+
+def _imported_top_names(text, filename):
+    """The top-level names of every module ``text`` imports (absolute imports only)."""
+    names = set()
+    for node in ast.walk(ast.parse(text, filename)):
+        if isinstance(node, ast.Import):
+            names |= {alias.name.split(".")[0] for alias in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names.add(node.module.split(".")[0])
+    return names
+
+
+def _python_of_rules(path):
+    """The Python lines of a Snakefile or .smk file (its import statements) as a module."""
+    return "\n".join(line for line in path.read_text().splitlines()
+                     if line.startswith(("import ", "from ")))
+
+
+def test_the_build_needs_no_extra():
+    """`pip install -e .` builds every figure (issue 27, part 3): everything the workflow's
+    Snakefile, rules, scripts and the library they use import is the standard library, the
+    package itself or a core dependency of pyproject.toml (or one of theirs), never a package
+    only an extra brings (the test stack, Sphinx, Mitsuba, the SLURM plugin). reflectance.bench,
+    which imports Mitsuba for its cross-check, is the `reflectance bench` command's alone: no
+    rule or script imports it."""
+    import re
+    import sys
+    from importlib.metadata import (PackageNotFoundError, distribution, packages_distributions,
+                                    requires)
+
+    tomllib = pytest.importorskip("tomllib")  # Python 3.11
+
+    root = PACKAGE.parents[1]
+    project = tomllib.loads((root / "pyproject.toml").read_text())["project"]
+    name_of = lambda requirement: re.split(r"[\s<>=!~;\[(]", requirement, 1)[0].lower()  # noqa: E731
+    core = {name_of(r) for r in project["dependencies"]}
+    extra_only = {name_of(r) for rs in project["optional-dependencies"].values() for r in rs
+                  if not r.startswith("reflectance")} - core
+    # what the core dependencies bring with them (their own requirements, transitively)
+    allowed, todo = set(core), list(core)
+    while todo:
+        try:
+            needs = requires(todo.pop()) or []
+        except PackageNotFoundError:
+            continue
+        for requirement in needs:
+            if "extra ==" in requirement:
+                continue
+            name = name_of(requirement).replace("_", "-")
+            if name not in allowed:
+                allowed.add(name)
+                todo.append(name)
+    sources = [(p, p.read_text()) for p in sorted((root / "workflow" / "scripts").glob("*.py"))]
+    sources += [(p, _python_of_rules(p)) for p in [root / "Snakefile",
+                                                    *sorted((root / "workflow" / "rules").glob("*.smk"))]]
+    sources += [(p, p.read_text()) for p in modules() if "bench" not in p.relative_to(PACKAGE).parts
+                and p.name != "cli.py"]  # (the command line, not the build)
+    names = set()
+    for path, text in sources:
+        found = _imported_top_names(text, str(path))
+        if path.suffix in (".smk", "") or path.parent.name == "scripts":
+            assert not re.search(r"reflectance\.bench|from reflectance import bench", text), path
+        names |= found
+    distributions = packages_distributions()
+    problems = []
+    for name in sorted(names - set(sys.stdlib_module_names) - {"reflectance", "__future__"}):
+        dists = {d.lower().replace("_", "-") for d in distributions.get(name, [])}
+        if not dists:  # a bare extension module (OpenEXR.so): its distribution has its name
+            try:
+                dists = {distribution(name).metadata["Name"].lower()}
+            except PackageNotFoundError:
+                pass
+        if not dists:
+            problems.append(f"{name}: no installed distribution provides it")
+        elif not dists & allowed or dists & extra_only:
+            problems.append(f"{name}: from {sorted(dists)}, not a core dependency")
+    assert problems == []

@@ -210,3 +210,72 @@ objects:
     material: {material}
 lights: [{{type: directional, direction: [0, -1, 1]}}]
 """
+
+
+def test_top_level_help_says_which_commands_print_csv(capsys):
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "Each command prints CSV" not in text
+    assert "colour, spectra, brdf and audit print CSV" in text
+    assert "render writes images" in text and "bench prints a timing report" in text
+
+
+def _stdin(monkeypatch, data):
+    monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(data)))
+
+
+def test_audit_reads_a_spectrum_from_standard_input(root, capsys, monkeypatch, tmp_path):
+    """`reflectance audit -`: the same numbers as the same file named, the material 'stdin', and
+    -o's metadata naming standard input with the hash of the bytes read."""
+    import hashlib
+
+    import yaml
+
+    data = (root / "spectra" / "Cu.csv").read_bytes()
+    named = run_cli(["audit", str(root / "spectra" / "Cu.csv"), "--angle", "0", "70"], capsys)
+    _stdin(monkeypatch, data)
+    piped = run_cli(["audit", "-", "--angle", "0", "70", "-o", str(tmp_path)], capsys)
+    assert piped.splitlines()[0] == named.splitlines()[0]
+    assert [line.split(",", 1)[1] for line in piped.splitlines()[1:]] == \
+        [line.split(",", 1)[1] for line in named.splitlines()[1:]]
+    assert all(line.startswith("stdin,") for line in piped.splitlines()[1:])
+    source = yaml.safe_load((tmp_path / "audit_metadata.yaml").read_text())["input"]
+    assert source["file"] == "- (standard input)"
+    assert source["sha256"] == hashlib.sha256(data).hexdigest()
+    # bad input on standard input is named as such, in one line
+    _stdin(monkeypatch, b"wavelength_nm,reflectance\n400,abc\n500,0.2\n")
+    with pytest.raises(SystemExit) as err:
+        main(["audit", "-"])
+    assert str(err.value.code).startswith("reflectance: <standard input>")
+
+
+def test_render_exposure_stops_scale_the_automatic_exposure(tmp_path, capsys, monkeypatch):
+    """--exposure-stops S is the automatic exposure times 2**S (0: the automatic one itself);
+    --exposure is an absolute factor; the two are refused together. The scene read from standard
+    input (`render -`) gives the same image as the file."""
+    from reflectance.io.images import read_exr
+
+    monkeypatch.chdir(tmp_path)
+    scene = tmp_path / "s.yaml"
+    scene.write_text(SCENE.format(material=json.dumps({"name": "Cu", "m": 0.3})))
+    scales = {}
+    for label, extra in (("auto", []), ("0", ["--exposure-stops", "0"]),
+                         ("+1", ["--exposure-stops", "1"]), ("-2.5", ["--exposure-stops", "-2.5"]),
+                         ("absolute", ["--exposure", "0.75"])):
+        out = tmp_path / f"{label}.exr"
+        assert main(["render", "s.yaml", "-o", str(out), "--quiet", *extra]) == 0
+        XYZ, header = read_exr(out)
+        scales[label] = float(header["display_exposure_scale"])
+    assert scales["auto"] > 0
+    assert scales["0"] == pytest.approx(scales["auto"], rel=1e-12)
+    assert scales["+1"] == pytest.approx(2 * scales["auto"], rel=1e-12)
+    assert scales["-2.5"] == pytest.approx(scales["auto"] / 2 ** 2.5, rel=1e-12)
+    assert scales["absolute"] == 0.75
+    with pytest.raises(SystemExit) as err:
+        main(["render", "s.yaml", "-o", "x.exr", "--exposure", "1", "--exposure-stops", "1"])
+    assert "argument --exposure-stops: not allowed with argument --exposure" in str(err.value.code)
+    _stdin(monkeypatch, scene.read_bytes())
+    assert main(["render", "-", "-o", str(tmp_path / "stdin.exr"), "--quiet"]) == 0
+    np.testing.assert_array_equal(read_exr(tmp_path / "stdin.exr")[0],
+                                  read_exr(tmp_path / "auto.exr")[0])

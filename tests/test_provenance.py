@@ -79,3 +79,53 @@ def test_git_state_is_the_checkout_commit_and_dirty_flag(project):
     assert git_state(project) == {"commit": head, "dirty": True}
     # a folder inside the repository is not a checkout of its own
     assert git_state(project / "spectra") == {"commit": None, "dirty": None}
+
+
+def _job(tmp_path, header, rule="audit_x"):
+    """A stand-in for a job of an audit rule: one input, one table, the metadata file."""
+    from types import SimpleNamespace
+
+    (tmp_path / "in.csv").write_bytes(b"wavelength_nm,reflectance\n400,0.5\n")
+    (tmp_path / "t.csv").write_text(header + "\n1,2\n")
+    return SimpleNamespace(rule=rule, input=[str(tmp_path / "in.csv")],
+                           output=_Outputs(table=str(tmp_path / "t.csv"),
+                                           metadata=str(tmp_path / "t_metadata.yaml")))
+
+
+class _Outputs(list):
+    """Snakemake's named output list: iterable, and each file by name."""
+
+    def __init__(self, **named):
+        super().__init__(named.values())
+        self.__dict__.update(named)
+
+
+def test_audit_metadata_hashes_the_inputs_and_gives_every_column_a_unit(tmp_path):
+    import hashlib
+
+    import reflectance
+    from reflectance.scripting import write_audit_metadata
+
+    job = _job(tmp_path, "angle_deg,dE2000_max")
+    write_audit_metadata(job, "a test", illuminant="A", observer="CIE 1931 2 Degree Standard "
+                         "Observer", wavelengths_nm={"start_nm": 380, "end_nm": 780, "step_nm": 5},
+                         units={"angle_deg": "deg", "dE2000_*": "CIEDE2000"}, space="sRGB")
+    doc = yaml.safe_load((tmp_path / "t_metadata.yaml").read_text())
+    assert doc["reflectance"] == reflectance.__version__
+    assert doc["illuminant"] == "A" and doc["space"] == "sRGB"
+    assert doc["wavelengths_nm"] == {"start": 380, "end": 780, "step": 5}
+    digest = hashlib.sha256(b"wavelength_nm,reflectance\n400,0.5\n").hexdigest()
+    assert doc["inputs"] == {str(tmp_path / "in.csv"): digest}
+    assert doc["columns"] == {"t.csv": {"angle_deg": {"unit": "deg"},
+                                        "dE2000_max": {"unit": "CIEDE2000"}}}
+    assert doc["tables"]["t.csv"] == hashlib.sha256((tmp_path / "t.csv").read_bytes()).hexdigest()
+
+
+def test_audit_metadata_refuses_a_column_without_a_unit(tmp_path):
+    from reflectance.scripting import write_audit_metadata
+
+    job = _job(tmp_path, "angle_deg,hue")
+    with pytest.raises(ValueError, match="audit_x: t.csv: column 'hue' has no unit"):
+        write_audit_metadata(job, "a test", illuminant=None, observer=None, wavelengths_nm=None,
+                             units={"angle_deg": "deg"})
+    assert not (tmp_path / "t_metadata.yaml").exists()

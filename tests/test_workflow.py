@@ -377,6 +377,10 @@ def test_report_reads_in_a_browser(after_build, root):
 
     # the landing page is the workflow description, not a bare rule graph
     assert "How to read it" in seen["landing"]
+    # its texts' authors read as printed, not as numbered lists ("10. 6. Blinn" from "J. F.")
+    assert seen["landingLists"] == []
+    for author in ("J. F. Blinn", "R. L. Cook and K. E. Torrance", "B. Russin"):
+        assert author in seen["landing"]
     # every category and subcategory the rules name is in the menu, opens, and lists its results
     text = _rules_text(root)
     categories = set(re.findall(r'(?<![a-z])category="([^"]+)"', text))

@@ -21,7 +21,7 @@ fresnel_conductor``, ``from reflectance.render import render``.
 
 from importlib import import_module
 
-__version__ = "0.1.0"
+__version__ = "0.4.0"
 
 _SUBPACKAGES = ("optics", "colour", "geometry", "render", "audit", "papers", "bench", "io")
 

@@ -506,16 +506,22 @@ def _add_render(sub):
                     "least one). A bad scene is reported, by file and key, before anything is "
                     "rendered or written. Progress goes to standard error (a bar on a terminal, "
                     "one line per phase otherwise).")
-    p.add_argument("scene", metavar="SCENE.yaml", help="scene file")
+    p.add_argument("scene", metavar="SCENE.yaml", help="scene file (- reads it from standard "
+                                                       "input; its relative paths from here)")
     p.add_argument("-o", "--output", metavar="OUT.exr", help="linear XYZ image")
     p.add_argument("--png", metavar="OUT.png", help="display image")
     p.add_argument("--rgb-exr", metavar="OUT.exr",
                    help="display-referred linear RGB image (channels R, G, B; the display's "
                         "chromaticities): exposed and gamut clipped as the PNG, no transfer")
-    p.add_argument("--exposure", type=_real(0.0, 1e30, lo_open=True), metavar="FACTOR",
-                   help="scale the XYZ by FACTOR for the PNG and the RGB EXR instead of the "
-                        "scene's automatic exposure (the XYZ EXR's display_exposure_scale "
-                        "records the one used)")
+    exposure = p.add_mutually_exclusive_group()
+    exposure.add_argument("--exposure", type=_real(0.0, 1e30, lo_open=True), metavar="FACTOR",
+                          help="an absolute factor on the scene's XYZ (not stops) for the PNG and "
+                               "the RGB EXR, instead of the scene's automatic exposure (the XYZ "
+                               "EXR's display_exposure_scale records the one used)")
+    exposure.add_argument("--exposure-stops", type=_real(-64.0, 64.0), metavar="STOPS",
+                          help="brighten (or, negative, darken) the scene's automatic exposure "
+                               "by STOPS photographic stops: its factor times 2**STOPS (-64 to "
+                               "64; not with --exposure)")
     p.add_argument("--width", type=PIXELS, help="override the camera's width (pixels, 1 to 16384)")
     p.add_argument("--height", type=PIXELS,
                    help="override the camera's height (pixels, 1 to 16384)")
@@ -546,8 +552,9 @@ def _writable(option, path):
 
 def _run_render(args):
     from reflectance.io.progress import Progress
-    from reflectance.render.pipeline import render, render_warnings, write_render
-    from reflectance.render.scene import load_scene
+    from reflectance.render.pipeline import (automatic_exposure, render, render_warnings,
+                                             write_render)
+    from reflectance.render.scene import load_scene, scene_from_text
 
     outputs = [(option, path, suffix) for option, path, suffix in
                (("-o", args.output, ".exr"), ("--png", args.png, ".png"),
@@ -571,17 +578,33 @@ def _run_render(args):
         phases.index(phase.rsplit(": ", 1)[-1]), phase)
     try:
         step("scene")
-        scene = load_scene(args.scene, spectra_dir=spectra_dirs, width=args.width,
-                           height=args.height, supersample=args.supersample,
-                           spectral=args.spectral)
+        options = dict(spectra_dir=spectra_dirs, width=args.width, height=args.height,
+                       supersample=args.supersample, spectral=args.spectral)
+        if args.scene == "-":
+            from reflectance.io.yamlfile import MAX_BYTES
+
+            # one byte past the bound is enough for its one-line refusal
+            scene = scene_from_text(sys.stdin.buffer.read(MAX_BYTES + 1), "<standard input>",
+                                    Path.cwd(),
+                                    **options)
+        else:
+            scene = load_scene(args.scene, **options)
         result = render(scene, progress=step)
     except ValueError as err:
         progress.close("failed", done=0)
         raise SystemExit(f"reflectance: {err}") from None
     step("writing")
     named = ", ".join(f"{option} {path}" for option, path, _ in outputs)
+    exposure = args.exposure
+    if args.exposure_stops is not None:
+        automatic = automatic_exposure(result)
+        if not (math.isfinite(automatic) and automatic > 0):
+            progress.close("failed", done=4)
+            raise SystemExit(f"reflectance: --exposure-stops: the scene's automatic exposure is "
+                             f"{automatic:g} (an empty image?): give --exposure FACTOR instead")
+        exposure = automatic * 2.0 ** args.exposure_stops
     try:
-        write_render(result, args.output, args.png, args.rgb_exr, exposure=args.exposure)
+        write_render(result, args.output, args.png, args.rgb_exr, exposure=exposure)
     except (OSError, ValueError) as err:  # all files or none
         progress.close("failed", done=4)
         where = f" {err.filename}" if getattr(err, "filename", None) else ""
@@ -801,7 +824,8 @@ def _add_audit(sub):
                                     smooth_ratio=SMOOTH_F0_LIMITS["ratio"]),
         formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("material", metavar="MATERIAL_OR_FILE", nargs="?",
-                   help="a bundled material name or a CSV file (forms below)")
+                   help="a bundled material name or a CSV file (forms below); - reads the CSV "
+                        "from standard input")
     p.add_argument("--database", nargs="?", const="", metavar="SHELF",
                    help="audit every refractiveindex.info dataset under SHELF instead (default: "
                         "the shelves of config.yaml's audits.database; see below)")
@@ -889,13 +913,22 @@ def _run_audit(args):
     _check_size("--wavelengths", f"{step:g} nm from {start:g} to {end:g} nm",
                 [(_wavelength_points(start, end, step), "wavelengths"),
                  (len(angles), "angles"), (len(methods), "methods")])
+    import tempfile
+
+    stdin = source = None
     try:
         from reflectance.colour.display import display_space
 
         display_space(settings["space"])
         grid = wavelength_grid(*settings["wavelengths"])
         W, observer = audit_weights(grid, settings["illuminant"], settings["observer"])
-        material = resolve_material(args.material, grid, spectra_dirs)
+        if args.material == "-":  # a spectrum CSV on standard input: read as the file stdin.csv
+            stdin = tempfile.TemporaryDirectory(prefix="reflectance-audit-")
+            source = Path(stdin.name) / "stdin.csv"
+            source.write_bytes(sys.stdin.buffer.read())
+            material = resolve_material(str(source), grid, spectra_dirs)
+        else:
+            material = resolve_material(args.material, grid, spectra_dirs)
         warnings = [f"{material.name}: {why}" for why in smooth_F0_warnings(material)]
         try:
             table = audit_table(material, angles, W, methods=methods, space=settings["space"],
@@ -909,15 +942,22 @@ def _run_audit(args):
             from reflectance.audit.shortcuts import write_audit
 
             metadata = audit_metadata(table, settings, material,
-                                      source=_material_source(args.material, spectra_dirs),
+                                      source=source if stdin is not None else
+                                      _material_source(args.material, spectra_dirs),
                                       warnings=warnings)
+            if stdin is not None:
+                metadata["input"]["file"] = "- (standard input)"
             write_audit(table, args.output, W.sum(axis=0), space=settings["space"],
                         title=f"{material.name}: Fresnel shortcuts against exact "
                               f"({settings['illuminant']}, "
                               f"{observer.replace(' Standard Observer', '')})",
                         metadata=metadata)
     except (ValueError, OSError) as err:
-        raise SystemExit(f"reflectance: {err}") from None
+        message = str(err) if stdin is None else str(err).replace(str(source), "<standard input>")
+        raise SystemExit(f"reflectance: {message}") from None
+    finally:
+        if stdin is not None:
+            stdin.cleanup()
     for warning in warnings:
         print(f"reflectance: warning: {warning}; the k = 0 reading suits a smooth dielectric's "
               f"specular reflectance, not a diffuse or absorbing surface's (reflectance audit "
@@ -1039,7 +1079,9 @@ def build_parser(command=None):
     parser = _Parser(
         prog="reflectance",
         description="Spectral audits of the classic reflectance papers (Blinn 1977, Cook & "
-                    "Torrance 1982). Each command prints CSV.")
+                    "Torrance 1982). colour, spectra, brdf and audit print CSV on standard "
+                    "output; render writes images (-o, --png, --rgb-exr); bench prints a timing report (text, "
+                    "or JSON with --json).")
     parser.add_argument("--version", action="version", version=f"reflectance {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, add in COMMANDS.items():

@@ -9,7 +9,8 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["script_log", "peak_memory", "params_dict", "command_line_job"]
+__all__ = ["script_log", "peak_memory", "params_dict", "command_line_job",
+           "write_audit_metadata"]
 
 
 def peak_memory():
@@ -99,3 +100,71 @@ def params_dict(params):
     {'fig': {'k': 1}, 'colour': 'sRGB'}
     """
     return dict(params.items()) if hasattr(params, "items") else dict(vars(params))
+
+
+def _grid_nm(grid):
+    """config.yaml's ``wavelengths`` (start_nm, end_nm, step_nm) as the metadata files write a grid
+    (start, end, step); anything else as it is."""
+    keys = ("start_nm", "end_nm", "step_nm")
+    if isinstance(grid, dict) and set(grid) == set(keys):
+        return {key[:-3]: float(grid[key]) for key in keys}
+    return grid
+
+
+def write_audit_metadata(snakemake, what, *, illuminant, observer, wavelengths_nm, units,
+                         **settings):
+    """Write the metadata file beside a workflow audit's tables (``snakemake.output.metadata``,
+    :func:`reflectance.io.provenance.write_metadata`), as ``reflectance audit -o`` writes one
+    beside its audit.csv: what the audit computes, the rule that ran it, the package's and its
+    chief dependencies' versions, the illuminant, the observer and the wavelength grid(s), the
+    SHA-256 of every input file, any further ``settings``, and the unit of every column of every
+    CSV among the outputs; the tables' own SHA-256 at the end.
+
+    Parameters
+    ----------
+    units : mapping of str to str
+        Column name, or a shell-style pattern of names (``dE2000_*``), to its unit ("1": a pure
+        number; "text": not a quantity). Every column of every table must match one: a column
+        added to a table without its unit stops the job.
+    """
+    import csv
+    import fnmatch
+    from importlib.metadata import PackageNotFoundError, version
+
+    from reflectance import __version__
+    from reflectance.io.provenance import sha256_file, write_metadata
+
+    def unit(table, column):
+        for pattern, value in units.items():
+            if column == pattern or fnmatch.fnmatchcase(column, pattern):
+                return value
+        raise ValueError(f"{snakemake.rule}: {table}: column {column!r} has no unit "
+                         f"(write_audit_metadata's units: {', '.join(units)})")
+
+    def package(name):
+        try:
+            return version(name)
+        except PackageNotFoundError:
+            return None
+
+    tables = sorted(str(path) for path in snakemake.output if str(path).endswith(".csv"))
+    columns = {}
+    for path in tables:
+        with open(path, newline="", encoding="utf-8") as stream:
+            header = next(csv.reader(stream))
+        columns[Path(path).name] = {name: {"unit": unit(Path(path).name, name)}
+                                    for name in header}
+    inputs = sorted({str(path) for path in snakemake.input})
+    document = {
+        "what": what,
+        "command": f"snakemake rule {snakemake.rule}",
+        "reflectance": __version__,
+        "packages": {name: package(name) for name in ("numpy", "colour-science")},
+        "illuminant": illuminant,
+        "observer": observer,
+        "wavelengths_nm": _grid_nm(wavelengths_nm),
+        "inputs": {path: sha256_file(path) for path in inputs},
+        **settings,
+        "columns": columns,
+    }
+    write_metadata(snakemake.output.metadata, document, tables=tables)

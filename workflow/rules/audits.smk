@@ -14,31 +14,38 @@ TARGETS += [
         "fresnel_atlas.csv",
         "fresnel_atlas_thresholds.csv",
         "fresnel_atlas_answer.rst",
+        "fresnel_atlas_metadata.yaml",
         "rgb_rendering.png",
         "rgb_rendering.pdf",
         "rgb_rendering.csv",
         "rgb_rendering_answer.rst",
+        "rgb_rendering_metadata.yaml",
         "gamut_mapping.png",
         "gamut_mapping.pdf",
         "gamut_mapping.csv",
         "gamut_mapping_images.csv",
         "gamut_mapping_answer.rst",
+        "gamut_mapping_metadata.yaml",
         "spectral_sampling.png",
         "spectral_sampling.pdf",
         "spectral_sampling.csv",
         "spectral_sampling_answer.rst",
+        "spectral_sampling_metadata.yaml",
         "spectral_recovery.png",
         "spectral_recovery.pdf",
         "spectral_recovery.csv",
         "spectral_recovery_answer.rst",
+        "spectral_recovery_metadata.yaml",
         "illuminant_observer.png",
         "illuminant_observer.pdf",
         "illuminant_observer.csv",
         "illuminant_observer_answer.rst",
+        "illuminant_observer_metadata.yaml",
         "white_furnace.png",
         "white_furnace.pdf",
         "white_furnace.csv",
         "white_furnace_answer.rst",
+        "white_furnace_metadata.yaml",
     )
 ]
 
@@ -95,6 +102,7 @@ rule audit_fresnel_atlas:
         ),
         table=f"{AUDITS_OUT}/fresnel_atlas.csv",
         answer=f"{AUDITS_OUT}/fresnel_atlas_answer.rst",
+        metadata=f"{AUDITS_OUT}/fresnel_atlas_metadata.yaml",
     log:
         "logs/audits/fresnel_atlas.log",
     benchmark:
@@ -129,6 +137,7 @@ rule audit_rgb_rendering:
             subcategory="2. Spectral versus RGB rendering",
         ),
         answer=f"{AUDITS_OUT}/rgb_rendering_answer.rst",
+        metadata=f"{AUDITS_OUT}/rgb_rendering_metadata.yaml",
     log:
         "logs/audits/rgb_rendering.log",
     benchmark:
@@ -176,6 +185,7 @@ rule audit_gamut_mapping:
         ),
         images=f"{AUDITS_OUT}/gamut_mapping_images.csv",
         answer=f"{AUDITS_OUT}/gamut_mapping_answer.rst",
+        metadata=f"{AUDITS_OUT}/gamut_mapping_metadata.yaml",
     log:
         "logs/audits/gamut_mapping.log",
     benchmark:
@@ -210,6 +220,7 @@ rule audit_spectral_sampling:
             subcategory="4. Spectral sampling",
         ),
         answer=f"{AUDITS_OUT}/spectral_sampling_answer.rst",
+        metadata=f"{AUDITS_OUT}/spectral_sampling_metadata.yaml",
     log:
         "logs/audits/spectral_sampling.log",
     benchmark:
@@ -243,6 +254,7 @@ rule audit_illuminant_observer:
             subcategory="5. Illuminant and observer",
         ),
         answer=f"{AUDITS_OUT}/illuminant_observer_answer.rst",
+        metadata=f"{AUDITS_OUT}/illuminant_observer_metadata.yaml",
     log:
         "logs/audits/illuminant_observer.log",
     benchmark:
@@ -276,6 +288,7 @@ rule audit_spectral_recovery:
             subcategory="7. Judgement: spectral recovery",
         ),
         answer=f"{AUDITS_OUT}/spectral_recovery_answer.rst",
+        metadata=f"{AUDITS_OUT}/spectral_recovery_metadata.yaml",
     log:
         "logs/audits/spectral_recovery.log",
     benchmark:
@@ -311,6 +324,7 @@ rule audit_white_furnace:
             subcategory="6. Conventions: the factor 4",
         ),
         answer=f"{AUDITS_OUT}/white_furnace_answer.rst",
+        metadata=f"{AUDITS_OUT}/white_furnace_metadata.yaml",
     log:
         "logs/audits/white_furnace.log",
     benchmark:

@@ -12,7 +12,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.optics.spectra import load_material, wavelength_grid
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20, 50]  # colour bands of the heat map (CIEDE2000)
@@ -39,6 +39,14 @@ with script_log(snakemake) as log:
                            "max_dE2000": dE[i, j].max()}
                           for i, name in enumerate(metals) for j, method in enumerate(methods)])
     first.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 1, the Fresnel shortcut atlas: CIEDE2000 of each shortcut against the "
+        "exact spectral Fresnel colour of each metal (smooth), per incidence angle",
+        illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
+        wavelengths_nm=snakemake.params.wavelengths, space=colour_cfg["space"],
+        methods={m: AUDIT_METHODS[m] for m in methods},
+        units={"material": "text", "method": "text", "angle_deg": "deg", "dE2000_*": "CIEDE2000",
+               "first_deg_above_*": "deg", "max_dE2000": "CIEDE2000"})
 
     # drawn at the print width, so its text prints at the figures' sizes
     fig = new_figure(PRINT_WIDTH_IN, 5.6)

@@ -9,19 +9,20 @@ import colour
 import numpy as np
 import pandas as pd
 
-from reflectance.audit.gamut import clip_differences, exr_display_RGB, out_of_gamut
+from reflectance.audit.gamut import (clip_differences, exr_colorimetry, exr_display_RGB,
+                                     out_of_gamut)
 from reflectance.audit.shortcuts import CAM16_VIEWING_CONDITIONS
 from reflectance.colour.display import display_space
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.io.images import read_exr
 from reflectance.io.tables import write_csv
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 
 with script_log(snakemake) as log:
     cfg, figures = snakemake.params.audit, snakemake.params.figures
     methods, q = cfg["methods"], cfg["percentile"]
-    image_rows, rows, paths, clouds = [], [], [], []
+    image_rows, rows, paths, clouds, seen = [], [], [], [], []
     spaces, pooled = set(), {m: {"dE": [], "dh": []} for m in methods}
     for figure, exrs in figures.items():
         RGB_out, white = [], None
@@ -29,6 +30,7 @@ with script_log(snakemake) as log:
             XYZ, header = read_exr(path)
             RGB, space, white, lit = exr_display_RGB(XYZ, header)
             spaces.add(space)
+            seen.append(exr_colorimetry(header))
             outside = lit & out_of_gamut(RGB)
             image_rows.append({"figure": figure, "image": path, "space": space,
                                "object_pixels": int(lit.sum()), "out_of_gamut": int(outside.sum()),
@@ -69,6 +71,18 @@ with script_log(snakemake) as log:
     table, images = pd.DataFrame(rows), pd.DataFrame(image_rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     images.pipe(write_csv, snakemake.output.images, float_format="%.6g")
+    # what the figures were rendered with, as their EXRs' headers say (one value where all agree)
+    one = lambda key: (seen[0][key] if all(c[key] == seen[0][key] for c in seen)  # noqa: E731
+                       else [c[key] for c in seen])
+    write_audit_metadata(
+        snakemake, "Audit 3, gamut mapping: the share of each rendered figure's object pixels "
+        "outside the display gamut and what each gamut clip costs against the unclipped colour",
+        illuminant=one("illuminant"), observer=one("observer"),
+        wavelengths_nm=one("wavelengths"), space=space, methods=list(methods),
+        units={"figure": "text", "image": "text", "space": "text", "method": "text",
+               "object_pixels": "pixels", "out_of_gamut": "pixels", "hue_pixels": "pixels",
+               "fraction*": "1 (share of object pixels)", "dE2000_*": "CIEDE2000",
+               "dh_CAM16_*": "deg (CAM16 hue angle)"})
 
     # drawn at the print width, so its text prints at the figures' sizes
     fig = new_figure(PRINT_WIDTH_IN, 4.3)

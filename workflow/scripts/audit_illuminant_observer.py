@@ -13,7 +13,7 @@ from reflectance.colour.colorimetry import tristimulus_weights
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.spectra import load_material, wavelength_grid
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20]  # colour bands of the heat map (CIEDE2000)
@@ -49,6 +49,15 @@ with script_log(snakemake) as log:
                       "dE2000": d} for a, d in zip(cfg["angles_deg"], dE)]
     table = pd.DataFrame(rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 5, illuminant and observer: how far each material's colour moves under "
+        "other lights (adapted to the reference white) and for the other observer",
+        illuminant={"reference": ref, "others": list(cfg["illuminants"]),
+                    "adaptation": f"von Kries ({cfg['adaptation']})"},
+        observer={"reference": obs2, "other": obs10},
+        wavelengths_nm=snakemake.params.wavelengths,
+        units={"material": "text", "kind": "text", "angle_deg": "deg", "change": "text",
+               "dE2000": "CIEDE2000"})
 
     changes = list(dict.fromkeys(table.change))
     at0 = table[table.angle_deg == cfg["angles_deg"][0]]

@@ -18,7 +18,7 @@ from reflectance.io.tables import write_csv
 from reflectance.optics.spectra import load_material
 from reflectance.papers.scenes import fig7_vases_CookTorrance1982, vase_scene_CookTorrance1982
 from reflectance.render.scene import scene_from_dict
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20]  # colour bands of the maps (CIEDE2000)
 
@@ -63,6 +63,15 @@ with script_log(snakemake) as log:
         log.info("%s: %s", metal, rows[-1])
     table = pd.DataFrame(rows)
     table.pipe(write_csv, out.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 2, spectral versus RGB rendering: Cook & Torrance 1982's metal vases "
+        "rendered spectrally and per display channel; CIEDE2000 per object pixel",
+        illuminant=colour_cfg["illuminant"], observer=colour_cfg["observer"],
+        wavelengths_nm=p.wavelengths, space=colour_cfg["space"],
+        units={"metal": "text", "label": "text", "pixels": "pixels", "dE2000_*": "CIEDE2000",
+               "F0_R": "1 (linear display RGB)", "F0_G": "1 (linear display RGB)",
+               "F0_B": "1 (linear display RGB)", "F0_in_gamut": "text (True/False)",
+               "exposure_scale": "1 (XYZ multiplier)"})
 
     n = len(shown)
     fig = new_figure(1.15 * n + 0.9, 4.9, facecolor="white")

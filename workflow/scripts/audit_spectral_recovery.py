@@ -16,7 +16,7 @@ from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefi
 from reflectance.optics.spectra import (DEFAULT_RECOVERY, material_from_table,
                                         read_spectrum_csv, reflectance_from_munsell,
                                         wavelength_grid)
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
@@ -47,6 +47,15 @@ with script_log(snakemake) as log:
                          for a, l, d in zip(cfg["angles_deg"], lab[method], dE)]
     table = pd.DataFrame(rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 7, spectral recovery: the colour of each Munsell-derived material of "
+        "Cook & Torrance 1982 Table I by each recovery method, against the one its spectrum used",
+        illuminant=list(cfg["illuminants"]), observer=obs,
+        wavelengths_nm=snakemake.params.wavelengths, methods=list(cfg["methods"]),
+        units={"material": "text", "notation": "text (Munsell)", "illuminant": "text",
+               "angle_deg": "deg", "recovery": "text", "against": "text",
+               "L": "CIELAB L* (0-100)", "a": "CIELAB a*", "b": "CIELAB b*",
+               "dE2000_vs_own": "CIEDE2000"})
 
     fig = new_figure(PRINT_WIDTH_IN, 3.0)  # the print width: its text prints at the figures' sizes
     axes = fig.subplots(1, len(spectra), sharey=True,

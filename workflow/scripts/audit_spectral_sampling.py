@@ -15,7 +15,7 @@ from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.fresnel import fresnel_conductor
 from reflectance.optics.spectra import load_material, wavelength_grid
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 from reflectance.io.tables import write_csv
 
 BOUNDS = [0, 0.5, 1, 2, 5, 10, 20, 50]  # colour bands of the heat map (CIEDE2000)
@@ -60,6 +60,17 @@ with script_log(snakemake) as log:
              for a in cfg["angles_deg"]]
     table = pd.DataFrame(rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 4, spectral sampling: each material's exact Fresnel colour on coarser "
+        "wavelength grids and from three wavelengths, against the finest grid",
+        illuminant=ill, observer=obs,
+        wavelengths_nm={**{label: {"start": float(lo), "end": float(hi), "step": float(step)}
+                           for label, step in zip(grids, [cfg["reference_step_nm"],
+                                                          *cfg["steps_nm"]])},
+                        three: [float(w) for w in cfg["three_wavelengths_nm"]]},
+        space=space, reference=reference,
+        units={"material": "text", "angle_deg": "deg", "sampling": "text",
+               "dE2000_vs_1nm": "CIEDE2000"})
 
     samplings = list(dict.fromkeys(table.sampling))
     worst = table.groupby(["material", "sampling"], sort=False).dE2000_vs_1nm.max().unstack()

@@ -9,7 +9,7 @@ import pandas as pd
 from reflectance.io.atomic import atomic_write
 from reflectance.io.figures import new_figure, savefig
 from reflectance.optics.brdf import directional_albedo
-from reflectance.scripting import script_log
+from reflectance.scripting import script_log, write_audit_metadata
 from reflectance.io.tables import write_csv
 
 with script_log(snakemake) as log:
@@ -28,6 +28,16 @@ with script_log(snakemake) as log:
                          "ratio": albedo["paper"] / albedo["physical"]})
     table = pd.DataFrame(rows)
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
+    write_audit_metadata(
+        snakemake, "Audit 6, the factor 4: directional albedo (white furnace, F = 1) of Cook & "
+        "Torrance 1982's specular term as printed and normalised, against the rms slope m",
+        # achromatic: F = 1 at every wavelength, no light's spectrum and no observer enter it
+        illuminant=None, observer=None, wavelengths_nm=None,
+        distribution=cfg["distribution"], shadowing=cfg["shadowing"], n_phi=cfg["n_phi"],
+        units={"incidence_deg": "deg", "m": "1 (Beckmann rms slope)",
+               "albedo_paper": "1 (reflected / incident power)",
+               "albedo_physical": "1 (reflected / incident power)",
+               "ratio": "1 (paper / physical)"})
 
     fig = new_figure(6.4, 4.2)
     ax = fig.add_axes((0.12, 0.13, 0.6, 0.78))

@@ -24,7 +24,19 @@ import json
 
 import numpy as np
 
-__all__ = ["GAMUT_TOLERANCE", "exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
+__all__ = ["GAMUT_TOLERANCE", "exr_colorimetry", "exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
+
+
+def exr_colorimetry(header):
+    """``{"illuminant", "observer", "wavelengths"}`` an EXR of the render pipeline was computed
+    with, from the scene in its header: the display white (display.illuminant, else the first
+    light's spectrum, as :func:`reflectance.render.scene.load_scene` reads it), the observer and
+    the wavelength grid (start_nm, end_nm, step_nm)."""
+    scene = json.loads(header["scene"])
+    lights = scene.get("lights") or []
+    illuminant = scene["display"].get("illuminant", lights[0]["spectrum"] if lights else "D65")
+    return {"illuminant": illuminant, "observer": scene["observer"],
+            "wavelengths": dict(scene["wavelengths"])}
 
 
 def exr_display_RGB(XYZ, header):
@@ -49,12 +61,10 @@ def exr_display_RGB(XYZ, header):
     from reflectance.optics.spectra import wavelength_grid
 
     scene = json.loads(header["scene"])
-    d, w = scene["display"], scene["wavelengths"]
+    d, seen = scene["display"], exr_colorimetry(header)
+    w = seen["wavelengths"]
     grid = wavelength_grid(w["start_nm"], w["end_nm"], w["step_nm"])
-    # the display white: display.illuminant, else the first light's spectrum (as load_scene)
-    lights = scene.get("lights") or []
-    illuminant = d.get("illuminant", lights[0]["spectrum"] if lights else "D65")
-    white = white_XYZ(illuminant, scene["observer"], grid)
+    white = white_XYZ(seen["illuminant"], seen["observer"], grid)
     XYZ = np.asarray(XYZ, dtype=np.float64)
     scale = float(header["display_exposure_scale"])
     RGB = XYZ_to_linear_RGB(XYZ * scale, d["space"], illuminant=white)

@@ -167,11 +167,13 @@ def resolve_material(spec, wavelengths, spectra_dirs=()):
 
     Parameters
     ----------
-    spec : str
+    spec : str or colour-science spectral distribution(s)
         A material name, looked up as :func:`reflectance.optics.spectra.find_material` does (in
         ``spectra_dirs``, then in the spectra that ship with the package); or a path to a CSV
         file of any form :func:`reflectance.optics.spectra.read_spectrum_csv` reads (detected
-        from the header).
+        from the header); or a ``colour.SpectralDistribution`` (a reflectance) or
+        ``MultiSpectralDistributions`` labelled ``n``, ``k``
+        (:func:`reflectance.optics.spectra.spectrum_table`).
     wavelengths : array_like
         Grid in nm.
     spectra_dirs : sequence of str or Path
@@ -187,8 +189,11 @@ def resolve_material(spec, wavelengths, spectra_dirs=()):
         Unknown name (with every known name), a folder that does not exist, unreadable or
         malformed file (file, row, forms), or a grid outside the data.
     """
-    from reflectance.optics.spectra import find_material, material_from_file
+    from reflectance.optics.spectra import (find_material, is_colour_spectrum,
+                                            material_from_file, material_from_table)
 
+    if is_colour_spectrum(spec):  # colour-science's SpectralDistribution(s): its name
+        return material_from_table(spec.name, spec, wavelengths)
     if looks_like_path(spec):
         return material_from_file(spec, wavelengths)
     return find_material(spec, wavelengths, spectra_dirs)
@@ -288,6 +293,8 @@ def audit_weights(wavelengths, illuminant="D65", observer="2"):
     from reflectance.colour.tables import illuminant_names
 
     observer_name_ = observer_name(observer)
+    if not isinstance(illuminant, str):  # a colour-science SpectralDistribution
+        return tristimulus_weights(wavelengths, illuminant, observer_name_), observer_name_
     if looks_like_path(illuminant):
         path = Path(illuminant)
         if not path.is_file():

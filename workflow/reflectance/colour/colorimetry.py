@@ -265,8 +265,9 @@ def tristimulus_weights(wavelengths, illuminant="D65", observer=OBSERVER_DEFAULT
     ----------
     wavelengths : array_like
         Uniform grid in nm.
-    illuminant : str
-        A key of ``colour.SDS_ILLUMINANTS``.
+    illuminant : str or colour.SpectralDistribution
+        A key of ``colour.SDS_ILLUMINANTS``, or an illuminant's spectral distribution (nm),
+        interpolated linearly onto the grid (:func:`tristimulus_weights_spd`).
     observer : str
         A key of ``colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER``.
 
@@ -286,6 +287,17 @@ def tristimulus_weights(wavelengths, illuminant="D65", observer=OBSERVER_DEFAULT
     >>> W.shape, round(float(W[:, 1].sum()), 12)
     ((95, 3), 1.0)
     """
+    if not isinstance(illuminant, str) and type(illuminant).__module__.startswith("colour."):
+        # a colour-science SpectralDistribution: its power interpolated linearly onto the grid,
+        # as an SPD file's is (reflectance.audit.shortcuts.audit_weights)
+        grid = np.asarray(wavelengths, dtype=np.float64)
+        w = np.asarray(illuminant.wavelengths, dtype=np.float64)
+        if grid.min() < w[0] or grid.max() > w[-1]:
+            raise ValueError(f"illuminant {illuminant.name!r}: covers {w[0]:g}-{w[-1]:g} nm, the "
+                             f"grid needs {grid.min():g}-{grid.max():g} nm")
+        return tristimulus_weights_spd(np.interp(grid, w, np.asarray(illuminant.values,
+                                                                      dtype=np.float64)),
+                                       wavelengths, observer)
     key = _grid_key(wavelengths)
     _validate_illuminant(illuminant)
     _validate_observer(observer)

@@ -102,6 +102,8 @@ _EXPORTS = {
     "find_material": "spectra",
     "find_material_file": "spectra",
     "material_from_file": "spectra",
+    "is_colour_spectrum": "spectra",
+    "spectrum_table": "spectra",
     "material_from_table": "spectra",
     "bundled_spectra_dir": "spectra",
     "folder_list": "spectra",

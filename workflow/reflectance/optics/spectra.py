@@ -63,6 +63,8 @@ __all__ = [
     "find_material",
     "find_material_file",
     "material_from_file",
+    "is_colour_spectrum",
+    "spectrum_table",
     "material_from_table",
     "bundled_spectra_dir",
     "folder_list",
@@ -831,14 +833,56 @@ def _frozen(a):
     return a
 
 
+def is_colour_spectrum(value):
+    """Whether ``value`` is a colour-science ``SpectralDistribution`` or
+    ``MultiSpectralDistributions`` (colour itself is imported only when the value comes from it)."""
+    if not type(value).__module__.startswith("colour."):
+        return False
+    from colour import MultiSpectralDistributions, SpectralDistribution
+
+    return isinstance(value, (SpectralDistribution, MultiSpectralDistributions))
+
+
+def spectrum_table(spectrum):
+    """A spectrum as the columns :func:`material_from_table` reads: a mapping (a DataFrame, a dict)
+    as it is; a colour-science ``SpectralDistribution`` (wavelengths in nm) as a normal-incidence
+    reflectance ``wavelength_nm, reflectance``; a ``MultiSpectralDistributions`` labelled ``n``
+    and ``k`` as a measured index ``wavelength_nm, n, k`` (one labelled ``reflectance``, or with
+    one label only, as a reflectance).
+
+    Examples
+    --------
+    >>> import colour
+    >>> sd = colour.SpectralDistribution({400: 0.1, 500: 0.2}, name="tile")
+    >>> {key: list(map(float, value)) for key, value in spectrum_table(sd).items()}
+    {'wavelength_nm': [400.0, 500.0], 'reflectance': [0.1, 0.2]}
+    """
+    if not is_colour_spectrum(spectrum):
+        return spectrum
+    w = np.asarray(spectrum.wavelengths, dtype=np.float64)
+    values = np.asarray(spectrum.values, dtype=np.float64)
+    if values.ndim == 1:
+        return {"wavelength_nm": w, "reflectance": values}
+    labels = [str(label) for label in spectrum.labels]
+    if {"n", "k"} <= set(labels):
+        return {"wavelength_nm": w, "n": values[:, labels.index("n")],
+                "k": values[:, labels.index("k")]}
+    if labels == ["reflectance"] or len(labels) == 1:
+        return {"wavelength_nm": w, "reflectance": values[:, 0]}
+    raise SpectraError(f"MultiSpectralDistributions {spectrum.name!r}: labels {labels}; expected "
+                       f"'n' and 'k' (a measured index) or one reflectance")
+
+
 def material_from_table(name, table, wavelengths, source=None):
     """A :class:`Material` from a spectrum table (see :func:`read_spectrum_csv`) on a grid.
 
     Parameters
     ----------
     name : str
-    table : mapping of column name to 1-D array (a pandas.DataFrame or a dict)
-        ``wavelength_nm, n, k`` or ``wavelength_nm, reflectance``.
+    table : mapping of column name to 1-D array, or colour-science spectral distribution(s)
+        ``wavelength_nm, n, k`` or ``wavelength_nm, reflectance`` (a pandas.DataFrame or a dict);
+        or a ``colour.SpectralDistribution`` (a reflectance) or ``MultiSpectralDistributions``
+        labelled ``n``, ``k`` (:func:`spectrum_table`).
     wavelengths : array_like
         1-D grid in nm, inside the data's range (no extrapolation).
     source : str or Path, optional
@@ -860,6 +904,7 @@ def material_from_table(name, table, wavelengths, source=None):
     Cook & Torrance 1982, "Spectral composition": linear interpolation between measured
     wavelengths; F0 and its inverse n = (1 + sqrt F0) / (1 - sqrt F0) with k = 0.
     """
+    table = spectrum_table(table)
     grid = np.asarray(wavelengths, dtype=np.float64)
     if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
         raise ValueError(f"wavelengths: expected a non-empty 1-D finite grid in nm, got shape "

@@ -50,6 +50,7 @@ __all__ = [
     "RenderResult",
     "render",
     "display_image",
+    "automatic_exposure",
     "display_linear_RGB",
     "write_linear_RGB_from_XYZ",
     "software_versions",
@@ -192,6 +193,13 @@ def display_linear_RGB(result, exposure=None, encoded=False):
     """
     return image_display_RGB(result.XYZ, *_shown(result.scene), exposure=exposure,
                              encoded=encoded)
+
+
+def automatic_exposure(result):
+    """The factor on XYZ the scene's display settings choose for this render (Cook & Torrance's
+    exposure, the metered key or the white card; 1 where the display does not expose): what
+    ``reflectance render --exposure-stops S`` multiplies by 2**S."""
+    return float(exposure_scale(result.XYZ, *_shown(result.scene)))
 
 
 def display_image(result, exposure=None):

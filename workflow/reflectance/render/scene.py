@@ -41,7 +41,7 @@ from reflectance.render.camera import Camera
 from reflectance.render.lights import as_light
 from reflectance.geometry.watch import WATCH_PARTS, watch
 from reflectance.io.paths import file_inside, package_data
-from reflectance.io.yamlfile import YAMLFileError, read_yaml
+from reflectance.io.yamlfile import MAX_BYTES, YAMLFileError, load_yaml_text
 from reflectance.io.limits import grid_points, size_problem
 from reflectance.render.memory import MESH_ELEMENTS_PER_VERTEX, render_size_problem
 
@@ -56,6 +56,7 @@ __all__ = [
     "validate_scene",
     "scene_from_dict",
     "load_scene",
+    "scene_from_text",
     "write_scene_file",
     "constant_index_material",
     "size_problems",
@@ -667,8 +668,31 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
     path = Path(path)
     if not path.is_file():
         raise SceneError(f"{path}: no such scene file")
-    try:  # bounded (aliases, depth, size) and no key twice: reflectance.io.yamlfile
-        document = read_yaml(path, encoding="utf-8-sig")
+    try:
+        size = path.stat().st_size
+        if size > MAX_BYTES:  # not read at all (reflectance.io.yamlfile's bound)
+            raise SceneError(f"{path}: {size:,} bytes; a YAML file read here holds at most "
+                             f"{MAX_BYTES:,}")
+        text = path.read_bytes()
+    except OSError as err:
+        raise SceneError(f"{path}: cannot read: {err.strerror}") from None
+    return scene_from_text(text, str(path), path.parent, spectra_dir=spectra_dir, width=width,
+                           height=height, supersample=supersample, spectral=spectral,
+                           wavelengths=wavelengths)
+
+
+def scene_from_text(text, source, base_dir, spectra_dir=None, width=None, height=None,
+                    supersample=None, spectral=None, wavelengths=None):
+    """A scene from the bytes of a scene file (``reflectance render -`` reads them from standard
+    input), named ``source`` in messages, its relative paths taken from ``base_dir``; the other
+    parameters as for :func:`load_scene`."""
+    try:
+        if isinstance(text, bytes):
+            text = text.decode("utf-8-sig")
+        # bounded (aliases, depth, size) and no key twice: reflectance.io.yamlfile
+        document = load_yaml_text(text, source)
+    except UnicodeDecodeError as err:
+        raise SceneError(f"{source}: not a UTF-8 text file (byte {err.start})") from None
     except YAMLFileError as err:
         raise SceneError(str(err)) from None
     if isinstance(document, dict):
@@ -680,7 +704,7 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
             document["spectral"] = spectral
         if wavelengths is not None:
             document["wavelengths"] = dict(wavelengths)
-    return scene_from_dict(document, source=str(path), base_dir=path.parent,
+    return scene_from_dict(document, source=source, base_dir=Path(base_dir),
                            spectra_dir=spectra_dir)
 
 
