@@ -145,8 +145,8 @@ def _after_build(built, runs, readers, tmp_path_factory):
 
 #: The session's build is killed after this many seconds (default BUILD_TIMEOUT_S).
 BUILD_TIMEOUT = "REFLECTANCE_TEST_BUILD_TIMEOUT"
-# about twenty times the whole build on an idle machine (README's test section): room for a
-# loaded one, and an end to a hung job before CI's own limit
+# about twenty times the whole build on an idle machine (workflow/docs/guides/testing.rst):
+# room for a loaded one, and an end to a hung job before CI's own limit
 BUILD_TIMEOUT_S = 1200
 
 

@@ -289,7 +289,7 @@ def start_with_session(runs, root, tmp_path_factory, items):
 def _start_installed(runs, root, tmp_path_factory):
     if not runs.started("installed"):
         runs.start("installed", _installed, runs, root, tmp_path_factory.mktemp("installed"))
-        # once installed, each command (and README's blocks) on the pool, side by side
+        # once installed, each command (and the guides' blocks) on the pool, side by side
         for name in (*INSTALLED_COMMANDS, "readme"):
             runs.after("installed", f"installed {name}", _installed_run, runs, name, root)
 
@@ -344,18 +344,19 @@ def _installed(runs, root, tmp_path):
 
 def _installed_run(installed, runs, name, root):
     """Command ``name`` of :data:`INSTALLED_COMMANDS` (the venv's `reflectance` script), or
-    README's blocks (``"readme"``), in an empty folder of its own outside the checkout."""
-    from test_readme import quick_start, shell_commands
+    the guides' blocks that README's quick start moved to (``"readme"``: workflow/docs/guides/
+    python.rst and rendering.rst), in an empty folder of its own outside the checkout."""
+    from test_readme import QUICK_START, RENDER_GUIDE, quick_start, shell_commands
 
     folder = installed["elsewhere"] / name
     folder.mkdir()
     run = functools.partial(_run, runs, timeout=600, env=installed["env"])
     if name == "readme":
-        paths, command = quick_start(root / "README.md", folder,
+        paths, command = quick_start(root / QUICK_START, folder,
                                      str(installed["venv"] / "bin" / "python"))
         quick = paths, run(command, cwd=folder)
         return quick, [(block, run(command, cwd=block))
-                       for block, command in shell_commands(root / "README.md", folder)]
+                       for block, command in shell_commands(root / RENDER_GUIDE, folder)]
     if name == "render":  # a scene file of the checkout, copied: the folder is not the checkout
         (folder / "scenes").mkdir()
         shutil.copy(root / "workflow" / "scenes" / "example_spheres.yaml", folder / "scenes")
@@ -430,7 +431,7 @@ def test_installed_render_and_bench_work_in_any_folder(root, early, tmp_path_fac
 
 
 def test_installed_readme_blocks_run_in_any_folder(root, early, tmp_path_factory):
-    """README's quick-start blocks (Python) and its render block (bash) run as written from the
+    """The guides' quick-start blocks (Python) and render block (bash) run as written from the
     installed wheel, each in an empty folder outside the checkout, with what the prose says."""
     from test_readme import check_quick_start, check_render_block
 
@@ -438,6 +439,6 @@ def test_installed_readme_blocks_run_in_any_folder(root, early, tmp_path_factory
     (paths, quick), shells = early.result("installed readme")
     assert not paths[0].is_relative_to(root)
     check_quick_start(paths, quick)
-    assert shells, "README has no block marked to run"
+    assert shells, "the rendering guide has no block marked to run"
     for block, proc in shells:
         check_render_block(block, proc)

@@ -432,7 +432,8 @@ def test_yaml_that_grows_when_read_is_refused_at_once(tmp_path, case_id, text, e
 # --- the memory estimate -------------------------------------------------------------------------
 
 def test_memory_estimate_reproduces_the_measured_peaks():
-    """README's peaks of `reflectance render` of the vase, 2 x 2, EXR and PNG written (measured
+    """The rendering guide's peaks (workflow/docs/guides/rendering.rst) of
+    `reflectance render` of the vase, 2 x 2, EXR and PNG written (measured
     with /usr/bin/time: 0.58, 0.80, 0.82, 1.09, 1.49 GiB at 256 to 4096 px): the estimate goes
     through the four it is drawn through, and over the fifth (1024 px, banded, held up to the
     one-pass line at 2^21 samples) by at most a third; a 4096 px figure fits in 1.5 GiB, as
@@ -596,7 +597,8 @@ def workflow_runs(early, config, tmp_path_factory):
                          ids=[c[0] for c in WORKFLOW_CASES])
 def test_the_workflow_refuses_before_any_job_naming_the_key(workflow_runs, case_id, edit,
                                                            expected):
-    """README: bad config stops before any job, with a one-line error naming what is wrong."""
+    """The parameters guide (workflow/docs/guides/parameters.rst): bad config stops before any
+    job, with a one-line error naming what is wrong."""
     project, before, proc = workflow_runs(case_id)
     out = proc.stdout + proc.stderr
     assert proc.returncode != 0, out

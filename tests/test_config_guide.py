@@ -21,6 +21,7 @@ def test_the_catalog_file_says_what_is_tested(root):
     catalog = yaml.safe_load((root / ".snakemake-workflow-catalog.yml").read_text())
     usage = catalog["usage"]
     assert usage["report"] is True  # snakemake --report: tests/test_workflow.py reads it
-    # no per-rule conda or container environments are provided (README says why)
+    # no per-rule conda or container environments are provided (workflow/docs/guides/
+    # building.rst says why)
     assert not any(usage["software-stack-deployment"].values())
     assert "--cores" in usage["mandatory-flags"]["flags"]

@@ -1,4 +1,5 @@
-"""The API reference (workflow/docs, Sphinx from the numpydoc docstrings) builds without warnings."""
+"""The Sphinx site (workflow/docs: the guides README points to, and the API reference from the
+numpydoc docstrings) builds without warnings."""
 
 import importlib.util
 import re
@@ -50,3 +51,14 @@ def test_sphinx_builds_without_warnings(root, early, tmp_path_factory):
     page = (out / "html" / "api" / "optics.html").read_text()
     # the docstrings are in it, with their numpydoc sections rendered
     assert "fresnel_conductor" in page and "Parameters" in page
+    # the guides README points to are pages of the site, their equations rendered by MathJax
+    # (sphinx.ext.mathjax: TeX in the page, typeset in the browser) rather than plain text
+    guides = sorted((root / "workflow" / "docs" / "guides").glob("*.rst"))
+    assert len(guides) >= 8
+    for guide in guides:
+        html = (out / "html" / "guides" / f"{guide.stem}.html").read_text()
+        math = html.count('class="math notranslate nohighlight"')
+        if ":math:" in guide.read_text() or ".. math::" in guide.read_text():
+            assert math and re.search(r"<script[^>]+mathjax", html, re.I), guide.name
+    rendering = (out / "html" / "guides" / "rendering.html").read_text()
+    assert r"\(Y = I \omega / \pi\)" in rendering

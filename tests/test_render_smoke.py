@@ -33,7 +33,7 @@ def test_bench_runs_on_a_tiny_size(root, capsys):
     numbers = [v for v in _leaves(results) if isinstance(v, (int, float))
                and not isinstance(v, bool)]
     assert numbers and all(np.isfinite(numbers))
-    # the table-vs-brute CIEDE2000 the README quotes is reported and imperceptible
+    # the table-vs-brute CIEDE2000 the rendering guide quotes is reported and imperceptible
     dE = [v for k, v in _items(results) if "de2000" in k.lower() and isinstance(v, (int, float))]
     assert dE and max(dE) < 0.01, results
 

@@ -1,6 +1,6 @@
 """Every rule tells a cluster what it needs: threads, memory and time, from measurements.
 
-workflow/rules/common.smk and README ("Running on a cluster") say how the numbers were measured;
+workflow/rules/common.smk and workflow/docs/guides/cluster.rst say how the numbers were measured;
 tests/test_slurm.py checks that SLURM receives them. Here, that no rule is left to the profile's
 defaults, and that the requests stay modest (the project's machine has 2 cores and 24 GiB).
 """

@@ -145,7 +145,7 @@ def test_derived_spectrum_reproduces_munsell_colour(name):
     XYZ = colour.sd_to_XYZ(sd, cmfs, illuminant_C, method="Integration") / 100
     target = colour.xyY_to_XYZ(colour.munsell_colour_to_xyY(MATERIALS[name]["notation"]))
     dE = colour.delta_E(_lab_under_C(target), _lab_under_C(XYZ), method="CIE 2000")
-    # README's promise: the exact recovery meets the notation's XYZ; what is left is the CSV's
+    # the building guide's promise: the exact recovery meets the notation's XYZ; what is left is the CSV's
     # 6 significant digits (3.5e-5 at most on today's materials)
     assert dE < 1e-4
 

@@ -142,7 +142,7 @@ def test_fig6_tables_measure_the_ambient_term_as_the_paper_prints_it(built):
                 math.pi * I_ia[kind] / min(energies), rel=1e-5)
             assert row.ambient_over_headon_diffuse_all_lights == pytest.approx(
                 math.pi * I_ia[kind] / sum(energies), rel=1e-5)
-    # the numbers README and the caption quote: about 314x as printed, 1 % as irradiance
+    # the numbers the results guide and the caption quote: about 314x as printed, 1 % as irradiance
     as_printed = pd.read_csv(built / "results/cook_torrance_1982/fig6_as_printed.csv")
     assert as_printed.ambient_over_headon_diffuse_weakest_light[0] == pytest.approx(100 * math.pi,
                                                                                       rel=1e-5)
@@ -223,7 +223,7 @@ def test_fresh_spectra_export_is_identical(root, built):
 
 def test_lint_reports_only_missing_environments(root, early):
     """`snakemake --lint`: the only lint is the absence of per-rule conda/container envs
-    (README.md says how the Python environment is made instead)."""
+    (workflow/docs/guides/building.rst says how the Python environment is made instead)."""
     _start_lint(early, root)  # (``early`` did, unless run without it)
     proc = early.result("lint")
     text = proc.stdout + proc.stderr
@@ -324,7 +324,8 @@ def _dry_run(runs, cwd):
 @pytest.mark.parametrize("edit", range(len(ONE_KEY_EDITS)),
                          ids=[".".join(key) for key, _, _ in ONE_KEY_EDITS])
 def test_a_one_key_config_edit_plans_exactly_its_dependent_jobs(after_build, edit):
-    """README: an output whose parameters changed is rebuilt, and nothing else."""
+    """The building guide (workflow/docs/guides/building.rst, "Resuming an interrupted run"): an
+    output whose parameters changed is rebuilt, and nothing else."""
     dependents = ONE_KEY_EDITS[edit][2]
     proc = after_build(("dry run", edit))
     text = proc.stdout + proc.stderr
@@ -422,4 +423,25 @@ def test_readme_strip_is_the_committed_picture(built, root):
     with Image.open(root / "workflow/docs/strip.png") as im:
         committed = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
     assert fresh.shape == committed.shape
-    assert np.abs(fresh - committed).mean() < 0.005, "refresh it: README.md says how"
+    assert np.abs(fresh - committed).mean() < 0.005, (
+        "refresh it: workflow/docs/guides/results.rst says how")
+
+
+def test_readme_result_sentence_holds(built, root):
+    """README's one result, in words with no number typed in: every Fresnel shortcut of the
+    atlas but Gulbrandsen's gives some smooth metal a colour above CIEDE2000 1 short of grazing
+    incidence; the three-channel renderer's Schlick (``rgb``) does so for gold head-on; the
+    build states the angles in the file README names."""
+    import pandas as pd
+
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    answer = "results/audits/fresnel_atlas_answer.rst"
+    assert answer in readme and "fresnel_atlas_thresholds.csv" in readme
+    assert (built / answer).read_text().startswith("**Answer:**")
+    first = pd.read_csv(built / "results/audits/fresnel_atlas_thresholds.csv")
+    above = first.groupby("method").first_deg_above_1.min()
+    assert pd.isna(above["gulbrandsen"])
+    others = above.drop("gulbrandsen")
+    assert len(others) >= 4 and (others < 90).all(), above
+    gold = first[(first.method == "rgb") & (first.material == "Au")].first_deg_above_1
+    assert gold.item() == 0

@@ -1,6 +1,7 @@
 """Interrupted and failing runs, end to end, in a temporary copy of the project.
 
-README promises that a run killed outright resumes with a plain `snakemake --cores 2`, that no
+The building guide (workflow/docs/guides/building.rst, "Resuming an interrupted run")
+promises that a run killed outright resumes with a plain `snakemake --cores 2`, that no
 half-written file ever appears at an output's path, and that a failing job never removes a
 committed spectrum.
 """
@@ -89,7 +90,7 @@ def after_build(runs, built, tmp_path_factory, items):
 
 
 def test_kill_9_mid_render_then_a_plain_rerun_completes(after_build):
-    """README: a run killed outright resumes with a plain `snakemake --cores 2`, and what it
+    """The building guide: a run killed outright resumes with a plain `snakemake --cores 2`, and what it
     builds is byte-identical to an uninterrupted build.
 
     The session's whole build (`built`) is copied with Snakemake's records, and one render's

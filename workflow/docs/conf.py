@@ -1,6 +1,7 @@
 """Sphinx configuration of the API reference (built from the numpydoc docstrings).
 
-Build (README.md, "API reference"): ``python -m sphinx -W -b html workflow/docs docs_html``.
+The site: the guides (guides/*.rst, moved from README.md) and the API reference.
+Build (guides/python.rst, "API reference"): ``python -m sphinx -W -b html workflow/docs docs_html``.
 """
 
 import sys
@@ -16,7 +17,9 @@ author = "the reflectance authors"
 copyright = "2026, the reflectance authors (BSD-3-Clause)"
 release = version = reflectance.__version__
 
-extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon"]
+# sphinx.ext.mathjax (shipped with Sphinx) renders the guides' and docstrings' equations in the
+# browser: MathJax is loaded from its CDN by the page, nothing is downloaded at build time.
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax"]
 # numpydoc-style sections (Parameters, Returns, Raises, References, Examples) through napoleon,
 # which ships with Sphinx: no extra package.
 napoleon_google_docstring = False

@@ -18,8 +18,8 @@ def peak_memory():
 
     The kernel's high-water mark (``VmHWM`` in /proc/self/status) counts this program only;
     ``getrusage``'s ``ru_maxrss`` would also count the Snakemake process it was forked from.
-    The rules' ``resources: mem_mb`` are set from these lines of their logs (README, "Running on
-    a cluster"), which see short peaks that ``benchmark:``'s sampling may miss.
+    The rules' ``resources: mem_mb`` are set from these lines of their logs (workflow/docs/guides/
+    cluster.rst), which see short peaks that ``benchmark:``'s sampling may miss.
     """
     try:
         status = Path("/proc/self/status").read_text()

@@ -2,7 +2,7 @@
 # reflectance.papers.figures: the config keys it reads (the rule's params, exactly: the params
 # trigger reruns it for those keys and no other), its scenes (what the config check validates and
 # the job renders) and its outputs. The rules add the report marks, resources and the script.
-# Their resources follow the measured peaks and times in README ("Running on a cluster").
+# Their resources follow the measured peaks and times in workflow/docs/guides/cluster.rst.
 
 # Cook & Torrance 1982, Fig. 6, the two vases: the default figure (fig6.published) and one figure
 # per reading of the paper's ambient term (fig6.ambient_readings).

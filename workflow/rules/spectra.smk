@@ -27,7 +27,7 @@
 # written when it makes them). A fresh checkout has none: Snakemake takes the committed spectra
 # as they are (its dry run lists these rules under "missing metadata"); after editing a spectra
 # script or a material there, remake them once with --forcerun export_spectra derive_spectra
-# sources_table (README); later edits rerun them by themselves. reflectance.optics.spectra,
+# sources_table (workflow/docs/guides/building.rst); later edits rerun them by themselves. reflectance.optics.spectra,
 # which the scripts call, is tracked by neither (nor was it before): --forcerun after changing it.
 
 

@@ -14,7 +14,7 @@ __all__ = ["RENDER_PEAK_MEMORY", "ADAPTIVE_PEAK_MEMORY", "MESH_ELEMENTS_PER_VERT
 
 #: Peak resident memory (bytes) of ``reflectance render`` of the Fig. 6b vase, square (side in
 #: pixels), 2 x 2 samples per pixel, two lights, its EXR and PNG written: VTK, the mesh and the
-#: images included (README, "Speed and memory"; measured 2026-12-02 with ``/usr/bin/time``).
+#: images included (workflow/docs/guides/rendering.rst, "Memory at large sizes"; measured 2026-12-02 with ``/usr/bin/time``).
 RENDER_PEAK_MEMORY = {256: 606904 * 2**10, 512: 835764 * 2**10, 1024: 855748 * 2**10,
                       2048: 1142600 * 2**10, 4096: 1557504 * 2**10}
 
