@@ -11,6 +11,7 @@ TARGETS += [
         "brdf_lobes_2d.pdf",
         "brdf_lobes_2d.csv",
         "brdf_lobes_3d.png",
+        "brdf_lobes_3d.values.rst",
         "fresnel.png",
         "fresnel.pdf",
         "fresnel.csv",
@@ -76,6 +77,8 @@ rule lecture_brdf_lobes_2d:
 
 
 rule lecture_brdf_lobes_3d:
+    input:
+        plane=f"{LECTURE_OUT}/brdf_lobes_2d.csv",
     output:
         png=report(
             f"{LECTURE_OUT}/brdf_lobes_3d.png",
@@ -83,6 +86,7 @@ rule lecture_brdf_lobes_3d:
             category="Lecture",
             subcategory="Sample BRDFs",
         ),
+        values=f"{LECTURE_OUT}/brdf_lobes_3d.values.rst",
     log:
         "logs/lecture/brdf_lobes_3d.log",
     benchmark:
