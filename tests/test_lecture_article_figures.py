@@ -216,6 +216,52 @@ def test_fresnel_curves(config, tmp_path, grid):
         assert table[f"{name}_exact"].iloc[-1] == pytest.approx(1.0, abs=1e-6), name
 
 
+def test_fresnel_colour_bands(config, tmp_path, grid):
+    """Panel (c): each metal's colour at each angle, as colour-science computes it (the XYZ of
+    F(lambda, theta) under the illuminant, sRGB-encoded) wherever it lies in the gamut; white at
+    grazing incidence (F = 1); copper and gold red over green over blue, iron near grey."""
+    import colour
+
+    from reflectance.optics.spectra import load_material
+
+    fig = config["figures"]["lecture"]["fresnel"]
+    assert config["colour"]["space"] == "sRGB" and config["colour"]["illuminant"] == "D65"
+    spectra = [str(ROOT / "spectra" / f"{m}.csv") for m in fig["materials"]]
+    run_script("lecture_fresnel", tmp_path, {"png": "f.png", "pdf": "f.pdf", "csv": "f.csv"},
+               inputs={"spectra": spectra}, fig=fig, colour=config["colour"],
+               wavelengths=config["wavelengths"])
+    table = pd.read_csv(tmp_path / "f.csv")
+    shape = colour.SpectralShape(grid[0], grid[-1], grid[1] - grid[0])
+    cmfs = colour.MSDS_CMFS[config["colour"]["observer"]].copy().align(shape)
+    light = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+    checked = 0
+    for name in fig["materials"]:
+        m = load_material(name, grid, spectra_dir=ROOT / "spectra")
+        eta = m.n - 1j * m.k
+        rgb = table[[f"{name}_display_{c}" for c in "RGB"]].to_numpy()
+        for angle in (0.0, 45.0, 75.0):
+            row = int(np.argmin(np.abs(table.angle_deg - angle)))
+            t = np.radians(table.angle_deg[row])
+            # Fresnel for a complex index, s and p, from Snell's law with complex cos of refraction
+            cos_t = np.sqrt(1 - (np.sin(t) / eta) ** 2)
+            rs = (np.cos(t) - eta * cos_t) / (np.cos(t) + eta * cos_t)
+            rp = (eta * np.cos(t) - cos_t) / (eta * np.cos(t) + cos_t)
+            F = (np.abs(rs) ** 2 + np.abs(rp) ** 2) / 2
+            XYZ = colour.sd_to_XYZ(colour.SpectralDistribution(dict(zip(grid, F))), cmfs, light,
+                                   method="Integration") / 100
+            linear = colour.XYZ_to_RGB(XYZ, "sRGB", apply_cctf_encoding=False)
+            if np.all((linear > 0.002) & (linear < 0.998)):
+                np.testing.assert_allclose(rgb[row], colour.cctf_encoding(linear, "sRGB"), atol=3e-3)
+                checked += 1
+        np.testing.assert_allclose(rgb[-1], 1.0, atol=1e-6)  # 90 degrees: F = 1, the white
+    assert checked >= 6
+    for name in ("Cu", "Au"):
+        r, g, b = table[[f"{name}_display_{c}" for c in "RGB"]].iloc[0]
+        assert r > g > b + 0.05, name
+    fe = table[[f"Fe_display_{c}" for c in "RGB"]].iloc[0].to_numpy()
+    assert np.ptp(fe) < 0.05
+
+
 def test_fresnel_figure_is_deterministic(config, tmp_path):
     fig = config["figures"]["lecture"]["fresnel"] | {"materials": ["Cu"], "angle_step_deg": 5}
     digests = []
