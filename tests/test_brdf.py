@@ -450,7 +450,7 @@ def test_nan_inputs_do_not_raise():
 def test_registry_is_complete():
     assert set(BRDF_METHODS) == {
         "Lambert", "Phong1975", "BlinnPhong1977", "BlinnPhong_AkenineMoller2008", "TorranceSparrow_Blinn1977",
-        "CookTorrance1982", "Ward1992", "HeidrichSeidel1998", "LommelSeeliger",
+        "CookTorrance1982", "Ward1992", "HeidrichSeidel1998", "LommelSeeliger", "Hapke1981",
     }
 
 
@@ -468,3 +468,34 @@ def test_lommel_seeliger_reciprocal_and_its_albedo():
     assert brdf_LommelSeeliger(-0.1, 0.5) == 0 and brdf_LommelSeeliger(0.5, -0.1) == 0
     albedo = quad(lambda m: brdf_LommelSeeliger(1.0, m, 0.9) * m * 2 * np.pi, 0, 1)[0]
     assert albedo == pytest.approx(0.45 * (1 - np.log(2)), rel=1e-9)
+
+
+def test_hapke_opposition_effect_back_towards_the_light():
+    """Hapke 1981 with Hapke 1986's B(g) = B0 / (1 + tan(g/2) / h) and Henyey-Greenstein p(g),
+    written out here from the phase angle itself (arccos of L.V): Lommel-Seeliger without the
+    opposition effect, the isotropic phase function and multiple scattering; 1 + B0 times brighter
+    looking back along the light; B = B0 / 2 where tan(g/2) = h; reciprocal; the H function of
+    Hapke 1981 (1 + 2x) / (1 + 2x sqrt(1 - w))."""
+    from reflectance.optics.brdf import brdf_Hapke1981, brdf_LommelSeeliger
+
+    rng = np.random.default_rng(11)
+    mu0, mu, LV = rng.uniform(0.05, 1, 40), rng.uniform(0.05, 1, 40), rng.uniform(-0.9, 1, 40)
+    plain = dict(B0=0.0, xi=0.0, multiple_scattering=False)
+    np.testing.assert_allclose(brdf_Hapke1981(mu0, mu, LV, 0.6, **plain), brdf_LommelSeeliger(mu0, mu, 0.6))
+    np.testing.assert_allclose(brdf_Hapke1981(mu0, mu, LV, 0.6, B0=0.8, xi=-0.3),
+                               brdf_Hapke1981(mu, mu0, LV, 0.6, B0=0.8, xi=-0.3))
+    B0, h, w, xi = 0.9, 0.05, 0.7, -0.25
+    g = np.arccos(LV)
+    B = B0 / (1 + np.tan(g / 2) / h)
+    p = (1 - xi**2) / (1 + 2 * xi * np.cos(g) + xi**2) ** 1.5
+    H = lambda x: (1 + 2 * x) / (1 + 2 * x * np.sqrt(1 - w))  # noqa: E731
+    by_hand = w / (4 * np.pi * (mu0 + mu)) * ((1 + B) * p + H(mu0) * H(mu) - 1)
+    np.testing.assert_allclose(brdf_Hapke1981(mu0, mu, LV, w, B0=B0, h=h, xi=xi), by_hand, rtol=1e-12)
+    single = dict(xi=0.0, multiple_scattering=False, h=h)
+    ls = brdf_LommelSeeliger(0.5, 0.5, w)
+    assert brdf_Hapke1981(0.5, 0.5, 1.0, w, B0=B0, **single) == pytest.approx((1 + B0) * ls)
+    half = np.cos(2 * np.arctan(h))  # tan(g/2) = h
+    assert brdf_Hapke1981(0.5, 0.5, half, w, B0=B0, **single) == pytest.approx((1 + B0 / 2) * ls)
+    assert brdf_Hapke1981(-0.1, 0.5, 0.2, w) == 0 and brdf_Hapke1981(0.5, -0.1, 0.2, w) == 0
+    with pytest.raises(ValueError, match="h > 0"):
+        brdf_Hapke1981(0.5, 0.5, 0.5, w, h=0.0)

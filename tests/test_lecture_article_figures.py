@@ -216,6 +216,52 @@ def test_fresnel_curves(config, tmp_path, grid):
         assert table[f"{name}_exact"].iloc[-1] == pytest.approx(1.0, abs=1e-6), name
 
 
+def test_fresnel_colour_bands(config, tmp_path, grid):
+    """Panel (c): each metal's colour at each angle, as colour-science computes it (the XYZ of
+    F(lambda, theta) under the illuminant, sRGB-encoded) wherever it lies in the gamut; white at
+    grazing incidence (F = 1); copper and gold red over green over blue, iron near grey."""
+    import colour
+
+    from reflectance.optics.spectra import load_material
+
+    fig = config["figures"]["lecture"]["fresnel"]
+    assert config["colour"]["space"] == "sRGB" and config["colour"]["illuminant"] == "D65"
+    spectra = [str(ROOT / "spectra" / f"{m}.csv") for m in fig["materials"]]
+    run_script("lecture_fresnel", tmp_path, {"png": "f.png", "pdf": "f.pdf", "csv": "f.csv"},
+               inputs={"spectra": spectra}, fig=fig, colour=config["colour"],
+               wavelengths=config["wavelengths"])
+    table = pd.read_csv(tmp_path / "f.csv")
+    shape = colour.SpectralShape(grid[0], grid[-1], grid[1] - grid[0])
+    cmfs = colour.MSDS_CMFS[config["colour"]["observer"]].copy().align(shape)
+    light = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+    checked = 0
+    for name in fig["materials"]:
+        m = load_material(name, grid, spectra_dir=ROOT / "spectra")
+        eta = m.n - 1j * m.k
+        rgb = table[[f"{name}_display_{c}" for c in "RGB"]].to_numpy()
+        for angle in (0.0, 45.0, 75.0):
+            row = int(np.argmin(np.abs(table.angle_deg - angle)))
+            t = np.radians(table.angle_deg[row])
+            # Fresnel for a complex index, s and p, from Snell's law with complex cos of refraction
+            cos_t = np.sqrt(1 - (np.sin(t) / eta) ** 2)
+            rs = (np.cos(t) - eta * cos_t) / (np.cos(t) + eta * cos_t)
+            rp = (eta * np.cos(t) - cos_t) / (eta * np.cos(t) + cos_t)
+            F = (np.abs(rs) ** 2 + np.abs(rp) ** 2) / 2
+            XYZ = colour.sd_to_XYZ(colour.SpectralDistribution(dict(zip(grid, F))), cmfs, light,
+                                   method="Integration") / 100
+            linear = colour.XYZ_to_RGB(XYZ, "sRGB", apply_cctf_encoding=False)
+            if np.all((linear > 0.002) & (linear < 0.998)):
+                np.testing.assert_allclose(rgb[row], colour.cctf_encoding(linear, "sRGB"), atol=3e-3)
+                checked += 1
+        np.testing.assert_allclose(rgb[-1], 1.0, atol=1e-6)  # 90 degrees: F = 1, the white
+    assert checked >= 6
+    for name in ("Cu", "Au"):
+        r, g, b = table[[f"{name}_display_{c}" for c in "RGB"]].iloc[0]
+        assert r > g > b + 0.05, name
+    fe = table[[f"Fe_display_{c}" for c in "RGB"]].iloc[0].to_numpy()
+    assert np.ptp(fe) < 0.05
+
+
 def test_fresnel_figure_is_deterministic(config, tmp_path):
     fig = config["figures"]["lecture"]["fresnel"] | {"materials": ["Cu"], "angle_step_deg": 5}
     digests = []
@@ -260,16 +306,71 @@ def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
         assert row.cook_torrance == pytest.approx(ct["s"] * F * D * G / (4 * L[2] * V[2]), rel=1e-5), theta_o
 
 
-def test_brdf_lobes_3d_renders(config, tmp_path):
+def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
+    """The lunar lobe (Hapke 1981 with Hapke 1986's opposition effect) peaks looking back along the
+    light, theta_o = -theta_i, where by hand (L.V = 1, g = 0, tan(g/2) = 0) it is
+    w / (8 pi cos theta_i) [(1 + B0) (1 - xi^2) / (1 + xi)^3 + H(cos theta_i)^2 - 1]; its
+    Lommel-Seeliger variant has no such peak (it rises to the horizon on both sides)."""
+    fig = config["figures"]["lecture"]["brdf_lobes"]
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    table = pd.read_csv(tmp_path / "l.csv")
+    lunar, ti = fig["models"]["lunar"], math.radians(fig["incidence_deg"])
+    w, B0, xi = lunar["albedo"], lunar["B0"], lunar["xi"]
+    inside = table.theta_o_deg.abs() <= fig["scale_to_deg"]
+    peak = table[inside].lunar.idxmax()
+    assert table.theta_o_deg[peak] == pytest.approx(-fig["incidence_deg"])
+    mu = math.cos(ti)
+    H = (1 + 2 * mu) / (1 + 2 * mu * math.sqrt(1 - w))
+    by_hand = w / (8 * math.pi * mu) * ((1 + B0) * (1 - xi**2) / (1 + xi) ** 3 + H * H - 1)
+    assert table.lunar[peak] == pytest.approx(by_hand, rel=1e-5)
+    variant = table.lunar_lommel_seeliger[inside]
+    assert variant.idxmax() in (variant.index[0], variant.index[-1])  # at the limit, not at the light
+    np.testing.assert_allclose(variant, w / (4 * np.pi * (mu + np.cos(np.radians(table.theta_o_deg[inside])))),
+                               rtol=1e-5)
+
+
+@pytest.fixture(scope="module")
+def lobes_3d(config, tmp_path_factory):
+    """The 3-D lobes at the build's sampling, beside the 2-D figure's table they are checked against."""
+    tmp_path = tmp_path_factory.mktemp("lobes")
+    fig = config["figures"]["lecture"]["brdf_lobes"]
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_3d", tmp_path, {"png": "l3.png", "values": "l3.values.rst"},
+               inputs={"plane": str(tmp_path / "l.csv")}, fig=fig)
+    return fig, tmp_path
+
+
+def test_brdf_lobes_3d_maxima_agree_with_the_2d_figure(lobes_3d):
+    """Both figures print each lobe's largest f up to scale_to_deg: the 3-D job's maximum over
+    the hemisphere equals the largest value of the 2-D table (read here) in that range, and the
+    lunar lobe's lies back along the light (theta_o = theta_i, phi_o = 180 deg: L is on -x)."""
+    from reflectance.io.captions import read_caption_values
+
+    fig, tmp_path = lobes_3d
+    values = read_caption_values(tmp_path / "l3.values.rst")
+    table = pd.read_csv(tmp_path / "l.csv")
+    inside = table.theta_o_deg.abs() <= fig["scale_to_deg"]
+    for key in fig["models"]:
+        assert values[f"{key}_max"] == f"{table[key][inside].max():.3g}", key
+        assert values[f"{key}_max_plane"] == values[f"{key}_max"], key
+    assert values["lunar_max_at"] == f"theta_o = {fig['incidence_deg']:.1f} deg, phi_o = 180 deg"
+
+
+def test_brdf_lobes_3d_fill_their_canvas(lobes_3d):
+    """Six lobes in two rows of three, trimmed: less than a fifth of the picture's rows and
+    columns are empty, and each of the six cells holds its lobe (coloured, not white or grey)."""
     from PIL import Image
 
-    fig = config["figures"]["lecture"]["brdf_lobes"] | {"hemisphere_samples": [19, 37]}
-    run_script("lecture_brdf_lobes_3d", tmp_path, {"png": "l3.png"}, fig=fig)
-    image = np.asarray(Image.open(tmp_path / "l3.png").convert("RGB"))
-    assert image.shape == (400, 1800, 3)
-    # four lobes: something not white in each quarter of the picture
-    for quarter in np.split(image, 4, axis=1):
-        assert (quarter.min(axis=2) < 200).mean() > 0.01
+    fig, tmp_path = lobes_3d
+    image = np.asarray(Image.open(tmp_path / "l3.png").convert("RGB")).astype(int)
+    ink = image.min(axis=2) < 245
+    assert 1 - ink.any(axis=1).mean() < 0.2 and 1 - ink.any(axis=0).mean() < 0.2
+    R, G, B = image[..., 0], image[..., 1], image[..., 2]
+    # viridis (G >= 0.9 R or B > R), saturated; not the orange arrow (G about 0.65 R) nor grey
+    lobe = ((G > 0.8 * R) | (B > R)) & (image.max(axis=2) - image.min(axis=2) > 60)
+    for row in np.array_split(lobe, 2, axis=0):
+        for cell in np.array_split(row, 3, axis=1):
+            assert cell.mean() > 0.008
 
 
 # --- article: distributions ---------------------------------------------------------------------------

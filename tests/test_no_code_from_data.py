@@ -21,7 +21,7 @@ SHELL = f"__import__('os').system('touch {MARKER}')"
 
 
 def good_row(**changes):
-    row = {"id": "article-phong-h-norm", "text": "article", "location": "here",
+    row = {"id": "article-phong-h-norm", "text": "article", "kind": "erratum", "location": "here",
            "printed": "p", "correct": "c", "test": "tests/test_errata.py::x"}
     row.update(changes)
     return row
@@ -44,6 +44,7 @@ BAD_ROWS = [
     (document([{k: v for k, v in good_row().items() if k != "test"}]), "missing test"),
     (document([good_row(), good_row()]), "row 2 ('article-phong-h-norm'): erratum id 'article-phong-h-norm' appears twice"),
     (document([good_row(text="blog")]), "unknown text 'blog'"),
+    (document([good_row(kind="typo")]), "row 1 ('article-phong-h-norm'): unknown kind 'typo'; known: erratum, "),
     (document(["just a string"]), "row 1: must be a mapping"),
     (document([]), "rows: must be a non-empty list"),
     ([good_row()], "top level"),

@@ -70,6 +70,7 @@ rule lecture_brdf_lobes_3d:
             category="Lecture",
             subcategory="Sample BRDFs",
         ),
+        values=LECTURE_LOBES_3D.outputs["values"],
     log:
         "logs/lecture/brdf_lobes_3d.log",
     benchmark:

@@ -39,7 +39,7 @@ with script_log(snakemake) as log:
     table = pd.DataFrame(rows + list(angles.items()), columns=["quantity", "value"])
     table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    pl = off_screen_plotter(1400, 1100)
+    pl = off_screen_plotter(1400, 950)  # wide: the vectors fill it up to the title
     pl.set_background("white")
     pl.enable_anti_aliasing("ssaa")
     pl.add_mesh(pv.Plane(i_size=2.2, j_size=1.5, i_resolution=11, j_resolution=8),
@@ -69,7 +69,7 @@ with script_log(snakemake) as log:
                 f"\u03b1 = {angles['alpha_deg']:.1f}\u00b0 (N to H),  "
                 f"\u03b8 = {angles['theta_deg']:.1f}\u00b0 (V to H = L to H)",
                 font_size=14, color="black", position="upper_left", font_file=FONT)
-    pl.camera_position = [(-0.8, -5.0, 2.1), (0.0, 0.0, 0.45), (0.0, 0.0, 1.0)]
+    pl.camera_position = [(-0.8, -5.0, 2.1), (0.0, 0.0, 0.3), (0.0, 0.0, 1.0)]  # the scene high, under the title
     pl.camera.zoom(1.2)
     save_plotter(pl, snakemake.output.png, margin=fig["margin_px"])
     log.info("L = %s, V = %s, H = %s; %s", L.round(4), V.round(4), H.round(4),

@@ -42,7 +42,7 @@ with script_log(snakemake) as log:
              title=f"(a) {name} mirror, normal incidence")
     ax_b.plot(grid * scale, light, color="0.3", label=f"CIE {colour_cfg['illuminant']}")
     tabulated_end = illuminant_range_nm(colour_cfg["illuminant"])[1]  # colour-science's table
-    if grid[-1] > tabulated_end:  # colour-science's table stops here; beyond it, held constant
+    if min(grid[-1], fig_cfg["axis_nm"][1]) > tabulated_end:  # the table stops here; beyond, held constant
         ax_b.axvspan(tabulated_end * scale, grid[-1] * scale, color="0.92", zorder=0,
                      label="held constant (past the table)")
     ax_b.plot(grid * scale, reflected, color="#b3672b", label=f"reflected by {name}")
@@ -50,9 +50,12 @@ with script_log(snakemake) as log:
              ylim=(0, 1.45 * light.max()),
              title="(b) spectral energy distributions")
     ax_b.legend(loc="upper left", bbox_to_anchor=(0.02, 1.0))  # above the curves, clear of the band
+    # the axes span the paper's "visible wavelengths" (config axis_nm), not the whole colour grid
+    start, end = fig_cfg["axis_nm"]
     for ax in (ax_a, ax_b):
-        ax.set_xticks(np.round(np.arange(0.4, grid[-1] * scale + 1e-9, 0.1), 1) if unit != "nm"
-                      else np.arange(400, grid[-1] + 1e-9, 100))
+        ax.set_xlim(start * scale, end * scale)
+        ticks = np.arange(np.ceil(start / 100) * 100, end + 1e-9, 100)
+        ax.set_xticks(np.round(ticks * scale, 1) if unit != "nm" else ticks)
     fig.suptitle(f"Cook & Torrance 1982, Fig. 4 \u2014 {name} ({material.kind} n, k; "
                  f"{grid[0]:g}\u2013{grid[-1]:g} nm)")
     fig.tight_layout(w_pad=1.5)

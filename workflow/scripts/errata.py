@@ -18,7 +18,8 @@ def render(table, png, pdf):
     blocks = []
     for _, r in table.iterrows():
         where = [(str(r.text).split(" (")[0], "bold")] + [
-            (line, "normal") for line in textwrap.wrap(str(r.location), wrap["where"])]
+            (line, "normal") for line in textwrap.wrap(str(r.location), wrap["where"])] + [
+            (line, "italic") for line in textwrap.wrap(f"({r.kind})", wrap["where"])] * (r.kind != "erratum")
         what = [(label if i == 0 else "", line, key) for key, label in fields
                 for i, line in enumerate(textwrap.wrap(str(r[key]).replace("::", ":: "), wrap.get(key, wrap["text"]),
                                                        break_long_words=False) or [""])]
@@ -40,7 +41,10 @@ def render(table, png, pdf):
         if i % 2 == 0:
             ax.axhspan(y - 0.5 - gap / 2, y + h - 0.5 + gap / 2, color="0.94", lw=0)
         for j, (line, weight) in enumerate(where):
-            ax.text(x_where, y + j, line, fontsize=TEXT_SIZE["table"], va="center", fontweight=weight)
+            ax.text(x_where, y + j, line, fontsize=TEXT_SIZE["table"], va="center",
+                    fontweight="bold" if weight == "bold" else "normal",
+                    fontstyle="italic" if weight == "italic" else "normal",
+                    color="#a0522d" if weight == "italic" else None)  # the row's kind, when not an erratum
         for j, (label, line, key) in enumerate(what):
             ax.text(x_label, y + j, label, fontsize=TEXT_SIZE["table"], va="center", color="0.35")
             ax.text(x_text, y + j, line, fontsize=TEXT_SIZE["table"], va="center",
@@ -49,7 +53,7 @@ def render(table, png, pdf):
     sources = sorted(set(table.text[table.text.str.contains(" (", regex=False)]))
     ax.text(x_where, total + 0.6, "; ".join(sources), fontsize=TEXT_SIZE["table"], color="0.3", va="center")
     fig.suptitle("Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article disagree\n"
-                 "with each other or with arithmetic", size=STYLE["axes.titlesize"], y=0.998, va="top")
+                 "with each other or with arithmetic (kind in italics where it is not an erratum)", size=STYLE["axes.titlesize"], y=0.998, va="top")
     savefig(fig, png, pdf)
 
 

@@ -1,7 +1,9 @@
 """Lecture (Russin, Module 3B), "BRDF" slide: its angles (theta_i, phi_i, theta_v, phi_v) drawn, and
 "Figure 9.18 (7.17 3rd edition) shows sample BRDFs" - diffuse, Phong, the lecture's normalised
-Blinn-Phong, Cook-Torrance, an anisotropic Ward lobe and a lunar (Lommel-Seeliger) lobe, as polar
-plots in the plane of incidence. The radius is the BRDF f(L, V) itself along each outgoing direction V (not
+Blinn-Phong, Cook-Torrance, an anisotropic Ward lobe and a lunar lobe (Hapke's, back-scattering
+towards the light; dashed, its Lommel-Seeliger variant without back-scatter), as polar plots in the
+plane of incidence. Each panel is scaled by its largest f up to ``scale_to_deg`` from N
+(``lobe_peak``, the 3-D figure's scale). The radius is the BRDF f(L, V) itself along each outgoing direction V (not
 f cos theta_o): a Lambertian surface is then "a simple hemisphere", as the slide says."""
 
 import numpy as np
@@ -11,7 +13,7 @@ from matplotlib.ticker import MaxNLocator
 from reflectance.optics.brdf import brdf
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.brdf_geometry import draw_brdf_angles
-from reflectance.papers.polar import plane_of_incidence_vectors
+from reflectance.papers.polar import lobe_peak, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -22,8 +24,9 @@ MODELS = {
     "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong, (m+8)/(8\u03c0) cos$^m\\theta_h$"),
     "cook_torrance": ("CookTorrance1982", "Cook-Torrance, DGF/(4(N\u00b7L)(N\u00b7V))"),
     "ward": ("Ward1992", "Ward, anisotropic"),
-    "lunar": ("LommelSeeliger", "lunar (Lommel-Seeliger)"),
+    "lunar": ("Hapke1981", "lunar: Hapke 1981, opposition effect"),
 }
+VARIANT = "lunar_lommel_seeliger"  # the lunar lobe's Lommel-Seeliger variant (same albedo), dashed
 
 
 def parameters_text(params):
@@ -51,6 +54,7 @@ with script_log(snakemake) as log:
     table = {"theta_o_deg": np.degrees(theta_o)}
     for key, (method, _) in MODELS.items():
         table[key] = brdf(L, V, N, method, **cfg["models"][key])
+    table[VARIANT] = brdf(L, V, N, "LommelSeeliger", albedo=cfg["models"]["lunar"]["albedo"])
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     # drawn at the print width (its text prints at the figures' sizes): the angle diagram and the
@@ -70,28 +74,31 @@ with script_log(snakemake) as log:
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
         f = table[key]
-        inside = np.abs(theta_o) <= np.radians(cfg["scale_to_deg"])  # Ward's f grows without bound
-        top = 1.15 * f[inside].max()
-        ax.plot(theta_o, f, color=OKABE_ITO[0], lw=1.6)
-        ax.fill(theta_o, f, color=OKABE_ITO[0], alpha=0.15)
+        peak, at = lobe_peak(f, theta_o, cfg["scale_to_deg"])  # Ward's f grows without bound
+        top = 1.15 * peak
+        ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6)
+        ax.fill(theta_o, np.minimum(f, top), color=OKABE_ITO[0], alpha=0.15)
+        if key == "lunar":
+            ax.plot(theta_o, np.minimum(table[VARIANT], top), color=OKABE_ITO[3], lw=1.2, ls=(0, (4, 2)),
+                    label="lunar variant: Lommel-Seeliger\n(same w, no back-scatter)")
         ax.plot([-theta_i, -theta_i], [0, top], color=OKABE_ITO[4], lw=1.5, label="towards the light L")
         ax.plot([theta_i, theta_i], [0, top], color="0.4", lw=1, ls="--", label="mirror direction")
-        ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6) if f.max() > top else None
         ax.set_ylim(0, top)
         ax.set_title(f"{title}\n" + wrap_items(parameters_text(cfg["models"][key])),
                      fontsize=TEXT_SIZE["annotation"], pad=0, linespacing=1.25)
         ax.tick_params(pad=1)
         ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
         ax.yaxis.set_major_locator(MaxNLocator(2))
-        ax.text(0.5, 0.02, f"max f = {f[inside].max():.3g} sr$^{{-1}}$\n"
-                f"(|\u03b8| \u2264 {cfg['scale_to_deg']:g}\u00b0)"
-                if f.max() > top else f"max f = {f.max():.3g} sr$^{{-1}}$", transform=ax.transAxes,
-                ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
-        log.info("%s: max f %.6g at theta_o = %.2f deg", key, f.max(),
-                 np.degrees(theta_o[np.argmax(f)]))
-    fig.legend(*fig.axes[1].get_legend_handles_labels(), loc="center left",
+        flat = np.ptp(f[np.abs(theta_o) < np.pi / 2]) <= 1e-9 * peak  # Lambert's: no one direction
+        where = "" if flat else f" at \u03b8 = {np.degrees(theta_o[at]):.0f}\u00b0"
+        ax.text(0.5, 0.02, f"max f = {peak:.3g} sr$^{{-1}}${where}",
+                transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
+        log.info("%s: max f %.6g at theta_o = %.2f deg (up to %g deg from N)", key, peak,
+                 np.degrees(theta_o[at]), cfg["scale_to_deg"])
+    fig.legend(*fig.axes[-1].get_legend_handles_labels(), loc="center left",
                bbox_to_anchor=(0.7, 0.8), title=f"incidence {cfg['incidence_deg']:g}\u00b0,\n"
-               "light on the left;\nradius f(L, V) in sr$^{-1}$", alignment="left")
+               "light on the left;\nradius f(L, V) in sr$^{-1}$;\n"
+               f"max f: largest up to {cfg['scale_to_deg']:g}\u00b0 from N", alignment="left")
     fig.suptitle("Lecture (Russin, Module 3B), the BRDF's angles\nand sample BRDFs in the plane of "
                  "incidence", y=0.995, va="top", linespacing=1.3)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

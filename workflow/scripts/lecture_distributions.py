@@ -46,9 +46,10 @@ with script_log(snakemake) as log:
         for key, colour in (("gaussian_slide", OKABE_ITO[1]), ("gaussian_correct", OKABE_ITO[0])):
             axes[0].plot(np.degrees(alpha), curves[f"{key}_m{m:g}"], color=colour, ls=style,
                          label=f"{label[key]}, m = {m:g}")
+        # one colour per text in both panels: the slide vermilion, C&T blue, the normalised form green
         for key, colour, name in (("beckmann_slide", OKABE_ITO[1], "slide: 1/(4m\u00b2cos\u2074)"),
-                                  ("beckmann_CookTorrance1982", OKABE_ITO[2], "C&T printed: 1/(m\u00b2cos\u2074)"),
-                                  ("beckmann_normalised", OKABE_ITO[0], "normalised: 1/(\u03c0m\u00b2cos\u2074)")):
+                                  ("beckmann_CookTorrance1982", OKABE_ITO[0], "C&T printed: 1/(m\u00b2cos\u2074)"),
+                                  ("beckmann_normalised", OKABE_ITO[2], "normalised: 1/(\u03c0m\u00b2cos\u2074)")):
             axes[1].plot(np.degrees(alpha), curves[f"{key}_m{m:g}"], color=colour, ls=style,
                          label=f"{name}, m = {m:g}")
     table = pd.DataFrame(rows)

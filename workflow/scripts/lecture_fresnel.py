@@ -1,13 +1,18 @@
 """Lecture (Russin, Module 3B), "Fresnel reflectance" slide: F against incidence angle for dielectrics
 (exact equation with a real index) and metals (exact complex-index equation from measured n, k,
-plotted as the reflectance of the illuminant's luminance Y), with Schlick's approximation dashed."""
+plotted as the reflectance of the illuminant's luminance Y), with Schlick's approximation dashed; and,
+for the slide's "you can get color changes in specular regions", (c) the colour of each metal's F(theta)
+against the angle: the XYZ of F(lambda, theta) under the illuminant, through the project's display
+pipeline (gamut clip, transfer; the display white is a perfect reflector)."""
 
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from matplotlib.patches import Rectangle
 
 from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.display import XYZ_to_display, display_tag
 from reflectance.optics.fresnel import fresnel
 from reflectance.io.figures import PRINT_WIDTH_IN, new_figure, savefig
 from reflectance.scripting import script_log
@@ -18,7 +23,8 @@ with script_log(snakemake) as log:
     cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     grid = wavelength_grid(**snakemake.params.wavelengths)
     # Y weights: Y = F @ W_Y is the luminance reflected, relative to the illuminant's (Y_white = 1)
-    W_Y = tristimulus_weights(grid, colour_cfg["illuminant"], colour_cfg["observer"])[:, 1]
+    W = tristimulus_weights(grid, colour_cfg["illuminant"], colour_cfg["observer"])
+    W_Y = W[:, 1]
     angles = np.arange(0.0, 90.0 + 1e-9, cfg["angle_step_deg"])
     c = np.clip(np.cos(np.radians(angles)), 0.0, 1.0)
     spectra_dir = Path(snakemake.input.spectra[0]).parent
@@ -27,19 +33,27 @@ with script_log(snakemake) as log:
     for name, d in cfg["dielectrics"].items():
         curves[("dielectric", name, f"{name} (n = {d['n']:g})")] = {
             method: fresnel(c, d["n"], 0.0, method=method) for method in ("exact", "schlick")}
+    bands = {}  # metal -> display RGB of its exact F(lambda, theta) at each angle
     for name in cfg["materials"]:
         material = load_material(name, grid, spectra_dir=spectra_dir)
-        curves[("metal", name, name)] = {
-            method: fresnel(c[:, None], material.n, material.k, method=method) @ W_Y
-            for method in ("exact", "schlick")}
+        F = {method: fresnel(c[:, None], material.n, material.k, method=method) for method in ("exact", "schlick")}
+        curves[("metal", name, name)] = {method: F[method] @ W_Y for method in F}
+        # the colour of the reflected light: XYZ of F under the illuminant (white Y = 1), no exposure
+        bands[name] = XYZ_to_display(F["exact"] @ W, colour_cfg["space"], colour_cfg["gamut_clip"],
+                                     expose=False, illuminant=colour_cfg["illuminant"],
+                                     observer=colour_cfg["observer"], wavelengths=grid)
 
     table = {"angle_deg": angles}
     for (_, name, _), F in curves.items():
         table[f"{name}_exact"], table[f"{name}_schlick"] = F["exact"], F["schlick"]
+    for name, rgb in bands.items():
+        for i, channel in enumerate("RGB"):
+            table[f"{name}_display_{channel}"] = rgb[:, i]
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
-    fig = new_figure(PRINT_WIDTH_IN, 0.5 * PRINT_WIDTH_IN)
-    axes = dict(zip(("dielectric", "metal"), fig.subplots(1, 2)))
+    fig = new_figure(PRINT_WIDTH_IN, 0.5 * PRINT_WIDTH_IN + 0.22 * len(bands) + 0.9)
+    grid_spec = fig.add_gridspec(2, 2, height_ratios=[0.5 * PRINT_WIDTH_IN, 0.22 * len(bands) + 0.25])
+    axes = {"dielectric": fig.add_subplot(grid_spec[0, 0]), "metal": fig.add_subplot(grid_spec[0, 1])}
     for (group, name, label), F in curves.items():
         error = np.max(np.abs(F["schlick"] - F["exact"]))
         (line,) = axes[group].plot(angles, F["exact"], label=f"{label}: {error:.3f}")
@@ -54,7 +68,20 @@ with script_log(snakemake) as log:
         ax.grid(True)
     for group, where in (("dielectric", "upper left"), ("metal", "lower left")):
         axes[group].legend(loc=where, handlelength=1.4, labelspacing=0.3)
+    ax = fig.add_subplot(grid_spec[1, :])  # (c) one band per metal: its colour at each angle
+    for i, rgb in enumerate(bands.values()):  # each band framed: silver's is near the page's white
+        ax.imshow(rgb[None], aspect="auto", interpolation="nearest",
+                  extent=(angles[0], angles[-1], i + 0.42, i - 0.42))
+        ax.add_patch(Rectangle((0, i - 0.42), 90, 0.84, fill=False, edgecolor="0.55", lw=0.6))
+    ax.set(yticks=range(len(bands)), yticklabels=list(bands), xlim=(0, 90), xticks=np.arange(0, 91, 15),
+           xlabel="incidence angle \u03b8 (degrees)",
+           title=f"(c) metals: the colour of F(\u03bb, \u03b8) under {colour_cfg['illuminant']} "
+                 f"({colour_cfg['space']}; white: a perfect mirror)")
+    ax.set_ylim(len(bands) - 0.5, -0.5)
+    ax.tick_params(left=False)
+    for spine in ax.spines.values():
+        spine.set_visible(False)
     fig.suptitle("Lecture (Russin, Module 3B), \u201cFresnel reflectance\u201d: unpolarised F against the "
                  "incidence angle\nsolid: exact Fresnel; dashed: Schlick 1994; in the legends: max |Schlick \u2212 exact|")
     fig.tight_layout(w_pad=1.5)
-    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=display_tag(colour_cfg["space"]))

@@ -46,6 +46,9 @@ References
   Graphics Hardware. Proc. Image and Multi-dimensional Digital Signal Processing Workshop.
 - Walter, B., Marschner, S. R., Li, H., & Torrance, K. E. (2007). Microfacet Models for Refraction
   through Rough Surfaces. Eurographics Symposium on Rendering.
+- Hapke, B. (1981). Bidirectional reflectance spectroscopy 1. Theory. Journal of Geophysical
+  Research 86(B4), 3039-3054; Hapke, B. (1986). Bidirectional reflectance spectroscopy 4. The
+  extinction coefficient and the opposition effect. Icarus 67, 264-280 (the lunar lobe).
 """
 
 from __future__ import annotations
@@ -67,6 +70,7 @@ __all__ = [
     "brdf_Ward1992",
     "brdf_HeidrichSeidel1998",
     "brdf_LommelSeeliger",
+    "brdf_Hapke1981",
     "ambient_reflectance_CookTorrance1982",
     "intensity_CookTorrance1982",
     "BRDF_METHODS",
@@ -573,6 +577,77 @@ def brdf_LommelSeeliger(NL, NV, albedo=1.0):
     return _out(np.where(lit, f, 0.0))
 
 
+def brdf_Hapke1981(NL, NV, LV, albedo=1.0, B0=1.0, h=0.06, xi=0.0, multiple_scattering=True):
+    """Hapke's bidirectional reflectance of a particulate (lunar) surface, with its opposition effect.
+
+    Hapke 1981: ``r(i, e, g) = (w / 4 pi) mu_0 / (mu_0 + mu) {[1 + B(g)] p(g) + H(mu_0) H(mu) - 1}``,
+    a radiance factor per unit incident irradiance; the BRDF is ``f = r / mu_0``::
+
+        f = w / (4 pi (mu_0 + mu)) {[1 + B(g)] p(g) + H(mu_0) H(mu) - 1}
+
+    with ``mu_0 = N.L``, ``mu = N.V`` and the phase angle ``g`` between L and V (``cos g = L.V``,
+    0 when the viewer looks along the light). Its parts:
+
+    - ``B(g) = B0 / (1 + tan(g / 2) / h)``: the shadow-hiding opposition effect in the form of
+      Hapke 1986 (amplitude ``B0``, angular width ``h``): at ``g = 0`` a particle's own shadow is
+      hidden behind it, so the surface is up to ``1 + B0`` times brighter back towards the light.
+    - ``p(g) = (1 - xi^2) / (1 + 2 xi cos g + xi^2)^(3/2)``: the Henyey-Greenstein (1941) phase
+      function of one particle written in the phase angle (``xi < 0`` scatters back towards the
+      light, ``xi = 0`` is isotropic).
+    - ``H(x) = (1 + 2 x) / (1 + 2 x sqrt(1 - w))``: Hapke 1981's approximation to Chandrasekhar's
+      H function (isotropic multiple scattering); ``multiple_scattering=False`` sets ``H = 1``.
+
+    With ``B0 = 0``, ``xi = 0`` and no multiple scattering it is the Lommel-Seeliger law
+    :func:`brdf_LommelSeeliger`, which has no back-scatter. The model is reciprocal (``g``, the sum
+    ``mu_0 + mu`` and the product of H's are symmetric in L and V).
+
+    Parameters
+    ----------
+    NL, NV, LV : array_like
+        ``N.L``, ``N.V`` and ``L.V`` (the cosine of the phase angle).
+    albedo : array_like
+        Single-scattering albedo ``w`` in [0, 1].
+    B0, h : array_like
+        Amplitude (>= 0) and angular width (> 0) of the opposition effect.
+    xi : array_like
+        Henyey-Greenstein asymmetry in (-1, 1); negative: back-scattering particles.
+    multiple_scattering : bool
+        Include ``H(mu_0) H(mu) - 1``.
+
+    References
+    ----------
+    - Hapke 1981 (r(i, e, g) and its H function); Hapke 1986 (B(g)).
+    - Henyey, L. G., & Greenstein, J. L. (1941). Diffuse radiation in the Galaxy. Astrophysical
+      Journal 93, 70-83.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> # looking back along the light (L.V = 1): 1 + B0 times the Lommel-Seeliger value
+    >>> print(f"{brdf_Hapke1981(0.6, 0.6, 1.0, 0.8, B0=1.0, multiple_scattering=False) / brdf_LommelSeeliger(0.6, 0.6, 0.8):.6f}")
+    2.000000
+    """
+    NL, NV, LV = _cosines(NL, NV, LV)
+    w, B0, h, xi = (np.asarray(a, dtype=np.float64) for a in (albedo, B0, h, xi))
+    if np.any(h <= 0) or np.any(B0 < 0) or np.any(np.abs(xi) >= 1):
+        raise ValueError(f"Hapke needs h > 0, B0 >= 0 and |xi| < 1, got h = {h!r}, B0 = {B0!r}, xi = {xi!r}.")
+    lit = _lit_and_seen(NL, NV)
+    # tan(g/2) = sqrt((1 - cos g) / (1 + cos g)); g = pi (L = -V) cannot be lit and seen
+    tan_half = np.sqrt(np.maximum(1.0 - LV, 0.0) / _positive(1.0 + LV))
+    B = B0 / (1.0 + tan_half / h)  # Hapke 1986, shadow-hiding opposition effect
+    p = (1.0 - xi * xi) / (1.0 + 2.0 * xi * LV + xi * xi) ** 1.5  # Henyey & Greenstein 1941, in g
+    if multiple_scattering:
+        gamma = np.sqrt(np.maximum(1.0 - w, 0.0))
+        H0 = (1.0 + 2.0 * NL) / (1.0 + 2.0 * gamma * NL)  # Hapke 1981, approximate H function
+        H = (1.0 + 2.0 * NV) / (1.0 + 2.0 * gamma * NV)
+        multiple = H0 * H - 1.0
+    else:
+        multiple = 0.0
+    # Hapke 1981: r = (w / 4 pi) mu_0 / (mu_0 + mu) {[1 + B] p + H H - 1}; f = r / mu_0
+    f = w / (4.0 * np.pi * _positive(NL + NV)) * ((1.0 + B) * p + multiple)
+    return _out(np.where(lit, f, 0.0))
+
+
 # --- registry, vector-level dispatcher, albedo ----------------------------------------------------
 
 BRDF_METHODS = {
@@ -585,6 +660,7 @@ BRDF_METHODS = {
     "Ward1992": brdf_Ward1992,
     "HeidrichSeidel1998": brdf_HeidrichSeidel1998,
     "LommelSeeliger": brdf_LommelSeeliger,
+    "Hapke1981": brdf_Hapke1981,
 }
 """BRDF models of :func:`brdf`, each a function of cosines (see the module docstring)."""
 

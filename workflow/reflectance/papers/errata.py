@@ -25,12 +25,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["Consequence", "ERRATA", "TEXT_KEYS", "errata_rows", "errata_table", "ErrataError"]
+__all__ = ["Consequence", "ERRATA", "KINDS", "TEXT_KEYS", "errata_rows", "errata_table", "ErrataError"]
 
 #: the keys an errata row may hold: all text, none of it evaluated
-TEXT_KEYS = ("id", "text", "location", "printed", "correct", "test")
+TEXT_KEYS = ("id", "text", "kind", "location", "printed", "correct", "test")
+#: what a row is: an error of the text; two texts' conventions that differ; two texts' names for
+#: one thing that differ; or a reading that may come from the transcription of the text (a symbol
+#: or a built-up fraction lost), not from the text as printed
+KINDS = ("erratum", "convention mismatch", "naming", "possibly a transcription artefact")
 #: the columns of the errata table
-COLUMNS = ["text", "location", "printed", "correct", "consequence", "value", "test"]
+COLUMNS = ["text", "kind", "location", "printed", "correct", "consequence", "value", "test"]
 
 
 class ErrataError(ValueError):
@@ -122,7 +126,8 @@ def blinn_triangle_2pi(**_):
 @_erratum("blinn-projection-of-B")
 def blinn_projection_of_B(**_):
     """Blinn: 'E_p is the projection of B onto the N,H plane'; no B is defined: it is E (his
-    Fig. 4 text: 'project E onto the plane containing N and H ... Calling this projection E'')."""
+    Fig. 4 text: 'project E onto the plane containing N and H ... Calling this projection E''),
+    most likely a bold E lost in the transcription. Computed: projecting E keeps N.E and H.E."""
     from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977
     from reflectance.papers.vgroove import simulate_vgroove
 
@@ -146,7 +151,8 @@ def blinn_projection_of_B(**_):
 
 @_erratum("blinn-division-free-grouping")
 def blinn_division_free_grouping(**_):
-    """Blinn's last branch G := 2(N.H)(N.L)/(E.H)(N.E) read left to right."""
+    """Blinn's last branch G := 2(N.H)(N.L)/(E.H)(N.E) read left to right (as transcribed; most
+    likely a built-up fraction with (E.H)(N.E) below the bar)."""
     from reflectance.optics.shadowing import G_over_NE_Blinn1977
 
     NL, NE, NH, EH = 0.1, 0.6, 0.8, 0.7
@@ -156,6 +162,31 @@ def blinn_division_free_grouping(**_):
     return _result(f"N.L = 0.1, N.E = 0.6, N.H = 0.8, E.H = 0.7: {left_to_right:.4f} left to "
                    f"right, {grouped:.4f} grouped: off by (N.E)^2 = {ratio:.4g}", ratio,
                    left_to_right=left_to_right, grouped=grouped, ratio=ratio)
+
+
+@_erratum("blinn-phong-naming")
+def blinn_phong_naming(*, theta_deg, **_):
+    """Blinn's 'net Phong shading function' s = (N.H)^c1 is what the article calls Blinn-Phong;
+    the article's (and Phong's) lobe is (R.V)^n. At Blinn's exponent 50 ('typically 50 or 60'):
+    the view angles from the mirror direction, in the plane of incidence, at which each falls to
+    1/2 (the light at theta_deg)."""
+    from reflectance.optics.brdf import brdf
+    from reflectance.papers.polar import plane_of_incidence_vectors
+
+    c1 = 50.0
+    theta_i = np.radians(theta_deg)
+    offset = np.radians(np.linspace(0.0, 90.0 - theta_deg, 200001))  # towards the horizon
+    L, E, N = plane_of_incidence_vectors(theta_i, theta_i + offset)
+    halves = {}
+    for method in ("BlinnPhong1977", "Phong1975"):
+        s = (N @ L) * brdf(L, E, N, method, p_d=0.0, p_s=1.0, c1=c1)  # Blinn's s (p_s = 1)
+        halves[method] = np.degrees(offset[np.argmax(s <= 0.5)])
+    ratio = halves["BlinnPhong1977"] / halves["Phong1975"]
+    return _result(f"c1 = 50, light at {theta_deg:g} deg: Blinn's (N.H)^c1 halves "
+                   f"{halves['BlinnPhong1977']:.2f} deg from the mirror direction, Phong's (R.V)^c1 "
+                   f"{halves['Phong1975']:.2f} deg: a lobe {ratio:.3g} times as wide at the same "
+                   f"exponent", ratio, blinn_half_deg=halves["BlinnPhong1977"],
+                   phong_half_deg=halves["Phong1975"], ratio=ratio)
 
 
 # -- Cook & Torrance 1982 -----------------------------------------------------------------------
@@ -207,34 +238,6 @@ def lecture_gaussian_m(*, m, **_):
                    f"alpha = 90 deg (half-angle {beta_lecture:.0f} deg, past the horizon); C&T's "
                    f"is {ct_90:.1e} there and halves at {beta_ct:.1f} deg", lecture_90,
                    lecture_90=lecture_90, ct_90=ct_90, beta_lecture=beta_lecture, beta_ct=beta_ct)
-
-
-@_erratum("lecture-beckmann-4")
-def lecture_beckmann_4(*, m, **_):
-    """The slide's Beckmann D carries 1/4: with C&T's R_s = (F/pi) D G / ((N.L)(N.V)) it gives
-    the normalised F D G / (4 (N.L)(N.V)) with D carrying 1/pi."""
-    from reflectance.optics.brdf import brdf
-    from reflectance.optics.microfacet import distribution_Beckmann1963
-
-    c = np.cos(np.radians(20.0))
-    # the slide 'Distribution of Microfacet Orientations' as printed
-    lecture = np.exp(-((1 - c * c) / (c * c)) / m**2) / (4 * m**2 * c**4)
-    ct = distribution_Beckmann1963(c, m)
-    normalised = distribution_Beckmann1963(c, m, convention="physical")
-    ratio = lecture / ct
-    # the BRDF: C&T's R_s (F/pi, D G / ((N.L)(N.V))) with the slide's D, against the normalised
-    # BRDF, at a light 30 deg and a view 50 deg from N in the plane of incidence, F = 1
-    L, V, N = _direction(30.0, 180.0), _direction(50.0), np.array([0.0, 0.0, 1.0])
-    physical = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m, convention="physical")
-    paper = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m)  # C&T's R_s with C&T's D
-    with_slide_D = paper * ratio  # R_s is linear in D
-    brdf_ratio = with_slide_D / physical
-    return _result(f"alpha = 20 deg, m = {m:g}: D = {lecture:.4g} (lecture), {ct:.4g} (C&T), "
-                   f"{normalised:.4g} (normalised); lecture / C&T = {ratio:.4g} at every alpha "
-                   f"(D cos alpha integrates to pi/4); in C&T's R_s the lecture's D gives "
-                   f"{brdf_ratio:.4f} x the normalised BRDF (light 30, view 50 deg)", ratio,
-                   lecture=lecture, ct=ct, normalised=normalised, ratio=ratio,
-                   brdf_ratio=brdf_ratio)
 
 
 @_erratum("lecture-specular-term")
@@ -310,14 +313,17 @@ def article_phong_example_cube(**_):
 
 @_erratum("article-phong-reflection-sign")
 def article_phong_reflection_sign(**_):
-    """The article's eye reflection vector E - 2N(N.E) is minus the mirror image of E."""
+    """The article's eye reflection vector E - 2N(N.E) is the mirror image of E pointing at the
+    surface (the view ray); its example's E points away from it (N.E = 1/2 > 0): a convention
+    mismatch, which flips the sign of L.R."""
     L, E, N = _L_ART, _E_ART, _N_ART
     printed_k = (L @ (E - 2 * N * (N @ E))) ** 3
-    clamped_k = max(0.0, L @ (E - 2 * N * (N @ E))) ** 3
+    towards_k = (L @ (-E - 2 * N * (N @ -E))) ** 3  # E reversed: pointing from the eye at the surface
     phong_k = _phong_k(L, E, N, 3.0)
-    return _result(f"the article's example (n = 3): printed form {printed_k:.4f} ({clamped_k:.4g} "
-                   f"with the article's own max(0, A.B) note), Phong's (R.V)^n = {phong_k:.4f}",
-                   phong_k, printed_k=printed_k, clamped_k=clamped_k, phong_k=phong_k)
+    return _result(f"the article's example (n = 3): E as printed (N.E = {N @ E:g}, towards the eye) "
+                   f"gives {printed_k:.4f}; the same E pointing at the surface gives {towards_k:.4f} "
+                   f"= Phong's (R.V)^n = {phong_k:.4f}", phong_k, printed_k=printed_k,
+                   towards_k=towards_k, phong_k=phong_k)
 
 
 @_erratum("article-phong-h-norm")
@@ -427,6 +433,8 @@ def errata_rows(path):
         if row["id"] in seen:
             raise _bad(path, where, f"erratum id {row['id']!r} appears twice")
         seen.add(row["id"])
+        if row["kind"] not in KINDS:
+            raise _bad(path, where, f"unknown kind {row['kind']!r}; known: {', '.join(KINDS)}")
         if row["text"] not in texts:
             raise _bad(path, where, f"unknown text {row['text']!r}; known: {', '.join(texts)}")
     return texts, rows
@@ -442,7 +450,7 @@ def errata_table(path, settings):
     records = []
     for row in rows:
         result = ERRATA[row["id"]](**settings)
-        records.append({"text": texts[row["text"]], "location": row["location"],
+        records.append({"text": texts[row["text"]], "kind": row["kind"], "location": row["location"],
                         "printed": row["printed"], "correct": row["correct"],
                         "consequence": result.text, "value": result.value, "test": row["test"]})
     return pd.DataFrame(records, columns=COLUMNS)

@@ -6,6 +6,8 @@
 - :func:`plane_of_incidence_vectors`: L, E and N in the plane of incidence, the one convention of
   every plane-of-incidence figure (Blinn Figs. 5 and 6, the lecture's and the article's lobes).
 - :func:`intensity_in_plane_of_incidence`: the polar plots of Blinn 1977, Figs. 5 and 6.
+- :func:`lobe_peak`: a lobe's largest value up to an angle from N, the one scale of the lecture's
+  2-D and 3-D lobes (so the two figures print the same maximum).
 
 Blinn draws "the amount of light reflected from a surface as a result of an incident ray at 30
 [70] degrees from the surface normal" as a curve whose distance from the centre, in each direction
@@ -36,7 +38,8 @@ import numpy as np
 
 from reflectance.optics.brdf import brdf
 
-__all__ = ["direction_from_angles", "plane_of_incidence_vectors", "intensity_in_plane_of_incidence"]
+__all__ = ["direction_from_angles", "plane_of_incidence_vectors", "intensity_in_plane_of_incidence",
+           "lobe_peak"]
 
 
 def direction_from_angles(theta, phi):
@@ -125,3 +128,26 @@ def intensity_in_plane_of_incidence(theta_i, theta_r, method, **parameters):
     # cos(pi/2) rounds to 6e-17 > 0: the horizon itself is decided on the angle, not on N.E.
     i = np.where(np.abs(np.asarray(theta_r, dtype=np.float64)) < np.pi / 2, i, 0.0)
     return i[()] if i.ndim == 0 else i
+
+
+def lobe_peak(f, theta, limit_deg):
+    """The largest ``f`` over the directions at most ``limit_deg`` from N, and its flat index.
+
+    ``theta`` holds the (signed, or polar) angles from N in radians, broadcasting against ``f``.
+    The lecture's lobes are scaled by this value, in 2-D (the plane of incidence) and in 3-D (the
+    outgoing hemisphere): Ward's ``1 / sqrt(N.L N.V)`` grows without bound at the horizon, so a
+    lobe's maximum is taken short of it, the same way in both figures.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> theta = np.radians([-90.0, -30.0, 0.0, 60.0, 89.0])
+    >>> lobe_peak(np.array([9.0, 2.0, 1.0, 3.0, 7.0]), theta, 85.0)
+    (3.0, 3)
+    """
+    f, theta = np.broadcast_arrays(np.asarray(f, dtype=np.float64), np.asarray(theta, dtype=np.float64))
+    inside = np.abs(theta) <= np.radians(limit_deg) * (1 + 1e-12)
+    if not inside.any():
+        raise ValueError(f"no direction within {limit_deg!r} degrees of N")
+    index = int(np.argmax(np.where(inside, f, -np.inf)))
+    return float(f.flat[index]), index
