@@ -414,6 +414,19 @@ def test_fig6b_default_highlight_is_copper_coloured(fig6_published):
     assert brightest.sum() >= 5 and np.all(np.abs(difference) <= 10), difference
 
 
+def test_fig6b_default_highlights_keep_a_gradient(fig6_published):
+    """Issue 28: the copper highlights are not flat plateaus at 255 ("stickers, not metal"):
+    under 2 % of the vase's pixels have a channel at 255, and the brightest pixels (the top
+    1 % of L*, clipped or not) still have copper's CIELAB hue under D65 within 10 deg."""
+    codes, Lab = shown_lab(fig6_published.b_png, fig6_published.b_exr)
+    clipped = (codes.max(axis=-1) >= 255).mean()
+    assert clipped < 0.02, f"{clipped:.1%} of the copper vase has a channel at 255"
+    top = Lab[:, 0] >= np.percentile(Lab[:, 0], 99)
+    hue = np.degrees(np.arctan2(Lab[top, 2].mean(), Lab[top, 1].mean()))
+    L, a, b = colour.XYZ_to_Lab(F0_colour_science("Cu"), D65_xy())
+    assert abs((hue - np.degrees(np.arctan2(b, a)) + 180) % 360 - 180) <= 10, hue
+
+
 def test_fig6a_default_departure_is_labelled(fig6_published):
     """Fig. 6a departs from the print only as config.yaml says, and the CSV shows both."""
     table = pd.read_csv(fig6_published.csv)
