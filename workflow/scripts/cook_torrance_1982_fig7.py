@@ -43,6 +43,16 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
+def carbon_F0_range(spectra_dir):
+    """The least and greatest F0 of carbon's measured n, k over Table I's visible range
+    (table1.average_F0_range_nm), for the caption."""
+    lo, hi = snakemake.params.visible_nm
+    grid = np.arange(lo, hi + 1, snakemake.params.wavelengths["step_nm"], dtype=float)
+    F0 = load_material("Carbon", grid, str(spectra_dir)).F0
+    return {"Carbon_F0_min": f"{F0.min():.2f}", "Carbon_F0_max": f"{F0.max():.2f}",
+            "visible_lo": f"{lo:g}", "visible_hi": f"{hi:g}"}
+
+
 def variant(log, out, reference, published, items):
     """One variant of the figure (its vases' scenes ``items``): table and grid written to
     ``out``."""
@@ -167,5 +177,10 @@ with script_log(snakemake) as log:
             "LunarDust_L": f"{L.LunarDust:.0f}", "Obsidian_L": f"{L.Obsidian:.0f}",
             "Obsidian_visible": f"{100 * vases.visible.Obsidian:.0f}",
             "Obsidian_span": f"{span.Obsidian:.0f}", "LunarDust_span": f"{span.LunarDust:.1f}",
-            "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}"})
+            "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}",
+            # carbon (issue 28): its measured F0 over the visible, the lightness of its F0 (the
+            # albedo of R_d = F0/pi, CIE 1976 L*) against the median L* the figure shows
+            "Carbon_L": f"{L.Carbon:.0f}",
+            "Carbon_F0_L": f"{116 * np.cbrt(vases.F0_Y.Carbon) - 16:.0f}",
+            **carbon_F0_range(Path(snakemake.input.sources).parent)})
     write_caption_values(snakemake.output.values, values)
