@@ -57,6 +57,7 @@ def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
         output=SimpleNamespace(**prefixed(vars(out), reading)),
         params=SimpleNamespace(fig=fig, fig6=CT82["fig6"], table1=TABLE1, reference=reference,
                                published=published, readings=readings,
+                               visible_nm=CT82["table1"]["average_F0_range_nm"],
                                wavelengths=CONFIG["wavelengths"], colour=CONFIG["colour"]),
         log=[str(tmp / "fig7.log")], rule="ct82_fig7")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig7.py"),
@@ -414,6 +415,19 @@ def test_fig6b_default_highlight_is_copper_coloured(fig6_published):
     assert brightest.sum() >= 5 and np.all(np.abs(difference) <= 10), difference
 
 
+def test_fig6b_default_highlights_keep_a_gradient(fig6_published):
+    """Issue 28: the copper highlights are not flat plateaus at 255 ("stickers, not metal"):
+    under 2 % of the vase's pixels have a channel at 255, and the brightest pixels (the top
+    1 % of L*, clipped or not) still have copper's CIELAB hue under D65 within 10 deg."""
+    codes, Lab = shown_lab(fig6_published.b_png, fig6_published.b_exr)
+    clipped = (codes.max(axis=-1) >= 255).mean()
+    assert clipped < 0.02, f"{clipped:.1%} of the copper vase has a channel at 255"
+    top = Lab[:, 0] >= np.percentile(Lab[:, 0], 99)
+    hue = np.degrees(np.arctan2(Lab[top, 2].mean(), Lab[top, 1].mean()))
+    L, a, b = colour.XYZ_to_Lab(F0_colour_science("Cu"), D65_xy())
+    assert abs((hue - np.degrees(np.arctan2(b, a)) + 180) % 360 - 180) <= 10, hue
+
+
 def test_fig6a_default_departure_is_labelled(fig6_published):
     """Fig. 6a departs from the print only as config.yaml says, and the CSV shows both."""
     table = pd.read_csv(fig6_published.csv)
@@ -430,6 +444,49 @@ def test_fig7_default_every_vase_reads(fig7_published, vase):
     and lunar dust meet it only with their labelled exposure factors (config fig7.vase_exposure)."""
     k = VASES.index(vase)
     assert_form_and_highlight_read(fig7_published.pngs[k], fig7_published.exrs[k])
+
+
+def test_fig7_default_variants_are_out_of_the_papers_grid(fig7_published, tmp_path,
+                                                         monkeypatch):
+    """Issue 28: the paper's grid is six metals over six nonmetals; the variants (hematite) sit
+    in a row of their own below it. On the built figure: it is six vases wide (each vase drawn
+    pixel for pixel, 1.04 of its width per column); in its layout: rows 0 and 1 hold exactly
+    the paper's twelve, every variant a later row."""
+    from PIL import Image
+
+    import reflectance.render.composite as composite
+
+    with Image.open(fig7_published.png) as grid, Image.open(fig7_published.pngs[0]) as vase:
+        assert round(grid.width / (1.04 * vase.width)) == 6, (grid.size, vase.size)
+    grids, original = [], composite.image_grid
+    monkeypatch.setattr(composite, "image_grid",
+                        lambda cells, *a, **k: grids.append(cells) or original(cells, *a, **k))
+    run_fig7(tmp_path, "published", (24, 32, 1))
+    rows = {}
+    for row, _, _, label in grids[0]:
+        rows.setdefault(row, []).append(label.split("\n")[0])
+    names = CT82["fig7"]["labels"]
+    metals = [names.get(m["material"], m["material"]) for m in CT82["fig7"]["metals"]]
+    nonmetals = [names.get(r, r) for r in ROWS]
+    extras = [names.get(e["material"], e["material"]) for e in CT82["fig7"]["extras"]]
+    assert rows[0] == metals and rows[1] == nonmetals, rows
+    assert sorted(sum((rows[r] for r in rows if r >= 2), [])) == sorted(extras), rows
+
+
+def test_fig7_default_carbon_is_its_f0s_grey(fig7_published):
+    """Issue 28: carbon's measured n, k give F0 between 0.08 and 0.16 over the visible (its
+    luminance, by colour-science, about 0.12); with R_d = F0/pi the vase shows its F0's
+    lightness at its row's exposure (median L* within 6 of the L* of F0's luminance), not a
+    light stone."""
+    grid = np.arange(400, 701, 5, dtype=float)
+    data = pd.read_csv(SPECTRA / "Carbon.csv")
+    n, k = (np.interp(grid, data.wavelength_nm, data[c]) for c in ("n", "k"))
+    F0 = ((n - 1) ** 2 + k ** 2) / ((n + 1) ** 2 + k ** 2)
+    assert 0.08 <= F0.min() and F0.max() <= 0.16, (F0.min(), F0.max())
+    L_F0 = colour.XYZ_to_Lab(F0_colour_science("Carbon"), D65_xy())[0]
+    i = VASES.index("Carbon")
+    _, Lab = shown_lab(fig7_published.pngs[i], fig7_published.exrs[i])
+    assert abs(np.median(Lab[:, 0]) - L_F0) <= 6, (np.median(Lab[:, 0]), L_F0)
 
 
 def test_fig7_default_vase_factors_are_needed(fig7_published):

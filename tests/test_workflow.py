@@ -148,6 +148,42 @@ def test_fig6_tables_measure_the_ambient_term_as_the_paper_prints_it(built):
                                                                                       rel=1e-5)
 
 
+def check_fig6b_highlights(built):
+    """Issue 28 on C&T Fig. 6b as built, full size: under 2 % of the copper vase (its pixels
+    with Y > 0 in the EXR, less a one-pixel rim) has a channel at 255 in the PNG, and the top
+    1 % of it by luminance still has copper's hue: CIELAB (colour-science) within 10 deg of the
+    hue of copper's F0 under D65 (reflectance's own F0, checked against colour-science in
+    tests/test_ct82_renders.py)."""
+    import colour
+    import numpy as np
+    import pandas as pd
+    from PIL import Image
+    from scipy import ndimage
+
+    from reflectance.io.images import read_exr
+
+    out = built / "results/cook_torrance_1982"
+    XYZ = read_exr(out / "fig6b.exr")[0]
+    codes = np.asarray(Image.open(out / "fig6b.png").convert("RGB"), dtype=float)
+    codes = codes[ndimage.binary_erosion(XYZ[..., 1] > 0)]
+    clipped = (codes.max(axis=-1) >= 255).mean()
+    assert clipped < 0.02, f"{clipped:.1%} of the copper vase has a channel at 255"
+    sRGB = colour.RGB_COLOURSPACES["sRGB"]
+    Lab = colour.XYZ_to_Lab(colour.RGB_to_XYZ(colour.cctf_decoding(codes / 255, function="sRGB"),
+                                              sRGB, illuminant=sRGB.whitepoint), sRGB.whitepoint)
+    top = Lab[:, 0] >= np.percentile(Lab[:, 0], 99)
+    hue = np.degrees(np.arctan2(Lab[top, 2].mean(), Lab[top, 1].mean()))
+    b = pd.read_csv(out / "fig6.csv").set_index("panel").loc["b"]
+    white = colour.XYZ_to_xy(colour.sd_to_XYZ(colour.SDS_ILLUMINANTS["D65"]))
+    F0 = colour.XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), white)
+    assert abs((hue - np.degrees(np.arctan2(F0[2], F0[1])) + 180) % 360 - 180) <= 10, hue
+    return clipped, hue
+
+
+def test_fig6b_highlights_keep_a_gradient_at_full_size(built):
+    check_fig6b_highlights(built)
+
+
 def test_every_output_is_readable(built):
     """Each PNG decodes, each EXR reads back finite, each CSV parses with a header."""
     import numpy as np

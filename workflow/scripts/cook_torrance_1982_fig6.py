@@ -53,7 +53,6 @@ def variant(log, out, reference, published, items):
     """One variant of the figure (its scenes ``items``): panels, table and figure to ``out``."""
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
-    exposure = published["exposure"] if published else None
     renders = [(item.tags["part"], title_of(item, fig_cfg), item.tags["panel"], item.written,
                 item) for item in items]
     rows, images, covered = [], [], []
@@ -92,13 +91,11 @@ def variant(log, out, reference, published, items):
     crop = covered_rows(covered, margin=8)
     height, width = images[0][1][crop].shape[:2]
     lines = max(label.count("\n") + 1 for label, _ in images)
-    reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
-    if published:
-        key = exposure["key"]
-        reading += (f"\neach vase metered (median luminance shown at {key['luminance']:g}),\n"
-                    f"highlights above {exposure['highlight_knee']:g} compressed at constant "
-                    "chromaticity")
-    title = f"Cook & Torrance 1982, Fig. 6 \u2014 {reading}".replace(": I_ia", ":\nI_ia")
+    # one line; the default figure's reading and exposure are its caption's (issue 28)
+    title = "Cook & Torrance 1982, Fig. 6"
+    if not published:
+        reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
+        title += f" \u2014 {reading}".replace(": I_ia", ":\nI_ia")
     n, margin, head = len(images), 0.1, 0.1 + 0.16 * lines  # inches
     top = 0.1 + 0.19 * (title.count("\n") + 1)
     dpi = n * width / (PRINT_WIDTH_IN - 2 * margin)
@@ -150,7 +147,8 @@ with script_log(snakemake) as log:
                 "a_F0": f"{a.F0_Y:.3f}", "a_peak_ratio": f"{a.specular_over_diffuse_peak:.2f}",
                 "a_chroma": f"{a.highlight_chroma_ratio:.2f}", "a_body_L": f"{a.L50:.0f}",
                 "a_body_C": f"{a.body_chroma:.1f}",
-                "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}"})
+                "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}",
+                "b_clipped": f"{100 * b.clipped:.1f}", "b_visible": f"{100 * b.visible:.0f}"})
         elif reference == "intensity":
             values.update({
                 "intensity_ambient": f"{a.ambient_over_headon_diffuse_weakest_light:.0f}",

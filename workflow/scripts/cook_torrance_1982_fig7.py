@@ -28,7 +28,7 @@ from reflectance.render.scene import scene_from_dict
 from reflectance.scripting import params_dict, script_log
 
 GROUPS = {"metal": "six metals: Fig. 6b's s, d, D; F from measured n, k",
-          "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "variant, not in the paper"}
+          "nonmetal": "six nonmetals: Table I's s, d, m", "extra": "variants, not in the paper's grid: Table I's s, d, m with other spectra"}
 READINGS = {"intensity": "as printed, I_ia = {f} I_i",
             "irradiance": "{f} of the lights' irradiance, I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0"}
 
@@ -41,6 +41,16 @@ def label(material, sources, names):
     kind = (row.dataset.rsplit('/', 1)[-1] if row.kind == "measured"
             else f"Munsell {row.dataset.split(' ', 1)[-1]}")
     return f"{names.get(name, name)}\n{kind}"
+
+
+def carbon_F0_range(spectra_dir):
+    """The least and greatest F0 of carbon's measured n, k over Table I's visible range
+    (table1.average_F0_range_nm), for the caption."""
+    lo, hi = snakemake.params.visible_nm
+    grid = np.arange(lo, hi + 1, snakemake.params.wavelengths["step_nm"], dtype=float)
+    F0 = load_material("Carbon", grid, str(spectra_dir)).F0
+    return {"Carbon_F0_min": f"{F0.min():.2f}", "Carbon_F0_max": f"{F0.max():.2f}",
+            "visible_lo": f"{lo:g}", "visible_hi": f"{hi:g}"}
 
 
 def variant(log, out, reference, published, items):
@@ -109,21 +119,23 @@ def variant(log, out, reference, published, items):
             table.loc[i, key] = value
     table.pipe(write_csv, out["csv"], float_format="%.6g")
 
-    # metals in the first row, nonmetals in the second, variants in the last column
-    n_cols = max(groups.count("metal"), groups.count("nonmetal")) + ("extra" in groups)
-    slots, cells, headings = {"metal": 0, "nonmetal": 0, "extra": n_cols - 1}, [], []
+    # the paper's grid: metals in the first row, nonmetals in the second; the variants (not in the
+    # paper) apart, in a row of their own below it under their own heading (issue 28)
+    n_cols = max(groups.count("metal"), groups.count("nonmetal"))
+    row_of = {"metal": 0, "nonmetal": 1, "extra": 2}
+    slots, cells, headings = {"metal": 0, "nonmetal": 0, "extra": 0}, [], []
     for rgb, group, text in zip(shown, groups, labels):
-        row, col = int(group != "metal"), slots[group]
+        row, col = row_of[group], slots[group]
         slots[group] += 1
         if group not in [h[2] for h in headings]:  # the group's heading over its first vase
             headings.append((row, col, group))
         cells.append((row, col, rgb, text))
+    n_rows = max(row_of[g] for g in groups) + 1
     styles = {"metal": {"x": 0.01}, "nonmetal": {"x": 0.01},
-              "extra": {"x": 0.995, "color": "#ffcc66", "fontsize": TEXT_SIZE["annotation"],
-                        "ha": "right"}}
+              "extra": {"x": 0.01, "color": "#ffcc66"}}
     # the grid drawn at the print width, the vases pixel for pixel, so its text prints at its size
     dpi = shown[0].shape[1] * n_cols * 1.04 / PRINT_WIDTH_IN
-    fig = image_grid(cells, 2, n_cols, title,
+    fig = image_grid(cells, n_rows, n_cols, title,
                      headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
                      crop=covered_rows(images), foot=0.6 if published else 0.4,
                      top=0.12 + 0.22 * (title.count("\n") + 1), dpi=dpi,
@@ -165,5 +177,10 @@ with script_log(snakemake) as log:
             "LunarDust_L": f"{L.LunarDust:.0f}", "Obsidian_L": f"{L.Obsidian:.0f}",
             "Obsidian_visible": f"{100 * vases.visible.Obsidian:.0f}",
             "Obsidian_span": f"{span.Obsidian:.0f}", "LunarDust_span": f"{span.LunarDust:.1f}",
-            "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}"})
+            "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}",
+            # carbon (issue 28): its measured F0 over the visible, the lightness of its F0 (the
+            # albedo of R_d = F0/pi, CIE 1976 L*) against the median L* the figure shows
+            "Carbon_L": f"{L.Carbon:.0f}",
+            "Carbon_F0_L": f"{116 * np.cbrt(vases.F0_Y.Carbon) - 16:.0f}",
+            **carbon_F0_range(Path(snakemake.input.sources).parent)})
     write_caption_values(snakemake.output.values, values)

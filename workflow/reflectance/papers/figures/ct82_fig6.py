@@ -32,6 +32,14 @@ def variants(params):
                       for reading, reference in params["readings"].items()]
 
 
+def panel_exposure(published, part):
+    """The default figure's exposure of panel ``part``: its own (``published.panel_exposure``)
+    or the shared one; None outside the default figure."""
+    if not published:
+        return None
+    return published.get("panel_exposure", {}).get(part, published["exposure"])
+
+
 def spectra(params):
     """Fig. 6's materials: each panel's F and R_d spectra (and any a departure names)."""
     panels = params["fig"]["panels"]
@@ -56,9 +64,9 @@ def scenes(params, spectra_dir):
     fig, files = params["fig"], outputs(params)
     out = []
     for prefix, reference, published in variants(params):
-        exposure = published["exposure"] if published else None
         departures = published.get("departures", {}) if published else {}
         for part, panel in fig["panels"].items():
+            exposure = panel_exposure(published, part)
             shown = ([(panel, False, "as printed"), ({**panel, **departures[part]}, True, "")]
                      if part in departures else [(panel, True, "")])
             for spec, written, note in shown:

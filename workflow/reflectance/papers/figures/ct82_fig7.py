@@ -23,6 +23,7 @@ PARAMS = {"fig": f"{_CT}.fig7", "fig6": FIG6_RENDERING, "table1": f"{_CT}.table1
           "reference": f"{_CT}.fig6.published.ambient_reference",
           "published": (f"{_CT}.fig6.published.ambient_reference",),
           "readings": f"{_CT}.fig6.ambient_readings",
+          "visible_nm": f"{_CT}.table1.average_F0_range_nm",
           "wavelengths": "wavelengths", "colour": "colour"}
 
 #: the params of the RGB-rendering audit (audits.rgb_rendering), which renders Fig. 7's metal
