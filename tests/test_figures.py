@@ -112,7 +112,7 @@ def test_the_close_ups_light_must_be_a_light():
     params = params_of(figure("blinn77_fig7"), CONFIG)
     params["fig"]["rim_closeup"]["light"] = "back"
     with pytest.raises(ValueError, match=r"fig7\.rim_closeup\.light: 'back' is not a light; "
-                                         r"known: edge, front"):
+                                         r"known: edge, front, tangential"):
         figure("blinn77_fig7").scenes(params)
 
 
@@ -309,8 +309,10 @@ def test_a_light_added_in_config_is_rendered(after_build):
     import pandas as pd
 
     table = pd.read_csv(cwd / "results/blinn_1977/fig7.csv")
-    assert set(table.light) == {"edge", "front", "side"}
+    assert set(table.light) == {"edge", "front", "tangential", "side"}
     assert len(table[table.light == "side"]) == 4  # 2 panels x 2 readings of Phong's p_s
+    for reading in ("as_printed", "matched"):  # each light but the front one: a figure of its own
+        assert (cwd / "results/blinn_1977" / f"fig7_{reading}_side.png").is_file(), reading
     for stem in ("fig7a_torrance_sparrow_side", "fig7b_phong_side_matched"):
         for ext in ("exr", "png", "scene.yaml"):
             assert (cwd / "results/blinn_1977" / f"{stem}.{ext}").is_file(), stem

@@ -47,14 +47,17 @@ with script_log(snakemake) as log:
             "printed_G_closed": printed_closed,
         })
         log.info("case %s: simulated %.6f, closed form %.6f", name, r["G_simulated"], r["G_closed"])
-    handles = [axes[0].plot([], [], color=COLOURS[k], lw=w)[0] for k, w in
-               (("light", 1), ("eye", 1), ("masked", 1), ("other", 1), ("facet", 4), ("masked", 4))]
+    # one entry per colour drawn: the masked part of the facet orange, the shadowed part black
+    handles = [axes[0].plot([], [], color=COLOURS.get(k, k), lw=w)[0] for k, w in
+               (("light", 1), ("eye", 1), ("masked", 1), ("other", 1), ("facet", 4), ("masked", 4),
+                ("k", 4))]
     fig.legend(handles, ["incident ray (along L')", "reflected ray, escapes (along E')",
                          "reflected ray, masked", "ray landing on the other side",
-                         "facet with normal H", "blocked part of the facet (black: shadowed)"],
+                         "facet with normal H", "part of the facet masked",
+                         "part of the facet shadowed"],
                loc="lower center", ncol=2, bbox_to_anchor=(0.5, 0.0))
     fig.suptitle("Blinn 1977, Fig. 1 \u2014 the three cases of the V-groove, in the plane of N and H",
                  y=0.99)
-    fig.subplots_adjust(left=0.005, right=0.995, top=0.88, bottom=0.36, wspace=0.04)
+    fig.subplots_adjust(left=0.005, right=0.995, top=0.88, bottom=0.40, wspace=0.04)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.DataFrame(rows).pipe(write_csv, snakemake.output.csv, float_format="%.6g")

@@ -69,17 +69,26 @@ with script_log(snakemake) as log:
             arc = np.linspace(0, np.pi, 181)
             for t in ticks:
                 ax.plot(t * np.cos(arc), t * np.sin(arc), color="0.88", lw=0.6, zorder=0)
-                ax.text(t, -0.012 * R, f"{t:g}", ha="center", va="top", fontsize=TEXT_SIZE["table"],
+                # under the grey band, where no curve runs (the curves end on the baseline)
+                ax.text(t, -0.085 * R, f"{t:g}", ha="center", va="top", fontsize=TEXT_SIZE["table"],
                         color="0.35")
             for key in keys:  # Blinn's light from the right: the plane seen from behind (x -> -x)
                 label, colour, style = CURVES[key]
                 ax.plot(-values[key] * np.sin(theta_r), values[key] * np.cos(theta_r), color=colour,
                         ls=style, lw=1.6 if style == "-" else 1.2, label=label)
+                if row[f"{key}_max_deg"] == np.degrees(theta_r[-1]):  # a peak at the horizon lies
+                    # along the baseline: mark it above the line
+                    edge = -values[key][-1]
+                    ax.plot([edge], [0.0], "o", color=colour, ms=4, clip_on=False, zorder=4)
+                    ax.annotate(f"{values[key][-1]:.2f} at the horizon", xy=(edge, 0.0),
+                                xytext=(edge, 0.32 * R), ha="left", va="bottom", color=colour,
+                                fontsize=TEXT_SIZE["annotation"],
+                                arrowprops=dict(arrowstyle="-", color=colour, lw=0.8))
             ax.annotate("", xy=0.03 * light, xytext=light,  # the incoming ray
                         arrowprops=dict(arrowstyle="-|>", color="0.15", lw=1.1, shrinkA=0, shrinkB=0))
             ax.annotate("", xy=light * [-1, 1], xytext=(0, 0),  # Blinn's reference vector
                         arrowprops=dict(arrowstyle="-|>", color="0.5", lw=0.9, ls=(0, (3, 2))))
-            ax.set(xlim=(-R, R), ylim=(-0.07 * R, 1.02 * R), aspect="equal", xticks=[], yticks=[])
+            ax.set(xlim=(-R, R), ylim=(-0.2 * R, 1.02 * R), aspect="equal", xticks=[], yticks=[])
             ax.set_title(name, pad=2)
             for side in ax.spines.values():
                 side.set_visible(False)
@@ -104,7 +113,7 @@ with script_log(snakemake) as log:
                          transform=row_axes[0].transAxes, ha="left", va="bottom",
                          fontsize=TEXT_SIZE["annotation"] + 0.5)
         for ax, key in ((row_axes[0], "phong_matched"), (row_axes[1], "torrance_sparrow")):
-            ax.text(0.5, -0.02, f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
+            ax.text(0.5, -0.04, f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
                     transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"],
                     color=CURVES[key][1])
         log.info("%s: %s", s["label"], ", ".join(f"{k} = {v:.6g}" for k, v in row.items()
@@ -128,4 +137,8 @@ with script_log(snakemake) as log:
         "set1_ratio": f"{first.peak_ratio_ts_to_matched:.2f}",
         "set2_ratio": f"{second.peak_ratio_ts_to_matched:.2f}",
         "set1_ratio_printed": f"{first.peak_ratio_ts_to_as_printed:.2f}",
-        "set2_ratio_printed": f"{second.peak_ratio_ts_to_as_printed:.2f}"})
+        "set2_ratio_printed": f"{second.peak_ratio_ts_to_as_printed:.2f}",
+        **{f"set{k}_{key}_{what}": f"{getattr(row, f'{key}_max{suffix}'):{fmt}}"
+           for k, row in ((1, first), (2, second))
+           for key in ("phong_matched", "torrance_sparrow")
+           for what, suffix, fmt in (("peak", "", ".3f"), ("deg", "_deg", ".1f"))}})

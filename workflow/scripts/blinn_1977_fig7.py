@@ -66,70 +66,80 @@ with script_log(snakemake) as log:
     log.info("mirror highlights of MgO and aluminium cross at %s degrees", crossover)
     table.pipe(write_csv, out.csv, float_format="%.6g")
 
-    # Edge lit beyond the crossover the highlight is a rim a few pixels thick (N.E = cos(angle/2)
-    # at the mirror point) and brighter than i = 1: each edge-lit image gets an inset of the rim,
-    # magnified, on one scale for all (white = the brightest edge-lit i), so the two materials compare.
+    # Near grazing light (beyond the crossover) the highlight is a rim a few pixels thick (N.E =
+    # cos(angle/2) at the mirror point) and brighter than i = 1: each image under the close-up's
+    # light gets an inset of the rim, magnified, on one scale for all (white = the brightest i).
     zoom = fig_cfg["camera"]["fov_deg"] / fig_cfg["rim_closeup"]["fov_deg"]
     rim_scale = max(rim.max() for rim in rims.values())  # one grey scale for every close-up
+    front = definition.front_light(fig_cfg)
 
-    # Drawn at the print width (PRINT_WIDTH_IN), so its text prints at the figures' sizes: the four
-    # renders of a row side by side, pixel for pixel at DPI, the light-angle plot under them.
+    # Blinn's layout, drawn at the print width (PRINT_WIDTH_IN, its text at the figures' sizes):
+    # per panel Phong and Torrance-Sparrow under the figure's light side by side, under them one
+    # front-lit image ("Both Models Essentially Same"; Torrance-Sparrow, the difference printed),
+    # pixel for pixel at DPI; the light-angle plot at the bottom.
     T = TEXT_SIZE
     DPI = 230
     h, wd = (n / DPI for n in next(iter(images.values())).shape[:2])  # inches
     gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
     W = 4 * wd + 2 * gap + block + 0.12
-    top, heads, foot = 0.5, 0.7, 0.24  # suptitle; panel title and column names; difference line
+    top, heads, foot = 0.62, 0.28, 0.3  # titles; column names; the line under each row
     plot_h, plot_foot = 1.9, 0.5
-    H = top + heads + len(lights) * (h + foot) + 0.3 + plot_h + plot_foot
+    H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
     sweep = np.linspace(90.0, 178.0, 881)
-    named = [f"{lights[name]['angle_deg']:g}\u00b0 ({name})" for name in lights]
-    named = " and ".join([", ".join(named[:-1]), named[-1]] if len(named) > 1 else named)
-    for reading, png in zip(fig_cfg["phong_specular_readings"], out.figures):
+
+    def image(ax, key, text):
+        ax.imshow(images[key], interpolation="nearest")
+        ax.set_xticks([]), ax.set_yticks([])
+        ax.text(0.03, 0.95, text, transform=ax.transAxes, color="white", fontsize=T["annotation"],
+                va="top")
+
+    for (reading, light), png in definition.figures(fig_cfg, folder).items():
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
             x0 = 0.06 + k * (2 * wd + gap + block)
-            for j, light in enumerate(lights):
-                y0 = H - top - heads - j * (h + foot) - h  # bottom of the image
-                for i, model in enumerate(MODELS):
-                    key = definition.render_key(panel, model, light, reading)
-                    ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
-                    ax.imshow(images[key], interpolation="nearest")
-                    ax.set_xticks([]), ax.set_yticks([])
-                    if j == 0:
-                        ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
-                    ax.text(0.03, 0.95, f"{light} lit", transform=ax.transAxes, color="white",
-                            fontsize=T["annotation"], va="top")
-                    if light == closeup:
-                        grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
-                        rh, rw = rims[key].shape
-                        iw = 0.9  # the close-up across 90 % of the image, its aspect kept
-                        inset = ax.inset_axes((0.05, 0.04, iw, iw * rh / rw * wd / h))
-                        inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
-                        inset.set_xticks([]), inset.set_yticks([])
-                        for side in inset.spines.values():
-                            side.set(color="#e69f00", lw=0.8, visible=True)
-                        inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}", transform=inset.transAxes,
-                                   color="#e69f00", fontsize=T["annotation"], va="bottom")
-                row = table[(table.panel == panel) & (table.phong_specular == reading)
-                            & (table.light == light)].iloc[0]
-                fig.text((x0 + wd + gap / 2) / W, (y0 - 0.04) / H,
-                         f"max |i_Phong \u2212 i_T-S| = {row.max_abs_difference:.3f}; max i "
-                         f"{row.phong_max:.2f} vs {row.torrance_sparrow_max:.2f}",
-                         ha="center", va="top", fontsize=T["annotation"])
+            y0 = H - top - heads - h  # the bottom of the edge-lit row
+            for i, model in enumerate(MODELS):
+                key = definition.render_key(panel, model, light, reading)
+                ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
+                image(ax, key, f"{light} lit, {lights[light]['angle_deg']:g}\u00b0")
+                ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
+                if light == closeup:
+                    grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
+                    rh, rw = rims[key].shape
+                    iw = 0.9  # the close-up across 90 % of the image, its aspect kept
+                    inset = ax.inset_axes((0.05, 0.04, iw, iw * rh / rw * wd / h))
+                    inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
+                    inset.set_xticks([]), inset.set_yticks([])
+                    for side in inset.spines.values():
+                        side.set(color="#e69f00", lw=0.8, visible=True)
+                    inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}", transform=inset.transAxes,
+                               color="#e69f00", fontsize=T["annotation"], va="bottom")
+            rows_of = table[(table.panel == panel) & (table.phong_specular == reading)]
+            row = rows_of[rows_of.light == light].iloc[0]
+            fig.text((x0 + wd + gap / 2) / W, (y0 - 0.04) / H,
+                     f"max i: Phong {row.phong_max:.2f}, Torrance-Sparrow "
+                     f"{row.torrance_sparrow_max:.2f}", ha="center", va="top",
+                     fontsize=T["annotation"])
+            yf = y0 - foot - h  # the front-lit image, centred under the pair
+            ax = fig.add_axes(((x0 + wd / 2 + gap / 2) / W, yf / H, wd / W, h / H))
+            image(ax, definition.render_key(panel, "torrance_sparrow", front, reading),
+                  f"{front} lit, {lights[front]['angle_deg']:g}\u00b0")
+            both = rows_of[rows_of.light == front].iloc[0]
+            fig.text((x0 + wd + gap / 2) / W, (yf - 0.04) / H,
+                     f"both models: max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
+                     ha="center", va="top", fontsize=T["annotation"])
             p = fig_cfg["panels"][panel]
-            fig.text((x0 + wd + gap / 2) / W, (H - top) / H,
+            fig.text((x0 + wd + gap / 2) / W, (H - top + 0.02) / H,
                      f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
-                     f"c3 = {p['c3']:g}\n\u03b2 = {row.beta_deg:.2f}\u00b0; Phong c1 = {row.c1:.2f}, "
-                     f"its p_s = {row.phong_s:.4g}", ha="center", va="top", fontsize=T["annotation"],
-                     linespacing=1.3)
+                     f"c3 = {p['c3']:g}; Phong c1 = {row.c1:.2f}, its p_s = {row.phong_s:.4g}",
+                     ha="center", va="bottom", fontsize=T["annotation"], linespacing=1.3)
         ax = fig.add_axes((0.75 / W, plot_foot / H, 3.3 / W, plot_h / H))
         for panel, colour in (("a", "#0072b2"), ("b", "#d55e00")):
             p = fig_cfg["panels"][panel]
             ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep), color=colour,
                     label=f"{p['label']}\n(p_s = {p['p_s']:g}, n = {p['n']:g})")
-            edge = table[(table.panel == panel) & (table.light == closeup)].iloc[0]
-            ax.plot(lights[closeup]["angle_deg"], edge.torrance_sparrow_max, "o", mfc="none",
+            at = table[(table.panel == panel) & (table.light == light)].iloc[0]
+            ax.plot(lights[light]["angle_deg"], at.mirror_highlight, "o", mfc="none",
                     color=colour, ms=6)
         ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
         ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
@@ -138,26 +148,30 @@ with script_log(snakemake) as log:
                xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E)")
         ax.grid(True, which="major")
         ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
-        ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nbrightest rendered i,\n"
-                f"{closeup} lit (circles)", transform=ax.transAxes, va="bottom",
+        ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nthis figure's "
+                f"{light} light\n(circles)", transform=ax.transAxes, va="bottom",
                 fontsize=T["annotation"], linespacing=1.3)
-        fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 Phong's p_s {reading.replace('_', ' ')}; light "
-                     f"{named}\nfrom the eye; p_a = {fig_cfg['p_a']:g}, i = 1 is white; "
-                     f"close-ups: white = i {rim_scale:.1f}",
+        verdict = ("MgO brighter than aluminium" if lights[light]["angle_deg"] > crossover
+                   else "MgO dimmer than aluminium")
+        fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 edge lit at {lights[light]['angle_deg']:g}\u00b0 "
+                     f"from the eye ({verdict}); Phong's p_s {reading.replace('_', ' ')}\n"
+                     f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
+                     + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else ""),
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
         savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
 
     # the caption's numbers (workflow/report/blinn77_fig7.rst), from the table as written
     written = pd.read_csv(out.csv).set_index(["panel", "phong_specular", "light"])
     at = {(panel, light): written.loc[(panel, "matched", light)]
-          for panel in ("a", "b") for light in ("edge", "front")}
-    mgo_over_al = {light: at["b", light].mirror_highlight / at["a", light].mirror_highlight
-                   for light in ("edge", "front")}
-    write_caption_values(out.values, {
-        "b_F0": f"{at['b', 'front'].phong_s / at['b', 'front'].p_s:.2f}",
-        "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
-        "front_ratio": f"{mgo_over_al['front']:.2f}", "edge_ratio": f"{mgo_over_al['edge']:.2f}",
-        "edge_NE": f"{np.cos(np.radians(lights['edge']['angle_deg'] / 2)):.3f}",
-        "a_ts_edge": f"{at['a', 'edge'].torrance_sparrow_max:.1f}",
-        "b_ts_edge": f"{at['b', 'edge'].torrance_sparrow_max:.1f}",
-        "phong_edge": f"{written.xs('edge', level='light').phong_max.max():.2f}"})
+          for panel in ("a", "b") for light in lights}
+    values = {"b_F0": f"{at['b', front].phong_s / at['b', front].p_s:.2f}",
+              "crossover": f"{written.crossover_deg.iloc[0]:.1f}"}
+    for light in lights:  # per light: MgO/aluminium at the mirror point, N.E there, the peaks
+        values.update({
+            f"{light}_ratio": f"{at['b', light].mirror_highlight / at['a', light].mirror_highlight:.2f}",
+            f"{light}_NE": f"{np.cos(np.radians(lights[light]['angle_deg'] / 2)):.3f}",
+            f"a_ts_{light}": f"{at['a', light].torrance_sparrow_max:.2f}",
+            f"b_ts_{light}": f"{at['b', light].torrance_sparrow_max:.2f}",
+            f"phong_{light}": f"{written.xs(light, level='light').phong_max.max():.2f}",
+            f"difference_{light}": f"{max(at[p, light].max_abs_difference for p in 'ab'):.3f}"})
+    write_caption_values(out.values, values)

@@ -34,8 +34,9 @@ def draw_arrow(ax, start, vector, label=None, color="k", label_offset=(0.0, 0.0)
     if label:
         tip = start + vector * (1 + 0.14 / max(np.linalg.norm(vector), 1e-9)) + label_offset
         ax.text(*tip, label, color=text_colour(color), ha="center", va="center",
-                fontsize=TEXT_SIZE["symbol"], zorder=6,
-                bbox=dict(facecolor="white", edgecolor="none", alpha=0.85, pad=0.6))
+                fontsize=TEXT_SIZE["symbol"], zorder=6,  # opaque: the label reads over the rays
+                bbox=dict(facecolor="white", edgecolor=color, lw=0.6, alpha=1.0, pad=1.2,
+                          boxstyle="round,pad=0.15"))
 
 
 def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_radius=1.45,
@@ -95,13 +96,13 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
                         lw=0.8, zorder=1)
                 continue
             ax.plot(*np.array([entry + ray_length * h * sim.L2, hit]).T, color=COLOURS["light"],
-                    lw=0.9, zorder=1)
+                    lw=0.9, alpha=0.6, zorder=1)
             if status == "masked":
-                ax.plot(*np.array([hit, end]).T, color=COLOURS["masked"], lw=0.9, zorder=1)
+                ax.plot(*np.array([hit, end]).T, color=COLOURS["masked"], lw=0.9, alpha=0.6, zorder=1)
                 ax.plot(*end, marker="x", color=COLOURS["masked"], ms=5, zorder=5)
             else:
                 ax.plot(*np.array([hit, end + exit_length * h * sim.E2]).T, color=COLOURS["eye"],
-                        lw=0.9, zorder=1)
+                        lw=0.9, alpha=0.6, zorder=1)
     if vectors:
         M = (A + B) / 2
         # N shorter than H, L', E': its label stays clear of theirs when E' or L' lies near N

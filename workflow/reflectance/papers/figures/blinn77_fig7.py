@@ -38,9 +38,29 @@ def stems(params, folder=OUT):
         for model in reversed(MODELS) for reading in fig["phong_specular_readings"])}
 
 
+def front_light(fig):
+    """The light drawn as one image (``front_lit``; Blinn: "Both Models Essentially Same")."""
+    name = fig["front_lit"]
+    if name not in fig["lights"]:
+        raise ValueError(f"config.yaml figures.blinn_1977.fig7.front_lit: {name!r} is not a "
+                         f"light; known: {', '.join(fig['lights'])}")
+    return name
+
+
+def figures(fig, folder=OUT):
+    """{(reading, light): PNG} of every figure: Blinn's layout (Phong and Torrance-Sparrow under
+    ``light``, one image under the front light) per reading of Phong's p_s and light other than
+    the front light; the first such light's is the default figure ``fig7_<reading>.png``, the
+    others' are the variants ``fig7_<reading>_<light>.png``."""
+    front = front_light(fig)
+    edges = [name for name in fig["lights"] if name != front]
+    return {(r, light): f"{folder}/fig7_{r}{'' if k == 0 else '_' + light}.png"
+            for r in fig["phong_specular_readings"] for k, light in enumerate(edges)}
+
+
 def outputs(params):
     fig = params["fig"]
-    return {"figures": [f"{OUT}/fig7_{r}.png" for r in fig["phong_specular_readings"]],
+    return {"figures": list(figures(fig).values()),
             "csv": f"{OUT}/fig7.csv", "values": f"{OUT}/fig7.values.rst",
             "renders": [f"{stem}.{ext}" for stem in stems(params).values()
                         for ext in ("exr", "png", "scene.yaml")]}
