@@ -82,7 +82,9 @@ with script_log(snakemake) as log:
     h, wd = (n / DPI for n in next(iter(images.values())).shape[:2])  # inches
     gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
     W = 4 * wd + 2 * gap + block + 0.12
-    top, heads, foot = 0.62, 0.28, 0.3  # titles; column names; the line under each row
+    # the figure's two-line title and each panel's three-line heading; column names; the line
+    # under each row (inches)
+    top, heads, foot = 1.12, 0.28, 0.3
     plot_h, plot_foot = 1.9, 0.5
     H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
     sweep = np.linspace(90.0, 178.0, 881)
@@ -131,7 +133,7 @@ with script_log(snakemake) as log:
             p = fig_cfg["panels"][panel]
             fig.text((x0 + wd + gap / 2) / W, (H - top + 0.02) / H,
                      f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
-                     f"c3 = {p['c3']:g}; Phong c1 = {row.c1:.2f}, its p_s = {row.phong_s:.4g}",
+                     f"c3 = {p['c3']:g}\nPhong c1 = {row.c1:.2f}, its p_s = {row.phong_s:.4g}",
                      ha="center", va="bottom", fontsize=T["annotation"], linespacing=1.3)
         ax = fig.add_axes((0.75 / W, plot_foot / H, 3.3 / W, plot_h / H))
         for panel, colour in (("a", "#0072b2"), ("b", "#d55e00")):

@@ -57,7 +57,7 @@ with script_log(snakemake) as log:
         ticks = np.arange(np.ceil(start / 100) * 100, end + 1e-9, 100)
         ax.set_xticks(np.round(ticks * scale, 1) if unit != "nm" else ticks)
     fig.suptitle(f"Cook & Torrance 1982, Fig. 4 \u2014 {name} ({material.kind} n, k; "
-                 f"{grid[0]:g}\u2013{grid[-1]:g} nm)")
+                 f"{start:g}\u2013{end:g} nm shown)")
     fig.tight_layout(w_pad=1.5)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     log.info("F0 of %s: %.4f .. %.4f", material.name, material.F0.min(), material.F0.max())
