@@ -55,9 +55,9 @@ onerror:
     report_memory_kills(log)
 
 
-# Every other target is an input of the provenance manifest: asking for it alone builds them all,
-# and the log lists the ~300 files once (the provenance job's), not a second time for this rule.
+# Every target, not the provenance manifest alone (whose inputs they are): Snakemake does not
+# rebuild a missing input of an up-to-date output, so a figure deleted by hand would stay missing.
 rule all:
     default_target: True
     input:
-        PROVENANCE,
+        TARGETS,
