@@ -231,6 +231,7 @@ def _expected(cwd):
             "ambient_headon": f"{100 * b.ambient_over_headon_diffuse_all_lights:.1f}",
             "ambient_highlight": f"{100 * b.ambient_over_direct_max:.2f}",
             "b_hue": f"{b.highlight_hue_deg:.1f}",
+            "b_clipped": f"{100 * b.clipped:.1f}", "b_visible": f"{100 * b.visible:.0f}",
             "Cu_F0_hue": f"{np.degrees(np.arctan2(F0_b, F0_a)) % 360:.1f}",
             "a_F0": f"{a_printed.F0_Y:.3f}",
             "a_peak_ratio": f"{a_printed.specular_over_diffuse_peak:.2f}",

@@ -138,7 +138,11 @@ with script_log(snakemake) as log:
         "set2_ratio": f"{second.peak_ratio_ts_to_matched:.2f}",
         "set1_ratio_printed": f"{first.peak_ratio_ts_to_as_printed:.2f}",
         "set2_ratio_printed": f"{second.peak_ratio_ts_to_as_printed:.2f}",
-        **{f"set{k}_{key}_{what}": f"{getattr(row, f'{key}_max{suffix}'):{fmt}}"
-           for k, row in ((1, first), (2, second))
-           for key in ("phong_matched", "torrance_sparrow")
-           for what, suffix, fmt in (("peak", "", ".3f"), ("deg", "_deg", ".1f"))}})
+        "set1_phong_matched_peak": f"{first.phong_matched_max:.3f}",
+        "set1_phong_matched_deg": f"{first.phong_matched_max_deg:.1f}",
+        "set1_torrance_sparrow_peak": f"{first.torrance_sparrow_max:.3f}",
+        "set1_torrance_sparrow_deg": f"{first.torrance_sparrow_max_deg:.1f}",
+        "set2_phong_matched_peak": f"{second.phong_matched_max:.3f}",
+        "set2_phong_matched_deg": f"{second.phong_matched_max_deg:.1f}",
+        "set2_torrance_sparrow_peak": f"{second.torrance_sparrow_max:.3f}",
+        "set2_torrance_sparrow_deg": f"{second.torrance_sparrow_max_deg:.1f}"})

@@ -43,14 +43,12 @@ def label(material, sources, names):
     return f"{names.get(name, name)}\n{kind}"
 
 
-def carbon_F0_range(spectra_dir):
-    """The least and greatest F0 of carbon's measured n, k over Table I's visible range
+def carbon_F0(spectra_dir):
+    """Carbon's F0 from its measured n, k over Table I's visible range
     (table1.average_F0_range_nm), for the caption."""
     lo, hi = snakemake.params.visible_nm
     grid = np.arange(lo, hi + 1, snakemake.params.wavelengths["step_nm"], dtype=float)
-    F0 = load_material("Carbon", grid, str(spectra_dir)).F0
-    return {"Carbon_F0_min": f"{F0.min():.2f}", "Carbon_F0_max": f"{F0.max():.2f}",
-            "visible_lo": f"{lo:g}", "visible_hi": f"{hi:g}"}
+    return load_material("Carbon", grid, str(spectra_dir)).F0
 
 
 def variant(log, out, reference, published, items):
@@ -170,6 +168,7 @@ with script_log(snakemake) as log:
     if any(published for _, _, published in variants):
         vases = pd.read_csv(snakemake.output.csv).set_index("vase")
         L, span = vases.L50, vases.L99 - vases.L10
+        carbon = carbon_F0(Path(snakemake.input.sources).parent)
         values.update({
             "Obsidian_F0": f"{vases.F0_Y.Obsidian:.2f}", "Ag_F0": f"{vases.F0_Y.Ag:.2f}",
             "Carbon_F0": f"{vases.F0_Y.Carbon:.2f}", "RustMunsell_L": f"{L.RustMunsell:.0f}",
@@ -182,5 +181,7 @@ with script_log(snakemake) as log:
             # albedo of R_d = F0/pi, CIE 1976 L*) against the median L* the figure shows
             "Carbon_L": f"{L.Carbon:.0f}",
             "Carbon_F0_L": f"{116 * np.cbrt(vases.F0_Y.Carbon) - 16:.0f}",
-            **carbon_F0_range(Path(snakemake.input.sources).parent)})
+            "Carbon_F0_min": f"{carbon.min():.2f}", "Carbon_F0_max": f"{carbon.max():.2f}",
+            "visible_lo": f"{snakemake.params.visible_nm[0]:g}",
+            "visible_hi": f"{snakemake.params.visible_nm[1]:g}"})
     write_caption_values(snakemake.output.values, values)
