@@ -125,7 +125,7 @@ def fig7(tmp_path_factory):
     stems = {key: str(tmp / f"fig7{key}")
              for p in "ab" for light in fig["lights"]
              for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in readings]}
-    output = {"figures": [str(tmp / f"fig7_{r}{s}.png") for r in readings for s in ("", "_tangential")],
+    output = {"figures": [str(tmp / f"fig7_{r}{s}.png") for r in readings for s in ("", "_edge")],
               "csv": str(tmp / "fig7.csv"),
               "values": str(tmp / "fig7.values.rst")}
     run_script("blinn_1977_fig7.py", tmp, {"fig": fig, "stems": stems, "wavelengths": WAVELENGTHS},
@@ -163,19 +163,20 @@ def test_fig7_front_lit_models_agree_and_edge_lit_differ(fig7):
     assert np.abs(Y["b_phong_front_as_printed"] - Y["b_torrance_sparrow_front"]).max() > 0.4
 
 
-def test_fig7_default_edge_highlight_reads_at_full_view_and_the_literal_one_does_not(fig7):
-    """The issue: at 172 degrees (Blinn's "almost tangentially") the edge-lit Torrance-Sparrow
-    highlight is a rim of a few dozen pixels in ~50,000; at the default edge light it is a band:
-    over 1.5 % of the object brighter than i = 0.5 in each material, against under 0.3 % at the
-    literal angle. The object's pixels: those the front light reaches (i > p_a everywhere lit)."""
+def test_fig7_edge_highlight_reads_at_full_view_and_the_tangential_one_does_not(fig7):
+    """At 172 degrees (Blinn's "almost tangentially", the default figure, with close-ups) the
+    Torrance-Sparrow highlight is a rim of a few dozen pixels in ~50,000; at the variant's edge
+    light it is a band: over 1.5 % of the object brighter than i = 0.5 in each material, against
+    under 0.3 % at the tangential angle. The object's pixels: those the front light reaches (i > p_a
+    everywhere lit)."""
     fig, Y, _, tmp = fig7
     for p in "ab":
         obj = Y[f"{p}_torrance_sparrow_front"] > 0
         share = {light: (Y[f"{p}_torrance_sparrow_{light}"][obj] > 0.5).mean()
                  for light in ("edge", "tangential")}
         assert share["edge"] > 0.015 and share["tangential"] < 0.003, (p, share)
-    for r in fig["phong_specular_readings"]:  # Blinn's layout, once per edge light
-        assert (tmp / f"fig7_{r}.png").is_file() and (tmp / f"fig7_{r}_tangential.png").is_file()
+    for r in fig["phong_specular_readings"]:  # Blinn's layout, once per light but the front one
+        assert (tmp / f"fig7_{r}.png").is_file() and (tmp / f"fig7_{r}_edge.png").is_file()
 
 
 @pytest.mark.parametrize("p", ["a", "b"])
@@ -245,8 +246,8 @@ def test_mgo_passes_aluminium_only_near_grazing_light():
     assert highlight_crossover_Blinn1977(a, b) == pytest.approx(by_hand, abs=1e-6)
     assert ratio(130) < 0.3 and ratio(175) > 1.5
     # the configured edge light lies beyond it; the sweep reaches past it
-    # the default edge light lies short of it (its highlight a band at full view), Blinn's
-    # literal "almost tangentially" (the variant figure) beyond it; the sweep reaches past it
+    # Blinn's "almost tangentially" (the default figure) lies beyond it, the variant's edge light
+    # short of it (its highlight a band at full view); the sweep reaches past it
     assert B77["fig7"]["lights"]["edge"]["angle_deg"] < by_hand
     assert B77["fig7"]["lights"]["tangential"]["angle_deg"] > by_hand
     assert max(B77["fig7_sweep"]["angles_deg"]) >= 175

@@ -112,7 +112,7 @@ def test_the_close_ups_light_must_be_a_light():
     params = params_of(figure("blinn77_fig7"), CONFIG)
     params["fig"]["rim_closeup"]["light"] = "back"
     with pytest.raises(ValueError, match=r"fig7\.rim_closeup\.light: 'back' is not a light; "
-                                         r"known: edge, front, tangential"):
+                                         r"known: tangential, edge, front"):
         figure("blinn77_fig7").scenes(params)
 
 
