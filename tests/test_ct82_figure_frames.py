@@ -3,29 +3,19 @@ picture up to the title (no empty top third); Fig. 4's wavelength axes span the 
 wavelengths" (config.yaml fig4.axis_nm), not the whole colour grid. Each script runs in-process on
 config.yaml's parameters, as Snakemake would."""
 
-import runpy
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
 import yaml
+from script_runner import run_script
 
 ROOT = Path(__file__).resolve().parents[1]
-SCRIPTS = ROOT / "workflow" / "scripts"
 
 
 @pytest.fixture(scope="module")
 def config():
     return yaml.safe_load((ROOT / "config.yaml").read_text())
-
-
-def run_script(name, tmp_path, outputs, inputs=None, **params):
-    snakemake = SimpleNamespace(
-        input=SimpleNamespace(**(inputs or {})),
-        output=SimpleNamespace(**{key: str(tmp_path / file) for key, file in outputs.items()}),
-        params=SimpleNamespace(**params), log=[str(tmp_path / f"{name}.log")], rule=name)
-    return runpy.run_path(str(SCRIPTS / f"{name}.py"), init_globals={"snakemake": snakemake})
 
 
 def test_fig4_axes_span_the_visible(config, tmp_path):

@@ -6,7 +6,6 @@ measured indices, and brute-force ray casting."""
 import copy
 import hashlib
 import math
-import runpy
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -14,29 +13,17 @@ import numpy as np
 import pandas as pd
 import pytest
 import yaml
+from script_runner import run_script
 
 from reflectance.config import ConfigError, validate_schema
 
 ROOT = Path(__file__).resolve().parents[1]
-SCRIPTS = ROOT / "workflow" / "scripts"
 REPORT = ROOT / "workflow" / "report"
 
 
 @pytest.fixture(scope="module")
 def config():
     return yaml.safe_load((ROOT / "config.yaml").read_text())
-
-
-def run_script(name, tmp_path, outputs, inputs=None, **params):
-    """Run workflow/scripts/<name>.py as Snakemake would; return its globals."""
-    snakemake = SimpleNamespace(
-        input=SimpleNamespace(**(inputs or {})),
-        output=SimpleNamespace(**{key: str(tmp_path / file) for key, file in outputs.items()}),
-        params=SimpleNamespace(**params),
-        log=[str(tmp_path / f"{name}.log")],
-        rule=name,
-    )
-    return runpy.run_path(str(SCRIPTS / f"{name}.py"), init_globals={"snakemake": snakemake})
 
 
 def parse(text):
