@@ -353,8 +353,8 @@ rule audit_database_shard:
         shard=r"\d+",
     threads: 1
     resources:
-        mem_mb=1500,  # script peak 411 MB (one of 2 shards)
-        runtime=10,  # measured 3.5 s of CPU (14 s at load 7)
+        mem_mb=1500,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         audit=DATABASE_PARAMS,
         shard=lambda wildcards: int(wildcards.shard),
@@ -389,8 +389,8 @@ rule audit_database:
         "benchmarks/audits/database.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 62 MB
-        runtime=10,  # measured 0.3 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         audit=DATABASE_PARAMS,
         shards=DATABASE["shards"],
@@ -416,8 +416,8 @@ rule audit_database_failure_angle:
         "benchmarks/audits/database_failure_angle.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 129 MB
-        runtime=10,  # measured 1.2 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         figure=DATABASE["figures"]["failure_angle"],
         levels=DATABASE["levels"],
@@ -445,8 +445,8 @@ rule audit_database_error:
         "benchmarks/audits/database_error.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 234 MB
-        runtime=10,  # measured 2.8 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         figure=DATABASE["figures"]["error"],
         levels=DATABASE["levels"],
@@ -475,8 +475,8 @@ rule audit_database_worst:
         "benchmarks/audits/database_worst.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 137 MB
-        runtime=10,  # measured 1.4 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         figure=DATABASE["figures"]["worst"],
         space=config["colour"]["space"],
@@ -502,8 +502,8 @@ rule audit_database_glasses:
         "benchmarks/audits/database_glasses.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 129 MB
-        runtime=10,  # measured 1.3 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         figure=DATABASE["figures"]["glasses"],
     script:
@@ -534,8 +534,8 @@ rule audit_database_spread:
         "benchmarks/audits/database_spread.tsv"
     threads: 1
     resources:
-        mem_mb=800,  # script peak 133 MB
-        runtime=10,  # measured 1.6 s of CPU
+        mem_mb=800,  # see workflow/docs/guides/cluster.rst
+        runtime=10,  # the floor: the job takes seconds
     params:
         figure=DATABASE["figures"]["spread"],
     script:
