@@ -17,6 +17,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 REPORT = ROOT / "workflow" / "report"
@@ -226,6 +227,12 @@ def _expected(cwd):
     vases = read("fig7.csv").set_index("vase")
     span = vases.L99 - vases.L10
     munsell = pd.read_csv(cwd / "spectra" / "sources.csv").set_index("material").dataset
+    config = yaml.safe_load((cwd / "config.yaml").read_text())
+    lo, hi = config["figures"]["cook_torrance_1982"]["table1"]["average_F0_range_nm"]
+    grid = np.arange(lo, hi + 1, config["wavelengths"]["step_nm"], dtype=float)
+    carbon = pd.read_csv(cwd / "spectra" / "Carbon.csv")
+    n, k = (np.interp(grid, carbon.wavelength_nm, carbon[c]) for c in ("n", "k"))
+    carbon_F0 = ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2)
     return {
         "fig6": {
             "ambient_headon": f"{100 * b.ambient_over_headon_diffuse_all_lights:.1f}",
@@ -257,6 +264,12 @@ def _expected(cwd):
             "Obsidian_visible": f"{100 * vases.visible.Obsidian:.0f}",
             "Obsidian_span": f"{span.Obsidian:.0f}", "LunarDust_span": f"{span.LunarDust:.1f}",
             "LunarDust_C": f"{vases.body_chroma.LunarDust:.0f}",
+            # carbon: its median L* against the CIE 1976 lightness of its F0 (colour-science's),
+            # and its F0 from the measured n, k by the textbook formula, over Table I's range
+            "Carbon_L": f"{vases.L50.Carbon:.0f}",
+            "Carbon_F0_L": f"{colour.colorimetry.lightness_CIE1976(100 * vases.F0_Y.Carbon):.0f}",
+            "Carbon_F0_min": f"{carbon_F0.min():.2f}", "Carbon_F0_max": f"{carbon_F0.max():.2f}",
+            "visible_lo": f"{lo:g}", "visible_hi": f"{hi:g}",
         },
     }
 

@@ -55,14 +55,25 @@ with script_log(snakemake) as log:
     table = pd.DataFrame(rows)
     for ax, title, ylabel in ((axes[0], "(a) Gaussian: m in the\nnumerator or the denominator", "D"),
                               (axes[1], "(b) Beckmann:\nthe constant in front", "D (log scale)")):
-        ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 30), xlabel="\u03b1 between N and H (\u00b0)",
+        ax.set(xlim=(0, 90), xticks=np.arange(0, 91, 30),
+               xlabel="\u03b1 between N and H (\u00b0; in radians in D)",
                ylabel=ylabel, title=title)
         ax.grid(True)
+    # the slide's point, "m near 0.2 ... nearly smooth": with m in the numerator the smallest m
+    # is the flattest curve, said on the curve, from the curve (alpha in radians in the exponent)
+    smooth = min(cfg["m"])
+    flat = curves[f"gaussian_slide_m{smooth:g}"][-1]
+    axes[0].annotate(f"slide, \"nearly smooth\" m = {smooth:g}:\nD = {flat:.2f} at "
+                     f"{np.degrees(alpha[-1]):.0f}\u00b0, the flattest",
+                     xy=(np.degrees(alpha[-1]), flat), xytext=(31, 0.49), ha="left",
+                     fontsize="small", color=OKABE_ITO[1], zorder=5,
+                     bbox=dict(facecolor="white", edgecolor="none", alpha=0.9, pad=1.5),
+                     arrowprops=dict(arrowstyle="->", color=OKABE_ITO[1], lw=0.8))
     axes[1].set(yscale="log", ylim=(1e-3, 30))
     axes[0].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
     axes[1].legend(loc="upper left", bbox_to_anchor=(-0.15, -0.22))
-    fig.suptitle("Lecture (Russin, Module 3B), \u201cDistribution of microfacet orientations\u201d:\nthe "
-                 "slide's D's against Cook & Torrance 1982's and the normalised Beckmann", y=0.995, va="top", linespacing=1.3)
+    fig.suptitle("\u201cDistribution of microfacet orientations\u201d (Russin's lecture): the slide's D's\n"
+                 "beside Cook & Torrance 1982's and the normalised Beckmann", y=0.995, va="top", linespacing=1.3)
     fig.subplots_adjust(wspace=0.32, top=0.8, bottom=0.42, left=0.09, right=0.98)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     pd.DataFrame(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
