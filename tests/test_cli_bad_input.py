@@ -568,6 +568,33 @@ def test_a_metal_may_have_n_below_1(workdir, root, capsys):
     assert capsys.readouterr().out.startswith("theta_out_deg,")
 
 
+def test_a_fine_wavelength_step_that_fits_runs_and_agrees_with_1_nm(workdir, root, capsys,
+                                                                   monkeypatch):
+    """A fine step that divides the range and fits the size bound is a correct run, not a numpy
+    broadcast error: colour-science's align gave D65 (tabulated to 780 nm) one sample more than
+    the grid at 0.001 nm (issue 25). The rectangle rule converges: the 0.0025 nm integral of the
+    same spectrum agrees with the 1 nm one (they differ by about 1e-6 here)."""
+    import io
+
+    import pandas as pd
+
+    from reflectance.colour import tables
+
+    monkeypatch.setenv(tables.CACHE_ENVIRONMENT_VARIABLE, str(workdir / "cache"))
+    tables.forget()  # the tables computed here, not read from an earlier run's cache
+
+    def exact_XYZ(step):
+        args = ["audit", "Cu", "--angle", "0", "--wavelengths", "360", "830", step,
+                "--spectra-dir", str(root / "spectra")]
+        assert main(args) in (0, None)
+        table = pd.read_csv(io.StringIO(capsys.readouterr().out))
+        return table.loc[table["method"] == "exact", ["X", "Y", "Z"]].to_numpy()[0]
+
+    fine = exact_XYZ("0.0025")  # 188001 wavelengths
+    assert np.all(np.isfinite(fine))
+    np.testing.assert_allclose(fine, exact_XYZ("1"), rtol=1e-4)
+
+
 BUSY_SCENE = """\
 camera: {position: [0, -5, 1], look_at: [0, 0, 0.3], fov_deg: 35, width: 800, height: 600,
          supersample: 3}

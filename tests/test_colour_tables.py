@@ -345,3 +345,25 @@ def test_decoding_of_8_bit_codes_is_colour_sciences(fresh_cache):
     for bad in ([0.5], [-1], [256]):
         with pytest.raises(ValueError, match="integers 0-255"):
             decode_8bit(bad)
+
+
+@pytest.mark.parametrize("step", [4.7, 0.0025])
+def test_aligned_tables_sit_on_a_grid_colour_sciences_align_misses(fresh_cache, step):
+    """colour-science's align samples at points of its own: D65, tabulated to 780 nm, came back
+    up to 1.9 nm off a 4.7 nm grid and one sample too long at 0.0025 nm (issue 25). Truth: D65's
+    interpolator is linear, so inside its range it is numpy's interp of its table, beyond it its
+    last value; the CMFs (tabulated at every nm of 360-830) are colour-science's Sprague
+    interpolation, evaluated here at the grid's own points by colour-science's interpolator."""
+    g = np.linspace(360.0, 830.0, int(round(470 / step)) + 1)
+    d65 = colour.SDS_ILLUMINANTS["D65"]
+    assert d65.wavelengths[-1] == 780.0
+    expected = np.where(g <= 780.0, np.interp(g, d65.wavelengths, d65.values), d65.values[-1])
+    aligned = tables.illuminant_aligned("D65", tuple(g.tolist()))
+    assert aligned.shape == g.shape
+    np.testing.assert_allclose(aligned, expected, rtol=1e-12)
+    observer = "CIE 1931 2 Degree Standard Observer"
+    sprague = colour.SpragueInterpolator(OBSERVERS[observer].wavelengths,
+                                         OBSERVERS[observer].values[:, 1])
+    cmfs = tables.cmfs_aligned(observer, tuple(g.tolist()))
+    assert cmfs.shape == (g.size, 3)
+    np.testing.assert_allclose(cmfs[:, 1], sprague(g), rtol=1e-12, atol=1e-15)

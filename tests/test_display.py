@@ -21,6 +21,7 @@ from reflectance.colour.display import (
     display_space,
     encode,
     expose_CookTorrance1982,
+    expose_key,
     gamut_clip,
     linear_RGB_to_XYZ,
 )
@@ -172,6 +173,27 @@ def test_expose_edge_cases():
     scaled, scale = expose_CookTorrance1982(XYZ)
     assert scale == pytest.approx(1 / XYZ_to_linear_RGB(XYZ[1]).max())
     assert np.isnan(scaled[0, 0]) and np.all(np.isfinite(scaled[1]))
+
+
+@pytest.mark.parametrize("percentile, luminance", [(90.0, 0.18), (10.0, 0.5), (99.0, 0.8)])
+def test_expose_key_puts_that_percentile_of_the_objects_luminance_at_the_key(percentile,
+                                                                              luminance):
+    """Reflected-light metering: the given percentile of Y over the object (Y > 0; the black
+    background and a non-finite pixel left out) lands at the key luminance."""
+    rng = np.random.default_rng(25)
+    Y = np.zeros((40, 50))
+    Y[5:35, 10:40] = rng.lognormal(0.0, 1.0, (30, 30))  # the object; the rest is background
+    xy = np.array([0.3127, 0.3290])  # any chromaticity: only Y is metered
+    XYZ = np.stack([Y * xy[0] / xy[1], Y, Y * (1 - xy.sum()) / xy[1]], axis=-1)
+    XYZ[0, 0] = np.nan
+    scaled, scale = expose_key(XYZ, percentile, luminance)
+    metered = np.percentile(Y[5:35, 10:40], percentile)  # numpy, on the object's pixels only
+    assert scale == pytest.approx(luminance / metered, rel=1e-12)
+    assert np.percentile(scaled[5:35, 10:40, 1], percentile) == pytest.approx(luminance,
+                                                                              rel=1e-12)
+    background = Y == 0
+    background[0, 0] = False
+    assert np.all(scaled[background] == 0) and np.isnan(scaled[0, 0]).all()
 
 
 # --- gamut clipping: Cook & Torrance 1982 (dominant wavelength) ----------------------------

@@ -66,6 +66,46 @@ def test_locks_of_a_live_run_are_kept(tmp_path):
     assert len(list((state / "incomplete").iterdir())) == 1
 
 
+@pytest.fixture
+def two_records(tmp_path):
+    """Two runs on record before either locked: one still running (a child of this test, asleep
+    after recording itself), one that recorded itself and exited; then Snakemake's locks."""
+    state = tmp_path / ".snakemake"
+    env = {**os.environ, "PYTHONPATH": WORKFLOW}
+    alive = subprocess.Popen(
+        [sys.executable, "-c", f"import time; from reflectance.resume import resume_after_kill; "
+                               f"resume_after_kill(state_dir={str(state)!r}); print('on record', "
+                               f"flush=True); time.sleep(120)"],
+        env=env, stdout=subprocess.PIPE, text=True)
+    try:
+        assert alive.stdout.readline().strip() == "on record"
+        record_by_exited_process(state)
+        fake_snakemake_state(state)
+        records = [json.loads(p.read_text())["pid"]
+                   for p in (state / "locks").glob("reflectance-run.*.json")]
+        assert len(records) == 2 and alive.pid in records
+        yield state, alive
+    finally:
+        alive.kill()
+        alive.wait()
+
+
+def test_locks_are_kept_while_one_of_two_recorded_runs_is_alive(two_records):
+    state, alive = two_records
+    assert resume_after_kill(state_dir=state) == []
+    assert len(list((state / "locks").glob("*.lock"))) == 2
+    assert len(list((state / "incomplete").iterdir())) == 1
+
+
+def test_locks_are_cleared_once_both_recorded_runs_are_dead(two_records):
+    state, alive = two_records
+    alive.kill()
+    alive.wait()
+    cleared = resume_after_kill(state_dir=state)
+    assert cleared and "locks" in cleared[0] and str(alive.pid) in cleared[0]
+    assert not list((state / "locks").glob("*.lock"))
+
+
 def test_locks_without_a_record_or_from_another_host_are_kept(tmp_path):
     state = fake_snakemake_state(tmp_path / ".snakemake")
     assert resume_after_kill(state_dir=state) == []  # no record: not ours to judge

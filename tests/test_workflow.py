@@ -450,7 +450,12 @@ def test_report_reads_in_a_browser(after_build, root):
 def test_readme_strip_is_the_committed_picture(built, root):
     """README shows workflow/docs/strip.png, a committed copy of results/readme/strip.png: the
     build must give the same picture (same size; pixels equal up to last-bit differences a
-    different numpy or VTK may make), so the copy cannot go stale unnoticed."""
+    different numpy or VTK may make), so the copy cannot go stale unnoticed.
+
+    Compared on the renders' object pixels (the black background and the colour strip under them
+    left out), at the 99th percentile of each pixel's largest channel difference: one 8-bit step
+    anywhere passes, a change in the shading fails: mesh normals left unnormalised after
+    interpolation (issue 25) passed the mean over the whole strip and fail this (CHANGELOG)."""
     import numpy as np
     from PIL import Image
 
@@ -459,7 +464,12 @@ def test_readme_strip_is_the_committed_picture(built, root):
     with Image.open(root / "workflow/docs/strip.png") as im:
         committed = np.asarray(im.convert("RGB"), dtype=np.float64) / 255
     assert fresh.shape == committed.shape
-    assert np.abs(fresh - committed).mean() < 0.005, (
+    height = _config(built)["readme"]["strip"]["height_px"]  # of the renders' row
+    difference = np.abs(fresh - committed).max(axis=-1)
+    objects = np.maximum(fresh, committed).max(axis=-1) > 0
+    objects[height:] = False
+    assert objects.sum() > 0.1 * objects[:height].size
+    assert np.percentile(difference[objects], 99) < 1.5 / 255, (
         "refresh it: workflow/docs/guides/results.rst says how")
 
 

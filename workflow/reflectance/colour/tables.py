@@ -53,8 +53,10 @@ __all__ = [
     "forget",
 ]
 
-_FORMAT = 1
-"""Version of this module's file layout; part of every file name."""
+_FORMAT = 2
+"""Version of this module's file layout; part of every file name. 2: aligned tables are evaluated
+at the grid's own points (:func:`_align`); a file of 1 may hold colour-science's samples off the
+grid."""
 
 
 @functools.lru_cache(maxsize=1)
@@ -176,13 +178,49 @@ def _spectral_shape(grid):
     return shape
 
 
+def _on_grid(sd, grid):
+    """One spectral distribution as colour-science's ``align`` makes it, evaluated at ``grid``.
+
+    Inside the data's range, the interpolator ``SpectralDistribution.interpolate`` chooses (the
+    distribution's own, unless it is Sprague or cubic spline: then Sprague for uniform data, else
+    cubic spline); outside, ``extrapolate``'s default, the constant value at the data's end.
+    """
+    from colour.algebra import CubicSplineInterpolator, SpragueInterpolator
+
+    sd = sd.copy()
+    if sd.interpolator in (SpragueInterpolator, CubicSplineInterpolator):
+        sd.interpolator = SpragueInterpolator if sd.is_uniform() else CubicSplineInterpolator
+        sd.interpolator_kwargs = {}
+    lo, hi = float(sd.wavelengths[0]), float(sd.wavelengths[-1])
+    values = np.empty(len(grid), dtype=np.float64)
+    inside = (grid >= lo) & (grid <= hi)
+    if inside.any():
+        values[inside] = sd[grid[inside]]
+    first, last = np.asarray(sd[np.array([max(lo, grid[0]), min(hi, grid[-1])])], np.float64)
+    values[grid < lo], values[grid > hi] = first, last
+    return values
+
+
 def _align(spectral_data, grid, what):
-    """``spectral_data.copy().align(shape)`` with colour-science's errors named for the caller."""
+    """colour-science's ``spectral_data.copy().align(shape)``, evaluated at exactly ``grid``.
+
+    colour-science 0.4's ``align`` evaluates at samples of its own, which miss a grid whose step
+    does not fit the data's range: ``interpolate`` spreads its samples evenly over the part of the
+    grid the data covers (np.linspace), ``extrapolate`` continues past the data's end by np.arange
+    with the data's measured interval. D65 (tabulated to 780 nm) on 360-830 nm then gets one
+    sample too many at a 0.001 nm step and samples up to 1.9 nm off the grid at 4.7 nm (issue 25).
+    Here the same interpolator and extrapolation are evaluated at the grid's own points; where
+    colour-science's samples are the grid, the values are its values bit for bit.
+    """
     try:
-        aligned = spectral_data.copy().align(_spectral_shape(grid))
+        _spectral_shape(grid)  # refuses a grid that is not uniform
+        points = np.asarray(grid, dtype=np.float64)
+        signals = getattr(spectral_data, "signals", None)
+        if signals is None:
+            return _on_grid(spectral_data, points)
+        return np.column_stack([_on_grid(sd, points) for sd in signals.values()])
     except (AssertionError, ValueError) as error:
         raise ValueError(f"wavelengths: cannot align {what} onto the grid: {error}") from error
-    return np.array(aligned.values, dtype=np.float64)
 
 
 def _tabulated(kind, key):
