@@ -91,6 +91,10 @@ BAD = [
     (["audit", "Cu", "--wavelengths", "360", "830", "1e-7"], "--wavelengths: 1e-07 nm from 360 to 830 nm makes"),
     (["audit", "Cu", "--angle", "0", "10", "--wavelengths", "400", "700", "1e-8"], "--wavelengths: 1e-08 nm"),
     (["bench", "--grids", "5", "1e-6"], "--grids: 1e-06 nm at --grid-size 512 makes"),
+    # a grid short of the blue: the white has no Z (CIE 1931 z-bar is 0 past 650 nm) and X/Y near
+    # x-bar/y-bar at 700 nm (0.011359/0.004102 = 2.77); it printed a raw array, naming no option
+    (["audit", "Cu", "--wavelengths", "700", "830", "1", "--average-range", "700", "780"],
+     "--wavelengths 700-830 nm: the illuminant's white is X, Y, Z = 2.77, 1, 0"),
     (["bench", "--sizes", "64", "16384"], "--sizes 16384, --supersample 2: the ID buffer would be"),
     # --spectra-dir, a folder that does not exist, in every command that looks a material up
     *[(args + ["--spectra-dir", "nope"], "--spectra-dir: no such folder 'nope'")

@@ -92,6 +92,20 @@ def _check_size(key, value, dims, streamed=False):
         raise SystemExit(f"reflectance: {problem}")
 
 
+def _check_white(W, grid):
+    """ValueError naming --wavelengths if the light's white has an X, Y or Z of 0 on ``grid``
+    (a grid short of where a colour-matching function lies: a white with no Z has no
+    chromaticity to adapt to, and no colour can be shown against it)."""
+    import numpy as np
+
+    white = np.asarray(W, dtype=np.float64).sum(axis=0)
+    if not np.all(white > 0):
+        raise ValueError(
+            f"--wavelengths {grid[0]:g}-{grid[-1]:g} nm: the illuminant's white is X, Y, Z = "
+            f"{', '.join(f'{v:.3g}' for v in white / max(white[1], 1e-300))} (Y = 1) on this grid; "
+            f"it must reach every colour-matching function (e.g. cover 400-700 nm)")
+
+
 def _wavelength_points(start, end, step):
     """Points of the grid (counted, not made); 1 for a grid wavelength_grid refuses."""
     from reflectance.io.limits import grid_points
@@ -219,6 +233,7 @@ def _run_colour(args):
     material = _load(args, args.material, grid)
     try:
         W = tristimulus_weights(grid, args.illuminant, args.observer)
+        _check_white(W, grid)
         table = colour_columns(material, args.angle, W, methods=(args.fresnel,), space=args.space,
                                clip=args.clip, illuminant=args.illuminant,
                                average_range_nm=args.average_range, expose=False,
@@ -456,6 +471,7 @@ def _run_brdf(args):
             grid = _grid_and_colour(args)
             material = _load(args, args.material, grid)
             W = tristimulus_weights(grid, args.illuminant, args.observer)
+            _check_white(W, grid)
             n, k, albedo = material.n, material.k, material.F0
         elif args.n is not None:
             n, k = args.n, args.k
@@ -922,6 +938,7 @@ def _run_audit(args):
         display_space(settings["space"])
         grid = wavelength_grid(*settings["wavelengths"])
         W, observer = audit_weights(grid, settings["illuminant"], settings["observer"])
+        _check_white(W, grid)
         if args.material == "-":  # a spectrum CSV on standard input: read as the file stdin.csv
             stdin = tempfile.TemporaryDirectory(prefix="reflectance-audit-")
             source = Path(stdin.name) / "stdin.csv"
