@@ -136,7 +136,7 @@ def test_render_on_a_terminal_shows_a_bar_with_the_time_left(root, tmp_path):
     frames = re.split(r"[\r\n]+", text.strip())
     middle = [f for f in frames if re.search(r": +([1-9]|[1-9]\d)%\|", f)]  # 1 % to 99 %
     assert middle, text
-    assert any(re.search(r"\| [\d.]+k/12\.3k \[\d\d:\d\d<\d\d:\d\d, [\d.]+k? samples/s\]$", f)
+    assert any(re.search(r"\| [\d.]+k/12\.3k \[\d\d:\d\d<\d\d:\d\d, [\d.]+[kM]? samples/s\]$", f)
                for f in middle), text
     assert any(f.startswith("reflectance render: rows 24-28: shadows: ") for f in frames), text
     assert re.search(r"reflectance render: done: 100%\|.*\| 12\.3k/12\.3k ", frames[-2]), text

@@ -53,10 +53,12 @@ class Progress:
 
         self.label = label
         disable = True if not enabled or tty is False else (False if tty else None)
-        # mininterval and the rest left to tqdm (and to its TQDM_* environment variables)
+        # mininterval and the rest left to tqdm (and to its TQDM_* environment variables); no
+        # prefixes while the total is unknown (a bare 0, not "0.00")
+        self._unit_scale = unit_scale
         self._bar = tqdm(total=total, desc=label, file=sys.stderr if stream is None else stream,
-                         disable=disable, unit=unit, unit_scale=unit_scale, dynamic_ncols=True,
-                         leave=True)
+                         disable=disable, unit=unit, unit_scale=unit_scale and total is not None,
+                         dynamic_ncols=True, leave=True)
         self.enabled = not self._bar.disable  # (tqdm disables a bar when it closes)
         self._closed = False
 
@@ -79,21 +81,25 @@ class Progress:
 
     @total.setter
     def total(self, value):
-        self._bar.total = value
+        self._bar.total, self._bar.unit_scale = value, self._unit_scale
 
     def update(self, done=None, message=None, total=None):
         """``done`` units of the work are finished (None: as before), ``message`` is under way
         (None: as before) and the work has ``total`` units (None: as before)."""
         bar = self._bar
+        if bar.disable:
+            return
         if total is not None:
-            bar.total = total
+            bar.total, bar.unit_scale = total, self._unit_scale
         if message is not None:
             bar.set_description_str(f"{self.label}: {message}", refresh=False)
+        drawn = bar.last_print_t
         if done is not None and done > bar.n:
             bar.update(done - bar.n)  # (tqdm's rate, and so its estimate, follow the counts)
         elif done is not None:
             bar.n = done
-        bar.refresh()
+        if bar.last_print_t == drawn:  # not drawn by update (at most every mininterval)
+            bar.refresh()
 
     def close(self, message="done", complete=True):
         """The task is finished (``complete``: all its units) or stopped (a failure: the count
