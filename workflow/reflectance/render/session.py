@@ -28,12 +28,12 @@ class RenderSession:
         Of the per-sample work (:mod:`reflectance.render.parallel`).
     progress : callable, optional
         Told each phase as it starts, after where it is (``"rows 0-31: visibility"``).
-    tally : callable, optional
-        Told ``(done, total)``, the samples traced and shaded so far and the samples planned
-        (:meth:`plan`, :meth:`finished`): the work a progress bar counts.
     keep_trace : bool
         The first pass's trace of an image of one band is looked up in, and kept in, the
         process's trace memo (:func:`reflectance.render.tracing.trace_once`).
+    tally : callable, optional
+        Told ``(done, total)``, the samples traced and shaded so far and the samples planned
+        (:meth:`plan`, :meth:`finished`): the work a progress bar counts.
 
     Notes
     -----
