@@ -221,13 +221,15 @@ def _expected(cwd):
     b = fig6[fig6.panel == "b"].iloc[0]
     printed = read("fig6_as_printed.csv").set_index("panel")
     irradiance = read("fig6_irradiance.csv").set_index("panel")
+    config = yaml.safe_load((cwd / "config.yaml").read_text())
+    shown_as = config["figures"]["cook_torrance_1982"]["fig6"]["published"]["display_variant"]
+    variant = read(f"fig6_{shown_as['name']}.csv").drop_duplicates("panel").set_index("panel")
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     _, F0_a, F0_b = colour.XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), d65)
     onset = read("fig5bc_approximation.csv").iloc[0]
     vases = read("fig7.csv").set_index("vase")
     span = vases.L99 - vases.L10
     munsell = pd.read_csv(cwd / "spectra" / "sources.csv").set_index("material").dataset
-    config = yaml.safe_load((cwd / "config.yaml").read_text())
     lo, hi = config["figures"]["cook_torrance_1982"]["table1"]["average_F0_range_nm"]
     grid = np.arange(lo, hi + 1, config["wavelengths"]["step_nm"], dtype=float)
     carbon = pd.read_csv(cwd / "spectra" / "Carbon.csv")
@@ -244,6 +246,10 @@ def _expected(cwd):
             "a_peak_ratio": f"{a_printed.specular_over_diffuse_peak:.2f}",
             "a_chroma": f"{a_printed.highlight_chroma_ratio:.2f}",
             "a_body_L": f"{a_printed.L50:.0f}", "a_body_C": f"{a_printed.body_chroma:.1f}",
+            "a_body_hue": f"{a_printed.body_hue_deg:.1f}",
+            "b_highlight_C": f"{b.body_chroma * b.highlight_chroma_ratio:.1f}",
+            "variant_a_body_C": f"{variant.body_chroma.a:.1f}",
+            "variant_b_highlight_C": f"{variant.body_chroma.b * variant.highlight_chroma_ratio.b:.1f}",
             "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}",
             "intensity_ambient": f"{printed.ambient_over_headon_diffuse_weakest_light.a:.0f}",
             "irradiance_b_visible": f"{100 * irradiance.visible.b:.0f}",

@@ -80,16 +80,24 @@ def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
                      f"{p}_{key}": str(tmp / f"fig6{p}.{ext}") for p in "ab"
                      for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
     reference, published, readings = reading_params(reading)
+    files = prefixed(vars(out), reading)
+    if published and "display_variant" in published:  # the default figure shown otherwise
+        name = published["display_variant"]["name"]
+        files.update({f"{name}_png": str(tmp / f"fig6_{name}.png"),
+                      f"{name}_csv": str(tmp / f"fig6_{name}.csv"), **{
+                          f"{name}_{p}_{key}": str(tmp / f"fig6{p}_{name}.{ext}") for p in "ab"
+                          for key, ext in (("exr", "exr"), ("png", "png"),
+                                           ("scene", "scene.yaml"))}})
     snakemake = SimpleNamespace(
         input=SimpleNamespace(spectra=[str(SPECTRA / "Cu.csv")]),
-        output=Output(**prefixed(vars(out), reading)),
+        output=Output(**files),
         params=SimpleNamespace(fig=fig, reference=reference, published=published,
                                readings=readings, wavelengths=CONFIG["wavelengths"],
                                colour=CONFIG["colour"]),
         log=[str(tmp / "fig6.log")], rule="ct82_fig6")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig6.py"),
                    init_globals={"snakemake": snakemake})
-    return out
+    return Output(**{**vars(out), **files})  # the display variant's files too
 
 
 def run_fig8(tmp, width=320, height=256, supersample=1):
@@ -426,6 +434,65 @@ def test_fig6b_default_highlights_keep_a_gradient(fig6_published):
     hue = np.degrees(np.arctan2(Lab[top, 2].mean(), Lab[top, 1].mean()))
     L, a, b = colour.XYZ_to_Lab(F0_colour_science("Cu"), D65_xy())
     assert abs((hue - np.degrees(np.arctan2(b, a)) + 180) % 360 - 180) <= 10, hue
+
+
+def copper_linear(F0_scale):
+    """Linear sRGB of copper's F0 colour (colour-science, D65 white) times ``F0_scale``."""
+    return colour.XYZ_to_RGB(F0_scale * F0_colour_science("Cu"), colour.RGB_COLOURSPACES["sRGB"],
+                             illuminant=D65_xy(), chromatic_adaptation_transform="CAT02")
+
+
+def copper_shown(F0_scale, transfer):
+    """CIELAB of copper's F0 colour (colour-science, D65) times ``F0_scale`` as an sRGB screen
+    shows it when its linear sRGB is written as the codes through ``transfer``: "sRGB" (the
+    IEC 61966-2-1 encoding) or "none" (the linear values as the codes: a 1982 frame buffer)."""
+    sRGB = colour.RGB_COLOURSPACES["sRGB"]
+    linear = copper_linear(F0_scale)
+    codes = np.clip(linear if transfer == "none" else colour.cctf_encoding(linear, "sRGB"), 0, 1)
+    return colour.XYZ_to_Lab(colour.RGB_to_XYZ(colour.cctf_decoding(codes, function="sRGB"),
+                                               sRGB, illuminant=sRGB.whitepoint), sRGB.whitepoint)
+
+
+def lab_hue(a, b):
+    return np.degrees(np.arctan2(b, a)) % 360
+
+
+def hue_gap(h, other):
+    return abs((h - other + 180) % 360 - 180)
+
+
+@pytest.mark.parametrize("display", ["variant", "default"])
+def test_fig6_uncorrected_display_shows_copper_coloured_copper(fig6_published, display):
+    """The display variant (linear RGB written as the codes, as 1982 frame buffers drove their
+    monitors) shows copper as copper (C&T 1982 Fig. 6; "The specular reflectance component has a
+    copper color"): (a)'s body, copper's F0/pi, has at least 0.8 of the CIELAB chroma of copper's
+    F0 colour dimmed to the body's median L* and shown that way, within 10 deg of its hue;
+    (b)'s highlight (the top 1 % of L*) has copper's F0 hue shown that way within 10 deg and
+    more than 1.2 times the chroma of (a)'s highlight (the top 0.5 %: vinyl's grey F on the body).
+    The default figure (sRGB-encoded) fails it: expected to, the reason for the variant."""
+    from scipy.optimize import brentq
+
+    name = PUBLISHED["display_variant"]["name"]
+    prefix = f"{name}_" if display == "variant" else ""
+    _, body = shown_lab(fig6_published[f"{prefix}a_png"], fig6_published[f"{prefix}a_exr"])
+    # (a) as printed is not written; its departure (a'), same body, is
+    L50, brightest = np.median(body[:, 0]), 1.0 / copper_linear(1.0).max()
+    # copper at the body's L* (none if brighter than copper can be shown that way)
+    scale = (brentq(lambda k: copper_shown(k, "none")[0] - L50, 1e-6, brightest)
+             if L50 < copper_shown(brightest, "none")[0] else None)
+    predicted = copper_shown(scale or brightest, "none")
+    C = np.hypot(np.median(body[:, 1]), np.median(body[:, 2]))
+    ok_body = (scale is not None and C >= 0.8 * np.hypot(*predicted[1:])
+               and hue_gap(lab_hue(np.median(body[:, 1]), np.median(body[:, 2])),
+                           lab_hue(*predicted[1:])) <= 10)
+    _, shine = shown_lab(fig6_published[f"{prefix}b_png"], fig6_published[f"{prefix}b_exr"])
+    top = shine[shine[:, 0] >= np.percentile(shine[:, 0], 99)]
+    top_a = body[body[:, 0] >= np.percentile(body[:, 0], 99.5)]
+    copper = copper_shown(brightest, "none")  # at the display maximum
+    ok_b = (hue_gap(lab_hue(*top[:, 1:].mean(axis=0)), lab_hue(*copper[1:])) <= 10
+            and np.median(np.hypot(top[:, 1], top[:, 2]))
+            > 1.2 * np.median(np.hypot(top_a[:, 1], top_a[:, 2])))
+    assert (ok_body and ok_b) == (display == "variant"), (display, C, predicted, top.mean(0))
 
 
 def test_fig6a_default_departure_is_labelled(fig6_published):

@@ -392,6 +392,16 @@ def test_encode_SMPTE_C_is_inverse_BT1886_with_black_zero():
     np.testing.assert_allclose(encode(L, "SMPTE-C"), L ** (1 / 2.4), atol=1e-12)  # BT.1886 Annex 1
 
 
+def test_encode_without_a_transfer_writes_the_linear_values():
+    """transfer 'none': the linear RGB (clipped to [0, 1]) is the signal, as a frame buffer without
+    gamma correction wrote it; an unknown transfer is refused by name."""
+    L = np.linspace(-0.5, 1.5, 2001)
+    np.testing.assert_array_equal(encode(L, "sRGB", "none"), np.clip(L, 0, 1))
+    np.testing.assert_array_equal(encode(L, "SMPTE-C", "none"), np.clip(L, 0, 1))
+    with pytest.raises(ValueError, match="transfer.*gamma.*display.*none"):
+        encode(L, "sRGB", "gamma")
+
+
 def test_XYZ_to_display_composes_the_steps():
     XYZ = random_XYZ(600, seed=10, Y_range=(0, 4)).reshape(20, 30, 3)
     for space in DISPLAY_SPACES:

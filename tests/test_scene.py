@@ -380,6 +380,22 @@ def test_display_meters_on_the_object_or_a_white_card_not_both(spectra):
     scene_from_dict(minimal(display={"white": {"luminance": 2.0}}), spectra_dir=spectra)
 
 
+def test_display_transfer_none_writes_the_linear_RGB_as_the_codes(spectra):
+    """display.transfer: 'display' by default (the space's transfer function); 'none' makes the
+    encoded image the linear display RGB itself; another value is refused by its key."""
+    from reflectance.colour.exposure import image_display_RGB
+
+    assert scene_from_dict(minimal(), spectra_dir=spectra).display.transfer == "display"
+    scene = scene_from_dict(minimal(display={"transfer": "none", "expose": False}),
+                            spectra_dir=spectra)
+    assert scene.display.transfer == "none"
+    XYZ = np.random.default_rng(3).uniform(0, 1.2, (4, 5, 3))
+    linear, _ = image_display_RGB(XYZ, scene.display)
+    encoded, _ = image_display_RGB(XYZ, scene.display, encoded=True)
+    np.testing.assert_array_equal(encoded, linear)
+    assert "display" in errors_of(minimal(display={"transfer": "gamma"}), spectra)
+
+
 def test_composed_mesh_is_kept_per_geometry_and_copied_per_scene(spectra):
     """Scenes that differ only in material share one composition (a deep copy each, so a scene
     that changes its mesh changes no other); another transform or object is composed anew."""

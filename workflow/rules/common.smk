@@ -124,6 +124,8 @@ def ct82_caption(fig, reading):
     """The caption of one variant: a reading's caption is its ambient reference's."""
     if reading is None:
         return f"../report/ct82_{fig}_published.rst"
+    if reading == CT82["fig6"]["published"].get("display_variant", {}).get("name"):
+        return f"../report/ct82_{fig}_display.rst"  # the default figure, shown otherwise
     return f"../report/ct82_{fig}_{CT82['fig6']['ambient_readings'][reading]}.rst"
 
 

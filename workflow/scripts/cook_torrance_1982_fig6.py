@@ -28,6 +28,10 @@ from reflectance.io.tables import write_csv
 from reflectance.scripting import params_dict, script_log
 
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
+#: a display variant's title: how its linear RGB became the PNG's codes (scene display.transfer)
+DISPLAYS = {"display": "the linear RGB encoded by the display's transfer function",
+            "none": "the linear RGB written as the codes, without gamma correction\n(as a 1982 frame "
+                    "buffer drove its monitor)"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
             "irradiance": "ambient = {f} of the lights' irradiance: I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0",
             "weighted": "ambient = {f} of the lights as they enter the model: I_ia = {f} \u03a3 I_i d\u03c9_i"}
@@ -42,11 +46,12 @@ def title_of(item, fig_cfg):
     part, departure = item.tags["part"], item.tags["departure"]
     if item.written and departure is None:
         return TITLES[part]
-    if not item.written:
-        return f"{TITLES[part]}\nas printed"
+    if not item.written:  # the paper's panel, as printed
+        return TITLES[part]
+    # the departure: not the paper's panel, so not labelled as it ("(a)" twice misled a reader)
     printed = {k: fig_cfg["panels"][part][k] for k in departure}
-    return (f"{TITLES[part]}\n{departure_text(departure)} "
-            f"(departure;\nprinted: {departure_text(printed)})")
+    return (f"({part}\u2032) variant, not in the paper:\n{departure_text(departure)} "
+            f"(printed: {departure_text(printed)})")
 
 
 def variant(log, out, reference, published, items):
@@ -93,6 +98,8 @@ def variant(log, out, reference, published, items):
     lines = max(label.count("\n") + 1 for label, _ in images)
     # one line; the default figure's reading and exposure are its caption's (issue 28)
     title = "Cook & Torrance 1982, Fig. 6"
+    if published and published.get("variant"):
+        title += f" \u2014 {DISPLAYS[published['exposure'].get('transfer', 'display')]}"
     if not published:
         reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
         title += f" \u2014 {reading}".replace(": I_ia", ":\nI_ia")
@@ -135,7 +142,18 @@ with script_log(snakemake) as log:
         table = pd.read_csv(getattr(snakemake.output, prefix + "csv"))
         first = table.drop_duplicates("panel").set_index("panel")
         a, b = first.loc["a"], first.loc["b"]
-        if published:
+        if published and published.get("variant"):  # the default figure, shown otherwise:
+            # (a) as printed and (b) as its PNG shows them: (a)'s body (median L*, C*, hue) and
+            # highlight C*, (b)'s highlight C* and hue, its share at or above 20/255 and at 255
+            values.update({
+                "variant_a_body_C": f"{a.body_chroma:.1f}",
+                "variant_a_body_hue": f"{a.body_hue_deg:.1f}", "variant_a_body_L": f"{a.L50:.0f}",
+                "variant_a_highlight_C": f"{a.body_chroma * a.highlight_chroma_ratio:.1f}",
+                "variant_b_highlight_C": f"{b.body_chroma * b.highlight_chroma_ratio:.1f}",
+                "variant_b_hue": f"{b.highlight_hue_deg:.1f}",
+                "variant_b_visible": f"{100 * b.visible:.0f}",
+                "variant_b_clipped": f"{100 * b.clipped:.1f}"})
+        elif published:
             a_shown = table.drop_duplicates("panel", keep="last").set_index("panel").loc["a"]
             white = XYZ_to_xy(white_XYZ(colour_cfg["illuminant"], colour_cfg["observer"]))
             _, F0_a, F0_b = XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), white)
@@ -146,7 +164,9 @@ with script_log(snakemake) as log:
                 "Cu_F0_hue": f"{np.degrees(np.arctan2(F0_b, F0_a)) % 360:.1f}",
                 "a_F0": f"{a.F0_Y:.3f}", "a_peak_ratio": f"{a.specular_over_diffuse_peak:.2f}",
                 "a_chroma": f"{a.highlight_chroma_ratio:.2f}", "a_body_L": f"{a.L50:.0f}",
-                "a_body_C": f"{a.body_chroma:.1f}",
+                "a_body_C": f"{a.body_chroma:.1f}", "a_body_hue": f"{a.body_hue_deg:.1f}",
+                "a_highlight_C": f"{a.body_chroma * a.highlight_chroma_ratio:.1f}",
+                "b_highlight_C": f"{b.body_chroma * b.highlight_chroma_ratio:.1f}",
                 "a_shown_chroma": f"{a_shown.highlight_chroma_ratio:.2f}",
                 "b_clipped": f"{100 * b.clipped:.1f}", "b_visible": f"{100 * b.visible:.0f}"})
         elif reference == "intensity":

@@ -61,6 +61,7 @@ __all__ = [
     "gamut_clip_CSSColor4",
     "GAMUT_CLIP_METHODS",
     "gamut_clip",
+    "TRANSFERS",
     "encode",
     "decode_8bit",
     "XYZ_to_display",
@@ -586,8 +587,21 @@ def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
     return GAMUT_CLIP_METHODS[method](RGB_linear, space)
 
 
-def encode(RGB_linear, space="sRGB"):
+TRANSFERS = {
+    "display": "the display space's transfer function (DISPLAY_SPACES)",
+    "none": "none: the linear RGB written as the signal, as a frame buffer of Cook & Torrance's "
+            "time wrote intensities to a monitor without gamma correction (the monitor's power "
+            "law then darkens the colours and raises their channel ratios to its power)",
+}
+"""What :func:`encode` applies: the space's transfer function, or none (a choice of a scene's
+``display.transfer``)."""
+
+
+def encode(RGB_linear, space="sRGB", transfer="display"):
     """Apply the display's transfer function (linear light -> signal) to RGB in [0, 1].
+
+    ``transfer`` 'none' (:data:`TRANSFERS`) writes the linear RGB as the signal instead: clipped
+    to [0, 1], nothing else; the display shown those values applies its own EOTF to them.
 
     'sRGB': the IEC 61966-2-1 inverse EOTF (equals ``colour.cctf_encoding(..., function="sRGB")``).
     'SMPTE-C': the inverse of the ITU-R BT.1886 reference EOTF with L_W = 1 and L_B = 0, i.e.
@@ -605,7 +619,11 @@ def encode(RGB_linear, space="sRGB"):
     [0.0, 0.04045, 1.0]
     """
     display_space(space)
+    if transfer not in TRANSFERS:
+        raise ValueError(f"transfer: unknown {transfer!r}; known: {', '.join(TRANSFERS)}")
     RGB = np.clip(np.asarray(RGB_linear, dtype=np.float64), 0.0, 1.0)
+    if transfer == "none":
+        return RGB
     if space == "sRGB":
         return _eotf_inverse_sRGB(RGB)
     return _eotf_inverse_BT1886(RGB, L_B=0.0, L_W=1.0)

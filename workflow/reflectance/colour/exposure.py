@@ -3,7 +3,7 @@
 A display's settings (``display``) are what a scene file's ``display`` holds
 (:class:`reflectance.render.scene.Display`): ``space``, ``gamut_clip``, ``expose``,
 ``illuminant``, ``key`` (the metered ``(percentile, luminance)``, :func:`expose_key`),
-``highlight_knee`` (:func:`compress_highlights`) and ``white`` (the display luminance of a white
+``highlight_knee`` (:func:`compress_highlights`), ``transfer`` (:func:`encode`) and ``white`` (the display luminance of a white
 card facing the lights). The automatic exposure is the white card's when ``white`` is set, else
 the metered key's, else Cook & Torrance's (:func:`expose_CookTorrance1982`); a large image's
 scale is found from the few pixels that decide it, so that it is the whole image's without
@@ -94,7 +94,7 @@ def image_display_RGB(XYZ, display, observer=OBSERVER_DEFAULT, wavelengths=None,
         if d.highlight_knee is not None:
             RGB = compress_highlights(RGB, d.highlight_knee)
         RGB = gamut_clip(RGB, d.gamut_clip, d.space)
-        out[start:start + rows] = encode(RGB, d.space) if encoded else RGB
+        out[start:start + rows] = encode(RGB, d.space, d.transfer) if encoded else RGB
     return out, scale
 
 

@@ -150,6 +150,7 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
     dict
         ``visible``: fraction of object pixels with some channel >= 20/255; ``L10``, ``L50``,
         ``L99``: the 10th, 50th and 99th percentile of L*; ``body_chroma``: median C*ab;
+        ``body_hue_deg``: CIELAB hue of the median a*, b*;
         ``highlight_chroma_ratio``: median C*ab of the pixels at or above the
         ``highlight_percentile`` of L*, over the body's;
         ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
@@ -180,5 +181,7 @@ def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
             "L10": float(np.percentile(L, 10)), "L50": float(np.percentile(L, 50)),
             "L99": float(np.percentile(L, 99)),
             "body_chroma": float(np.median(C)),
+            "body_hue_deg": float(np.degrees(np.arctan2(np.median(Lab[:, 2]),
+                                                        np.median(Lab[:, 1]))) % 360),
             "highlight_chroma_ratio": float(np.median(C[highlight]) / np.median(C)),
             "highlight_hue_deg": hue, "clipped": float((~unclipped).mean())}

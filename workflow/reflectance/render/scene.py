@@ -145,6 +145,7 @@ class Display:
     key: tuple | None = None  # (percentile, luminance): reflectance.colour.display.expose_key
     highlight_knee: float | None = None  # reflectance.colour.display.compress_highlights
     white: float | None = None  # display luminance of a white card: shading.white_card_luminance
+    transfer: str = "display"  # reflectance.colour.display.TRANSFERS: encode's transfer
 
 
 @dataclass(frozen=True, eq=False)
@@ -606,7 +607,7 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     if white is not None and any(light.area is not None for light in lights):
         check.add(["display", "white"], "a white card needs every light's solid_angle")
     display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
-                      d["png_bit_depth"], key, d.get("highlight_knee"), white)
+                      d["png_bit_depth"], key, d.get("highlight_knee"), white, d["transfer"])
 
     cache, objects = {}, []
     for i, obj in enumerate(doc["objects"]):

@@ -24,12 +24,18 @@ FILES = {"png": "fig6{}.png", "csv": "fig6{}.csv",
 
 def variants(params):
     """``[(output prefix, ambient reference, published settings or None), ...]``: the default
-    figure first (unprefixed), then each reading of the ambient term, prefixed ``<reading>_``
-    (C&T Figs. 6 and 7 alike)."""
+    figure first (unprefixed), then each of its display variants (its exposure replaced, the
+    settings' ``variant`` naming it), prefixed ``<variant>_``, then each reading of the ambient
+    term, prefixed ``<reading>_`` (C&T Figs. 6 and 7 alike)."""
     published = params["published"]
     default = [("", params["reference"], published)] if published else []
-    return default + [(f"{reading}_", reference, None)
-                      for reading, reference in params["readings"].items()]
+    # the default figure again with another display (fig6.published.display_variant)
+    shown = [(f"{v['name']}_", params["reference"],
+              {**published, "exposure": v["exposure"], "panel_exposure": v.get("panel_exposure", {}),
+               "variant": v["name"]})
+             for v in [(published or {}).get("display_variant")] if v]
+    return default + shown + [(f"{reading}_", reference, None)
+                              for reading, reference in params["readings"].items()]
 
 
 def panel_exposure(published, part):

@@ -8,7 +8,7 @@ term, its outputs prefixed ``<reading>_``.
 from __future__ import annotations
 
 from reflectance.papers.figures.declaration import FigureScene
-from reflectance.papers.figures.ct82_fig6 import variants
+from reflectance.papers.figures import ct82_fig6
 from reflectance.papers.scenes import (fig7_exposure_CookTorrance1982,
                                        fig7_vases_CookTorrance1982, vase_scene_CookTorrance1982)
 
@@ -33,6 +33,12 @@ RGB_AUDIT_PARAMS = {"audit": "audits.rgb_rendering", "fig7": f"{_CT}.fig7",
                     "fig6": FIG6_RENDERING + (f"{_CT}.fig6.published.ambient_reference",
                                               f"{_CT}.fig6.published.exposure"),
                     "wavelengths": "wavelengths", "colour": "colour"}
+
+
+def variants(params):
+    """Fig. 6's variants (the default figure, then each ambient reading), without Fig. 6's
+    display variant (``fig6.published.display_variant``: Fig. 6's alone)."""
+    return [v for v in ct82_fig6.variants(params) if not (v[2] or {}).get("variant")]
 
 
 def vases(params):
