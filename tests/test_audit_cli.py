@@ -395,6 +395,8 @@ def test_installed_package_works_in_any_folder(root, early, tmp_path_factory):
                  data / "config.yaml"):
         assert path.exists() and not path.is_symlink(), path
     assert (data / "config.yaml").read_bytes() == (root / "config.yaml").read_bytes()
+    # PEP 561: a type checker reads the installed package's annotations
+    assert (site_dir / "reflectance" / "py.typed").is_file()
     rows = csv_rows(audit)
     assert rows[0]["material"] == "Cu" and float(rows[0]["Y"]) > 0.5
     _, colour_ = _installed_result(early, root, tmp_path_factory, "colour")
