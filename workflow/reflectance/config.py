@@ -787,7 +787,7 @@ def size_problems(config, memory=None):
 
 # --- every figure's scene, built and validated without rendering ------------------------------
 
-_BUILT_GEOMETRIES = set()  # geometries (canonical JSON) already built once in this process
+_BUILT_GEOMETRIES: set[str] = set()  # geometries (canonical JSON) already built once in this process
 
 #: The config key of the geometry of the scenes of a figure (key prefix -> geometry key).
 GEOMETRY_KEYS = {

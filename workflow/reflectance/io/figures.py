@@ -73,8 +73,9 @@ STYLE = {
     "axes.spines.right": False,
     "axes.grid": False,
     "axes.axisbelow": True,
-    "axes.prop_cycle": matplotlib.cycler(color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7)]
-                                          + [DARK_YELLOW]),  # yellow last, darkened for white
+    "axes.prop_cycle": matplotlib.cycler(  # type: ignore[attr-defined]  # not in its stubs
+        color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7)]
+        + [DARK_YELLOW]),  # yellow last, darkened for white
     "axes.xmargin": 0.0,
     "grid.color": "0.9",
     "grid.linewidth": 0.6,

@@ -21,6 +21,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -52,7 +53,7 @@ class Consequence:
 
 
 #: erratum id -> ``function(**settings) -> Consequence``; filled by :func:`_erratum`
-ERRATA = {}
+ERRATA: dict[str, Callable[..., Consequence]] = {}
 
 
 def _erratum(erratum_id):

@@ -24,7 +24,7 @@ __all__ = ["THREADS_VARIABLE", "render_threads", "Tasks", "pieces"]
 THREADS_VARIABLE = "REFLECTANCE_RENDER_THREADS"
 """Environment variable overriding the renderer's default thread count (a positive integer)."""
 
-_pools = {}
+_pools: dict[int, ThreadPoolExecutor] = {}
 _pools_lock = threading.Lock()
 
 
