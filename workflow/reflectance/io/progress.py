@@ -10,6 +10,8 @@ commands' CSV and JSON.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable, Sequence
+from typing import Any, TextIO
 
 __all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker", "worker_main"]
 
@@ -44,7 +46,7 @@ class Progress:
 
     WIDTH = 24  # characters of the bar
 
-    def __init__(self, total, label, stream=None, enabled=True, tty=None):
+    def __init__(self, total: int, label: str, stream: TextIO | None = None, enabled: bool = True, tty: bool | None = None) -> None:
         self.total = max(int(total), 1)
         self.label = label
         self._stream = stream
@@ -53,17 +55,17 @@ class Progress:
         self._drawn = 0  # length of the line drawn on a terminal (0: none)
 
     @property
-    def stream(self):
+    def stream(self) -> TextIO:
         return sys.stderr if self._stream is None else self._stream
 
     @property
-    def tty(self):
+    def tty(self) -> bool:
         if self._tty is not None:
             return self._tty
         isatty = getattr(self.stream, "isatty", None)
         return bool(isatty and isatty())
 
-    def update(self, done, message):
+    def update(self, done: int, message: str) -> None:
         """Report that ``done`` of the steps are finished and ``message`` is under way."""
         if not self.enabled:
             return
@@ -79,7 +81,7 @@ class Progress:
             self.stream.write(f"{self.label}: [{done}/{self.total}] {message}\n")
         self.stream.flush()
 
-    def close(self, message="done", done=None):
+    def close(self, message: str = "done", done: int | None = None) -> None:
         """The task is finished (or stopped at step ``done``, for a failure): a last step and
         the end of the terminal's line."""
         if not self.enabled:
@@ -128,7 +130,7 @@ def run_worker(module, job, progress=None, failure="worker failed"):
     return json.loads("".join(lines).strip().splitlines()[-1])
 
 
-def worker_main(function, argv=None):
+def worker_main(function: Callable[..., Any], argv: Sequence[str] | None = None) -> None:
     """The main of a module that :func:`run_worker` runs: ``function(**job,
     progress=worker_progress)`` for the job given as ``--worker JSON``, its value printed as
     JSON on the last line of standard output. ``argv``: the arguments (default: the process's).

@@ -784,7 +784,7 @@ def bundled_spectra_dir() -> Path:
     """
     from reflectance.io.paths import package_data
 
-    return Path(package_data("spectra"))
+    return Path(package_data("spectra"))  # type: ignore[arg-type]  # a folder on disk
 
 
 def folder_list(spectra_dirs: SpectraDirs) -> list[str]:
