@@ -9,6 +9,7 @@ import argparse
 import math
 import os
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 
 __all__ = ["main", "COMMANDS"]
@@ -1115,7 +1116,7 @@ def _command(argv):
     return words[0] if words and words[0] in COMMANDS else ""
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     args = build_parser(_command(argv)).parse_args(argv)
     args.argv = argv  # (the metadata files record the command)

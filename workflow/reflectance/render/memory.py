@@ -33,7 +33,7 @@ ADAPTIVE_PEAK_MEMORY = {512: (1223180 - 835764) * 2**10, 1024: (1455744 - 855748
 MESH_ELEMENTS_PER_VERTEX = 36
 
 
-def render_memory_bytes(width, height, supersample, whole=False, adaptive=False):
+def render_memory_bytes(width: int, height: int, supersample: int, whole: bool = False, adaptive: bool = False) -> float:
     """Estimated peak memory (bytes) of rendering an image of this size and writing it.
 
     An image of at most :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples is traced
