@@ -21,6 +21,7 @@ import functools
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import yaml
@@ -44,6 +45,9 @@ from reflectance.io.paths import file_inside, package_data
 from reflectance.io.yamlfile import MAX_BYTES, YAMLFileError, load_yaml_text
 from reflectance.io.limits import grid_points, size_problem
 from reflectance.render.memory import MESH_ELEMENTS_PER_VERTEX, render_size_problem
+
+if TYPE_CHECKING:
+    import pyvista as pv
 
 __all__ = [
     "SceneError",
@@ -156,7 +160,7 @@ class SceneObject:
     """
 
     name: str
-    mesh: object  # pyvista.PolyData, placed
+    mesh: pv.PolyData  # placed
     material: ShadingMaterial
     part_materials: dict = field(default_factory=dict)
 
@@ -181,7 +185,7 @@ class Scene:
     spectral: str
     table_size: int
     shadows: bool
-    mesh: object
+    mesh: pv.PolyData
     source: str = "<scene>"
     document: dict = field(default_factory=dict)
     refinement: object = None
