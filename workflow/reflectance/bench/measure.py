@@ -89,13 +89,13 @@ def load_bench_scene(scene: str | os.PathLike[str] | dict[str, Any], spectra_dir
 
     from reflectance.render.scene import load_scene, scene_from_dict
 
-    overrides = {"width": width, "height": height, "supersample": supersample,
+    overrides: dict[str, Any] = {"width": width, "height": height, "supersample": supersample,
                  "spectral": spectral, "wavelengths": wavelengths}
     if not isinstance(scene, dict):
         out = load_scene(scene, spectra_dir=spectra_dir, **overrides)
         if adaptive is None:
             return out
-        return dataclasses.replace(out, refinement=dataclasses.replace(out.refinement,
+        return dataclasses.replace(out, refinement=dataclasses.replace(out.refinement,  # type: ignore[type-var]
                                                                       enabled=bool(adaptive)))
     doc = copy.deepcopy(scene)
     source = doc.pop("_source", "scene document")

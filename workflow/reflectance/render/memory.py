@@ -75,8 +75,8 @@ def render_memory_bytes(width: int, height: int, supersample: int, whole: bool =
     return need
 
 
-def render_size_problem(keys, width, height, supersample, whole=False, adaptive=False,
-                        memory=None):
+def render_size_problem(keys: str, width: int, height: int, supersample: int, whole: bool = False, adaptive: bool = False,
+                        memory: float | None = None) -> str | None:
     """One line naming ``keys`` if the render cannot fit in ``memory`` bytes (default: this
     machine's physical memory) or its ID buffer exceeds
     :data:`~reflectance.render.camera.MAX_BUFFER_SIDE`; else None."""
