@@ -54,14 +54,14 @@ References
 from __future__ import annotations
 
 import inspect
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.microfacet import CONVENTIONS, distribution
 from reflectance.optics.shadowing import G_over_NE_Blinn1977, shadowing
-from collections.abc import Callable
-from typing import Any
-import numpy.typing as npt
 
 __all__ = [
     "brdf_Lambert",

@@ -51,9 +51,10 @@ References
 
 from __future__ import annotations
 
-import numpy as np
 from collections.abc import Iterable, Mapping
 from typing import Any
+
+import numpy as np
 import numpy.typing as npt
 
 __all__ = [

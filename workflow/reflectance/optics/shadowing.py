@@ -32,9 +32,10 @@ References
 
 from __future__ import annotations
 
-import numpy as np
 from collections.abc import Callable
 from typing import Any
+
+import numpy as np
 import numpy.typing as npt
 
 __all__ = [
