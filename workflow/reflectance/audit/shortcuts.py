@@ -145,7 +145,8 @@ OBSERVERS = {"2": "CIE 1931 2 Degree Standard Observer",
 #: CAM16 viewing conditions of the CAM16-UCS difference: colour-science's defaults for
 #: ``XYZ_to_CAM16``, i.e. IEC 61966-2-1 (sRGB) viewing: 64 lux, L_A = 64/pi * 0.2 cd/m^2,
 #: background Y_b = 20, average surround; the adopted white is the illuminant's.
-CAM16_VIEWING_CONDITIONS: dict[str, Any] = {"L_A": 64.0 / math.pi * 0.2, "Y_b": 20.0, "surround": "Average"}
+CAM16_VIEWING_CONDITIONS: dict[str, Any] = {"L_A": 64.0 / math.pi * 0.2, "Y_b": 20.0,
+                                            "surround": "Average"}
 
 #: CIEDE2000 levels marked in the figure: about one just-noticeable difference, 2 and 5.
 DE2000_LEVELS = (1.0, 2.0, 5.0)
@@ -168,7 +169,8 @@ def looks_like_path(spec: str) -> bool:
     return spec.lower().endswith(".csv") or os.sep in spec or "/" in spec or Path(spec).is_file()
 
 
-def resolve_material(spec: Any, wavelengths: npt.ArrayLike, spectra_dirs: SpectraDirs = ()) -> Material:
+def resolve_material(spec: Any, wavelengths: npt.ArrayLike,
+                     spectra_dirs: SpectraDirs = ()) -> Material:
     """A material by name or from a CSV file, on the grid ``wavelengths``.
 
     Parameters
@@ -205,7 +207,8 @@ def resolve_material(spec: Any, wavelengths: npt.ArrayLike, spectra_dirs: Spectr
     return find_material(spec, wavelengths, spectra_dirs)
 
 
-def smooth_F0_warnings(material: Material, limits: Mapping[str, Any] = SMOOTH_F0_LIMITS) -> list[str]:
+def smooth_F0_warnings(material: Material,
+                       limits: Mapping[str, Any] = SMOOTH_F0_LIMITS) -> list[str]:
     """Why a reflectance (a 'derived' material: k = 0, n from F0) cannot be the normal-incidence
     reflectance of a smooth transparent surface: a list of sentences (empty if it can be).
 
@@ -291,7 +294,8 @@ def observer_name(observer: str | int) -> str:
     return name
 
 
-def audit_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65", observer: str | int = "2") -> tuple[npt.NDArray[np.float64], str]:
+def audit_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65",
+                  observer: str | int = "2") -> tuple[npt.NDArray[np.float64], str]:
     """Tristimulus weights for an illuminant name or SPD file and an observer ('2', '10' or a
     colour-science name). Returns ``(W, observer_name)``; ValueError names the known choices."""
     from reflectance.colour.colorimetry import tristimulus_weights, tristimulus_weights_spd
@@ -342,7 +346,8 @@ def _XYZ_rgb(material, cos_theta, W, space):
                            fresnel=fresnel_Schlick1994)
 
 
-def shortcut_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64], method: str, space: str = "sRGB", average_range_nm: Sequence[float] = (380, 780),
+def shortcut_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+                 method: str, space: str = "sRGB", average_range_nm: Sequence[float] = (380, 780),
                  exact: npt.NDArray[np.float64] | None = None) -> npt.NDArray[np.float64]:
     """XYZ of the light ``material`` reflects at each ``cos_theta`` (1-D) by one audit method.
 
@@ -380,7 +385,10 @@ def shortcut_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np
     raise ValueError(f"unknown method {method!r}; known: {', '.join(AUDIT_METHODS)}")
 
 
-def shortcuts_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64], methods: Sequence[str], space: str = "sRGB", average_range_nm: Sequence[float] = (380, 780)) -> dict[str, npt.NDArray[np.float64]]:
+def shortcuts_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+                  methods: Sequence[str], space: str = "sRGB",
+                  average_range_nm: Sequence[float] = (380, 780)
+                 ) -> dict[str, npt.NDArray[np.float64]]:
     """``{"exact": XYZ, method: XYZ, ...}`` for ``methods`` (exact computed once, first), each
     as :func:`shortcut_XYZ` gives it: shape (..., A, 3)."""
     exact = shortcut_XYZ(material, cos_theta, W, "exact")
@@ -411,8 +419,10 @@ def check_finite_colours(material, XYZ, methods, angles_deg):
             f"the Fresnel equations (largest n {np.max(material.n):g}, k {np.max(material.k):g})")
 
 
-def audit_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64], methods: Sequence[str] = tuple(AUDIT_METHODS), space: str = "sRGB",
-                average_range_nm: Sequence[float] = (380, 780), observer: str = "CIE 1931 2 Degree Standard Observer",
+def audit_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                methods: Sequence[str] = tuple(AUDIT_METHODS), space: str = "sRGB",
+                average_range_nm: Sequence[float] = (380, 780),
+                observer: str = "CIE 1931 2 Degree Standard Observer",
                 illuminant: str = "D65") -> dict[str, Any]:
     """One row per (method, angle): colour and its differences from the exact colour.
 
@@ -490,7 +500,8 @@ def audit_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np
     }
 
 
-def dE2000_against_angle(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64], methods: Sequence[str], space: str = "sRGB",
+def dE2000_against_angle(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                         methods: Sequence[str], space: str = "sRGB",
                          average_range_nm: Sequence[float] = (380, 780)) -> npt.NDArray[np.float64]:
     """CIEDE2000 of each method's colour against the exact colour: array (method, angle), or
     (..., method, angle) for several materials on one grid.
@@ -527,7 +538,9 @@ def format_audit_csv(table: Mapping[str, Sequence[Any]]) -> str:
     return csv_text(table, [c for c in AUDIT_TABLE_COLUMNS if c.name in table])
 
 
-def audit_metadata(table: Mapping[str, Any], settings: Mapping[str, Any], material: Material, source: str | os.PathLike[str] | None = None, warnings: Sequence[str] = ()) -> dict[str, Any]:
+def audit_metadata(table: Mapping[str, Any], settings: Mapping[str, Any], material: Material,
+                   source: str | os.PathLike[str] | None = None,
+                   warnings: Sequence[str] = ()) -> dict[str, Any]:
     """What an audit table was computed from, for :func:`reflectance.io.provenance.write_metadata`.
 
     Parameters
@@ -640,7 +653,9 @@ def _figure(table, space, title):
     return fig
 
 
-def write_audit(table: Mapping[str, Any], out_dir: str | os.PathLike[str], white: npt.ArrayLike, space: str = "sRGB", title: str = "", metadata: Mapping[str, Any] | None = None) -> list[Path]:
+def write_audit(table: Mapping[str, Any], out_dir: str | os.PathLike[str], white: npt.ArrayLike,
+                space: str = "sRGB", title: str = "",
+                metadata: Mapping[str, Any] | None = None) -> list[Path]:
     """Write ``audit.csv``, ``audit.png`` (and ``audit.pdf``) and, with ``metadata``
     (:func:`audit_metadata`), ``audit_metadata.yaml`` beside them, into ``out_dir``, each
     atomically.

@@ -201,7 +201,8 @@ def _write_ply(path, points, normals, triangles):
         f.write(face.tobytes())
 
 
-def scene_to_mitsuba(scene: Scene, folder: str | os.PathLike[str], spp: int = 64, seed: int = 0) -> dict[str, Any]:
+def scene_to_mitsuba(scene: Scene, folder: str | os.PathLike[str], spp: int = 64,
+                     seed: int = 0) -> dict[str, Any]:
     """The ``mitsuba.load_dict`` dictionary of a loaded scene (see the module docstring).
 
     ``folder`` receives the meshes (PLY files) the dictionary names. Raises ValueError, one
@@ -278,7 +279,9 @@ def scene_to_mitsuba(scene: Scene, folder: str | os.PathLike[str], spp: int = 64
     return doc
 
 
-def mitsuba_renderer(scene: Scene, variant: str | None = None) -> Callable[..., tuple[npt.NDArray[np.float64], float]]:
+def mitsuba_renderer(scene: Scene,
+                     variant: str | None = None
+                    ) -> Callable[..., tuple[npt.NDArray[np.float64], float]]:
     """Load a loaded scene into Mitsuba once; return ``render(spp, seed=0)``.
 
     ``render`` gives what :func:`render_mitsuba` gives, ``(XYZ, seconds)``, for any number of
@@ -310,7 +313,8 @@ def mitsuba_renderer(scene: Scene, variant: str | None = None) -> Callable[..., 
     return render
 
 
-def render_mitsuba(scene: Scene, spp: int, seed: int = 0, variant: str | None = None) -> tuple[npt.NDArray[np.float64], float]:
+def render_mitsuba(scene: Scene, spp: int, seed: int = 0,
+                   variant: str | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
 
     Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
@@ -517,9 +521,12 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     return out
 
 
-def bench_crosscheck(document: str | os.PathLike[str] | dict[str, Any], size: int, supersample: int = 2, runs: int = 3, reference_supersample: int = 8,
-                     reference_spp: int = CROSSCHECK_SPP, ladder_spp: Sequence[int] = LADDER_SPP, spectra_dir: SpectraDirs = None,
-                     progress: Callable[[str], None] | None = None, variants: Sequence[str] = VARIANTS, our_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES) -> dict[str, Any]:
+def bench_crosscheck(document: str | os.PathLike[str] | dict[str, Any], size: int,
+                     supersample: int = 2, runs: int = 3, reference_supersample: int = 8,
+                     reference_spp: int = CROSSCHECK_SPP, ladder_spp: Sequence[int] = LADDER_SPP,
+                     spectra_dir: SpectraDirs = None, progress: Callable[[str], None] | None = None,
+                     variants: Sequence[str] = VARIANTS,
+                     our_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES) -> dict[str, Any]:
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
 

@@ -66,7 +66,8 @@ def _peak_MiB():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
 
 
-def scene_difference(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike, scene: Scene) -> tuple[float, float]:
+def scene_difference(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike,
+                     scene: Scene) -> tuple[float, float]:
     """(mean, 95th percentile) CIEDE2000 of two renders of ``scene`` on the reference's
     Cook & Torrance exposure, in the scene's display illuminant, observer and wavelengths
     (:func:`reflectance.colour.difference.difference_statistics_CIEDE2000`); (0, 0) when no
@@ -77,8 +78,11 @@ def scene_difference(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike, scene: Sc
                                            scene.observer, scene.wavelengths)
 
 
-def load_bench_scene(scene: str | os.PathLike[str] | dict[str, Any], spectra_dir: SpectraDirs = None, width: int | None = None, height: int | None = None, supersample: int | None = None,
-                     spectral: str | None = None, wavelengths: Mapping[str, float] | None = None, adaptive: bool | None = None, base_dir: str | os.PathLike[str] = ".") -> Scene:
+def load_bench_scene(scene: str | os.PathLike[str] | dict[str, Any],
+                     spectra_dir: SpectraDirs = None, width: int | None = None,
+                     height: int | None = None, supersample: int | None = None,
+                     spectral: str | None = None, wavelengths: Mapping[str, float] | None = None,
+                     adaptive: bool | None = None, base_dir: str | os.PathLike[str] = ".") -> Scene:
     """The benchmarked scene: a scene file's path, or a scene document (dict, with its
     ``source`` description under the key ``"_source"`` if any; its mesh paths and material
     files relative to ``base_dir``), with overrides as
@@ -110,9 +114,12 @@ def load_bench_scene(scene: str | os.PathLike[str] | dict[str, Any], spectra_dir
     return scene_from_dict(doc, source=source, base_dir=base_dir, spectra_dir=spectra_dir)
 
 
-def bench_size(scene: str | os.PathLike[str] | dict[str, Any], size: int, supersample: int = 2, runs: int = 5, brute_force_runs: int = 1, grids_nm: Sequence[float] = (),
+def bench_size(scene: str | os.PathLike[str] | dict[str, Any], size: int, supersample: int = 2,
+               runs: int = 5, brute_force_runs: int = 1, grids_nm: Sequence[float] = (),
                spectra_dir: SpectraDirs = None, reference_supersample: int = REFERENCE_SUPERSAMPLE,
-               reference_max_samples: int = REFERENCE_MAX_SAMPLES, progress: Callable[[str], None] | None = None, adaptive: bool | None = None) -> dict[str, Any]:
+               reference_max_samples: int = REFERENCE_MAX_SAMPLES,
+               progress: Callable[[str], None] | None = None,
+               adaptive: bool | None = None) -> dict[str, Any]:
     """Measurements for one image size, in this process (see :func:`reflectance.bench.run.run_bench`); ``progress``, if
     given, is called with the name of each phase as it starts; ``adaptive`` as for
     :func:`load_bench_scene`."""

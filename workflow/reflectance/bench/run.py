@@ -44,11 +44,14 @@ def crosscheck_status(results: Sequence[Mapping[str, Any]] = ()) -> str:
             f"--crosscheck-size, default {CROSSCHECK_SIZE}, when that size is benchmarked)")
 
 
-def run_bench(scene: str | os.PathLike[str] | dict[str, Any], sizes: Sequence[int] = (256, 512, 1024), supersample: int = 2, runs: int = 5, brute_force_runs: int = 1,
-              grids_nm: Sequence[float] = (5, 1), grid_size: int = 512, spectra_dir: SpectraDirs = None,
-              reference_supersample: int = REFERENCE_SUPERSAMPLE, progress: Progress | None = None, adaptive: bool | None = None,
+def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
+              sizes: Sequence[int] = (256, 512, 1024), supersample: int = 2, runs: int = 5,
+              brute_force_runs: int = 1, grids_nm: Sequence[float] = (5, 1), grid_size: int = 512,
+              spectra_dir: SpectraDirs = None, reference_supersample: int = REFERENCE_SUPERSAMPLE,
+              progress: Progress | None = None, adaptive: bool | None = None,
               crosscheck_size: int = CROSSCHECK_SIZE, crosscheck_spp: int = CROSSCHECK_SPP,
-              crosscheck_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES) -> list[dict[str, Any]]:
+              crosscheck_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES
+             ) -> list[dict[str, Any]]:
     """Run :func:`reflectance.bench.measure.bench_size` for each size in a fresh subprocess;
     return the list of results.
 

@@ -124,7 +124,8 @@ def _weights(S, xyz_bar):
     return S[:, None] * xyz_bar / np.sum(xyz_bar[:, 1] * S)
 
 
-def tristimulus_weights_spd(spd: npt.ArrayLike, wavelengths: npt.ArrayLike, observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
+def tristimulus_weights_spd(spd: npt.ArrayLike, wavelengths: npt.ArrayLike,
+                            observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """:func:`tristimulus_weights` for an illuminant given by its SPD values on the grid.
 
     Parameters
@@ -161,7 +162,8 @@ def tristimulus_weights_spd(spd: npt.ArrayLike, wavelengths: npt.ArrayLike, obse
     return _weights(S, xyz_bar)
 
 
-def cmfs(observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
+def cmfs(observer: str = OBSERVER_DEFAULT,
+         wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Colour matching functions of a CIE standard observer on a wavelength grid.
 
     Parameters
@@ -190,7 +192,8 @@ def cmfs(observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = N
     return _cmfs_cached(observer, _grid_key(wavelengths)).copy()
 
 
-def illuminant_sd(name: str = "D65", wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
+def illuminant_sd(name: str = "D65",
+                  wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Relative spectral power distribution of a CIE illuminant on a wavelength grid.
 
     Parameters
@@ -251,7 +254,8 @@ def illuminant_range_nm(name: str = "D65") -> tuple[float, float]:
     return float(wavelengths[0]), float(wavelengths[-1])
 
 
-def tristimulus_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65", observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
+def tristimulus_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65",
+                        observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """Weights ``W`` such that ``XYZ = S @ W`` for a spectral reflectance factor ``S``.
 
     ``W[i] = S_illum(l_i) * xyz_bar(l_i) / sum_j S_illum(l_j) y_bar(l_j)``, so that ``S = 1`` gives
@@ -323,7 +327,8 @@ def spectrum_to_XYZ(S: npt.ArrayLike, W: npt.ArrayLike) -> npt.NDArray[np.float6
     return S @ W
 
 
-def white_XYZ(illuminant: str = "D65", observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
+def white_XYZ(illuminant: str = "D65", observer: str = OBSERVER_DEFAULT,
+              wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """CIE XYZ (Y = 1) of an illuminant's white, i.e. of ``S = 1``, for an observer.
 
     Parameters
@@ -437,7 +442,10 @@ def XYZ_to_Lab(XYZ: npt.ArrayLike, illuminant_xy: npt.ArrayLike) -> npt.NDArray[
     return np.stack([116 * f_Y - 16, 500 * (f_X - f_Y), 200 * (f_Y - f_Z)], axis=-1)
 
 
-def dominant_wavelength(XYZ: npt.ArrayLike, illuminant: str = "D65", observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def dominant_wavelength(XYZ: npt.ArrayLike, illuminant: str = "D65",
+                        observer: str = OBSERVER_DEFAULT,
+                        wavelengths: npt.ArrayLike | None = None
+                       ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Dominant wavelength and excitation purity of CIE XYZ colours relative to a white.
 
     Purples, which have no dominant wavelength, get their complementary wavelength as a negative

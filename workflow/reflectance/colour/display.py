@@ -165,7 +165,8 @@ def _matrix_chromatic_adaptation_VonKries(XYZ_w, XYZ_wr, transform):
     return np.matmul(np.matmul(np.linalg.inv(M), D), M)
 
 
-def _XYZ_to_RGB_matrix(space: str, illuminant: str | npt.ArrayLike, observer: str, wavelengths: npt.ArrayLike | None) -> npt.NDArray[np.float64]:
+def _XYZ_to_RGB_matrix(space: str, illuminant: str | npt.ArrayLike, observer: str,
+                       wavelengths: npt.ArrayLike | None) -> npt.NDArray[np.float64]:
     ds = display_space(space)
     XYZ_w = _scene_white(illuminant, observer, wavelengths)
     M_cat = _matrix_chromatic_adaptation_VonKries(
@@ -181,9 +182,9 @@ def _as_triplets(array: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
     return array
 
 
-def XYZ_to_linear_RGB(
-    XYZ: npt.ArrayLike, space: str = "sRGB", illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None
-) -> npt.NDArray[np.float64]:
+def XYZ_to_linear_RGB(XYZ: npt.ArrayLike, space: str = "sRGB",
+                      illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT,
+                      wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Scene XYZ (relative to the illuminant's white, Y = 1) to linear display RGB.
 
     The illuminant's white maps to RGB (1, 1, 1) * Y to float precision: the scene white is adapted
@@ -222,9 +223,9 @@ def XYZ_to_linear_RGB(
     return XYZ @ _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths).T
 
 
-def linear_RGB_to_XYZ(
-    RGB: npt.ArrayLike, space: str = "sRGB", illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None
-) -> npt.NDArray[np.float64]:
+def linear_RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB",
+                      illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT,
+                      wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Inverse of :func:`XYZ_to_linear_RGB` (same arguments).
 
     Examples
@@ -237,9 +238,11 @@ def linear_RGB_to_XYZ(
     return RGB @ np.linalg.inv(M).T
 
 
-def expose_CookTorrance1982(
-    XYZ: npt.ArrayLike, space: str = "sRGB", illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT, wavelengths: npt.ArrayLike | None = None
-) -> tuple[npt.NDArray[np.float64], float]:
+def expose_CookTorrance1982(XYZ: npt.ArrayLike, space: str = "sRGB",
+                            illuminant: str | npt.ArrayLike = "D65",
+                            observer: str = OBSERVER_DEFAULT,
+                            wavelengths: npt.ArrayLike | None = None
+                           ) -> tuple[npt.NDArray[np.float64], float]:
     """Scale all XYZ of a scene equally so its most luminous colour peaks at the display maximum.
 
     Cook & Torrance 1982, "Determining the RGB values": "all XYZ values in the scene are scaled
@@ -301,7 +304,8 @@ def expose_CookTorrance1982(
     return XYZ * scale, scale
 
 
-def expose_key(XYZ: npt.NDArray[np.float64], percentile: float = 50.0, luminance: float = 0.18) -> tuple[npt.NDArray[np.float64], float]:
+def expose_key(XYZ: npt.NDArray[np.float64], percentile: float = 50.0,
+               luminance: float = 0.18) -> tuple[npt.NDArray[np.float64], float]:
     """Scale a scene so that a percentile of its object's luminance lands at a display luminance.
 
     A photographer's reflected-light metering of the object instead of Cook & Torrance's "usually"
@@ -379,7 +383,8 @@ def _in_gamut(RGB):
     return np.all((RGB >= 0) & (RGB <= 1), axis=-1)
 
 
-def gamut_clip_CookTorrance1982(RGB_linear: npt.ArrayLike, space: str = "sRGB") -> npt.NDArray[np.float64]:
+def gamut_clip_CookTorrance1982(RGB_linear: npt.ArrayLike,
+                                space: str = "sRGB") -> npt.NDArray[np.float64]:
     """Desaturate toward the white of equal luminance, keeping dominant wavelength (C&T 1982).
 
     Cook & Torrance 1982, "Determining the RGB values": "The purity is then reduced while the
@@ -580,7 +585,8 @@ def _validate_clip_method(method):
         )
 
 
-def gamut_clip(RGB_linear: npt.ArrayLike, method: str = "dominant-wavelength", space: str = "sRGB") -> npt.NDArray[np.float64]:
+def gamut_clip(RGB_linear: npt.ArrayLike, method: str = "dominant-wavelength",
+               space: str = "sRGB") -> npt.NDArray[np.float64]:
     """Bring linear display RGB into [0, 1] with one of :data:`GAMUT_CLIP_METHODS`.
 
     Examples
@@ -714,7 +720,10 @@ def XYZ_to_display(
     return encode(gamut_clip(RGB, clip, space), space)
 
 
-def fresnel_XYZ_rgb(F0_XYZ: npt.ArrayLike, cos_theta: npt.ArrayLike, white: npt.ArrayLike, space: str = "sRGB", *, fresnel: Callable[[npt.NDArray[np.float64], npt.NDArray[np.float64]], npt.ArrayLike]) -> npt.NDArray[np.float64]:
+def fresnel_XYZ_rgb(F0_XYZ: npt.ArrayLike, cos_theta: npt.ArrayLike, white: npt.ArrayLike,
+                    space: str = "sRGB", *,
+                    fresnel: Callable[[npt.NDArray[np.float64], npt.NDArray[np.float64]], npt.ArrayLike]
+                   ) -> npt.NDArray[np.float64]:
     """XYZ of F by a three-channel RGB renderer: F0 per display channel, ``fresnel`` per channel.
 
     What a renderer that stores a metal as an RGB "specular colour" does: the colour of the normal

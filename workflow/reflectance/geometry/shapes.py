@@ -73,7 +73,8 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(8)
 # Grid triangulation shared by every builder
 # --------------------------------------------------------------------------------------------
 
-def grid_mesh(points: npt.NDArray[np.float64], normals: npt.NDArray[np.float64], uv: npt.NDArray[np.float64], part: int = 0) -> pv.PolyData:
+def grid_mesh(points: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+              uv: npt.NDArray[np.float64], part: int = 0) -> pv.PolyData:
     """Triangulate a (rows, cols) grid of vertices; drop zero-area triangles (poles, axis).
 
     Each triangle is oriented so that its geometric normal agrees with its vertex normals.
@@ -89,8 +90,9 @@ def grid_mesh(points: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
                           tris, part)
 
 
-def triangle_mesh(P: npt.NDArray[np.float64], N: npt.NDArray[np.float64], uv: npt.NDArray[np.float64],
-                  tris: npt.NDArray[np.integer], part: int) -> pv.PolyData:
+def triangle_mesh(P: npt.NDArray[np.float64], N: npt.NDArray[np.float64],
+                  uv: npt.NDArray[np.float64], tris: npt.NDArray[np.integer],
+                  part: int) -> pv.PolyData:
     """Mesh of triangles ``tris``: zero-area ones dropped, each turned to face its normals."""
     cross = np.cross(P[tris[:, 1]] - P[tris[:, 0]], P[tris[:, 2]] - P[tris[:, 0]])
     area2 = np.linalg.norm(cross, axis=-1)
@@ -336,8 +338,8 @@ def _fraction(length):
     return length / length[-1] if length[-1] > 0 else np.zeros_like(length)
 
 
-def vase(profile: npt.ArrayLike, n_theta: int, n_profile_samples: int, wall_thickness: float, n_rim_samples: int = 9,
-         interpolation: str = "cubic") -> pv.PolyData:
+def vase(profile: npt.ArrayLike, n_theta: int, n_profile_samples: int, wall_thickness: float,
+         n_rim_samples: int = 9, interpolation: str = "cubic") -> pv.PolyData:
     """Thin-walled vase: a smooth profile revolved about the z axis, open at the top.
 
     The outer wall is the profile interpolated smoothly (chord-length parameter s); the inner
@@ -568,7 +570,8 @@ def sphere(center: npt.ArrayLike, radius: float, n_theta: int, n_phi: int) -> pv
     return mesh
 
 
-def torus(major_radius: float, minor_radius: float, n_u: int, n_v: int, center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
+def torus(major_radius: float, minor_radius: float, n_u: int, n_v: int,
+          center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
     """Ring torus about the z axis with exact normals; u around the axis, v around the tube.
 
     Parameters
@@ -610,7 +613,8 @@ def _signed_power(x, exponent):
     return np.sign(x) * np.abs(x) ** exponent
 
 
-def superellipsoid_Barr1981(radii: npt.ArrayLike, exponents: npt.ArrayLike, n_u: int, n_v: int, center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
+def superellipsoid_Barr1981(radii: npt.ArrayLike, exponents: npt.ArrayLike, n_u: int, n_v: int,
+                            center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
     """Superellipsoid (superquadric ellipsoid) with exact normals: an object of varied curvature.
 
     Points ``(a1 C(eta)^e1 C(w)^e2, a2 C(eta)^e1 S(w)^e2, a3 S(eta)^e1)`` and normals
@@ -678,7 +682,8 @@ def superellipsoid_Barr1981(radii: npt.ArrayLike, exponents: npt.ArrayLike, n_u:
     return grid_mesh(points, normal, uv)
 
 
-def plane(center: npt.ArrayLike, normal: npt.ArrayLike, size: Sequence[float], resolution: Sequence[int], u_direction: npt.ArrayLike | None = None) -> pv.PolyData:
+def plane(center: npt.ArrayLike, normal: npt.ArrayLike, size: Sequence[float],
+          resolution: Sequence[int], u_direction: npt.ArrayLike | None = None) -> pv.PolyData:
     """Flat rectangle of triangles, normal constant, uv in [0, 1]^2.
 
     Parameters
@@ -810,7 +815,8 @@ def mesh_from_file(path: str | os.PathLike[str], feature_angle: float = 30.0) ->
     return _with_attributes(mesh, float(feature_angle), str(path))
 
 
-def place(mesh: pv.PolyData, offset: npt.ArrayLike = (0.0, 0.0, 0.0), scale: float = 1.0, rotation: npt.ArrayLike | None = None) -> pv.PolyData:
+def place(mesh: pv.PolyData, offset: npt.ArrayLike = (0.0, 0.0, 0.0), scale: float = 1.0,
+          rotation: npt.ArrayLike | None = None) -> pv.PolyData:
     """Copy of ``mesh`` moved by ``x -> scale * rotation @ x + offset``.
 
     Normals turn with the rotation; analytic spheres move and scale with the mesh.

@@ -69,7 +69,8 @@ def _unit_interval(x):
     return np.clip(x, 0.0, 1.0)[()]  # numpy scalar for scalar input
 
 
-def texture_sinusoid(u: npt.ArrayLike, v: npt.ArrayLike, cycles_u: int = 8, cycles_v: int = 4, sharpness: float = 0.0) -> npt.NDArray[np.float64] | np.float64:
+def texture_sinusoid(u: npt.ArrayLike, v: npt.ArrayLike, cycles_u: int = 8, cycles_v: int = 4,
+                     sharpness: float = 0.0) -> npt.NDArray[np.float64] | np.float64:
     """Product of sines: ``t = (1 + S(sin(2 pi a u) sin(2 pi b v))) / 2``.
 
     ``S(s) = tanh(k s) / tanh(k)`` with ``k = sharpness`` (``S(s) = s`` for k = 0) steepens the
@@ -106,7 +107,8 @@ def texture_sinusoid(u: npt.ArrayLike, v: npt.ArrayLike, cycles_u: int = 8, cycl
     return _unit_interval(0.5 * (1.0 + s))
 
 
-def texture_spots(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4, radius: float = 0.35) -> npt.NDArray[np.float64] | np.float64:
+def texture_spots(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4,
+                  radius: float = 0.35) -> npt.NDArray[np.float64] | np.float64:
     """Round spots on a lattice: 1 at each cell centre, falling as a raised cosine to 0.
 
     In cell units (each cell 1 x 1), with d the distance from the cell centre,
@@ -182,7 +184,9 @@ def _value_octave(u, v, nu, nv, octave, seed):
     return (c00 * (1 - fx) + c10 * fx) * (1 - fy) + (c01 * (1 - fx) + c11 * fx) * fy
 
 
-def texture_value_noise(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4, octaves: int = 3, persistence: float = 0.5, seed: int = 0) -> npt.NDArray[np.float64] | np.float64:
+def texture_value_noise(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4,
+                        octaves: int = 3, persistence: float = 0.5,
+                        seed: int = 0) -> npt.NDArray[np.float64] | np.float64:
     """Fractal value noise: octaves of interpolated random lattice values, normalised to [0, 1].
 
     Octave o has (cells_u 2^o) x (cells_v 2^o) lattice cells, each lattice point a hashed
@@ -242,7 +246,8 @@ TEXTURE_METHODS: dict[str, Callable[..., Any]] = {
 """Texture functions t(u, v) in [0, 1], by name."""
 
 
-def texture(u: npt.ArrayLike, v: npt.ArrayLike, method: str = "sinusoid", **params: Any) -> npt.NDArray[np.float64] | np.float64:
+def texture(u: npt.ArrayLike, v: npt.ArrayLike, method: str = "sinusoid",
+            **params: Any) -> npt.NDArray[np.float64] | np.float64:
     """Texture value t(u, v) in [0, 1] by one of :data:`TEXTURE_METHODS`.
 
     Parameters

@@ -23,6 +23,7 @@ def normalize(v: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     return v / np.where(norm > 0, norm, 1.0)
 
 
-def dot(a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> npt.NDArray[np.float64] | np.float64:
+def dot(a: npt.NDArray[np.float64],
+        b: npt.NDArray[np.float64]) -> npt.NDArray[np.float64] | np.float64:
     """Row-wise dot product of (..., 3) arrays."""
     return np.einsum("...i,...i->...", a, b)

@@ -157,7 +157,8 @@ def new_figure(width_in: float = 7.0, height_in: float = 4.0, **kwargs: Any) -> 
     return fig
 
 
-def savefig(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 200, tight: bool = True, tag: ColourTag | None = None) -> None:
+def savefig(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 200, tight: bool = True,
+            tag: ColourTag | None = None) -> None:
     """Save ``fig`` to each path (.png or .pdf) deterministically and atomically, then close it.
 
     ``tight`` crops the file to its content (a small margin); pass ``False`` for layouts placed
@@ -252,7 +253,8 @@ def trim_to_content(img, margin):
     return out
 
 
-def save_plotter(plotter: pv.Plotter, path: str | os.PathLike[str], margin: int | None = None) -> None:
+def save_plotter(plotter: pv.Plotter, path: str | os.PathLike[str],
+                 margin: int | None = None) -> None:
     """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer),
     tagged sRGB: VTK's colours are sRGB values, written to the screen as they are. With
     ``margin`` (pixels), the screenshot is trimmed to its content and given that margin

@@ -221,7 +221,8 @@ def _png_colour_chunks(tag):
             + _png_chunk(b"iCCP", name + b"\0\0" + zlib.compress(profile, 9)))
 
 
-def write_png(path: str | os.PathLike[str], rgb01: npt.ArrayLike, bit_depth: int = 8, tag: ColourTag | None = None) -> None:
+def write_png(path: str | os.PathLike[str], rgb01: npt.ArrayLike, bit_depth: int = 8,
+              tag: ColourTag | None = None) -> None:
     """Write display RGB in [0, 1] as a PNG, 8 or 16 bits per channel, deterministically.
 
     Values are quantised to the nearest code ``round(v * (2^b - 1))`` (ties to even). Rows use
@@ -351,7 +352,8 @@ def _attribute_text(key, value):
         ) from error
 
 
-def write_exr_XYZ(path: str | os.PathLike[str], XYZ: npt.ArrayLike, attributes: Mapping[str, Any] | None = None) -> None:
+def write_exr_XYZ(path: str | os.PathLike[str], XYZ: npt.ArrayLike,
+                  attributes: Mapping[str, Any] | None = None) -> None:
     """Write a linear CIE XYZ image as a float32 OpenEXR file, deterministically.
 
     Channels ``X``, ``Y``, ``Z`` (FLOAT), ZIP compression, scanline image, ``chromaticities`` set
@@ -433,7 +435,8 @@ def tag_chromaticities(tag):
             *np.asarray(tag.whitepoint, np.float64).reshape(2).tolist())
 
 
-def write_exr_RGB(path: str | os.PathLike[str], RGB: npt.ArrayLike, tag: ColourTag, attributes: Mapping[str, Any] | None = None) -> None:
+def write_exr_RGB(path: str | os.PathLike[str], RGB: npt.ArrayLike, tag: ColourTag,
+                  attributes: Mapping[str, Any] | None = None) -> None:
     """Write display-referred linear RGB as a float32 OpenEXR file, deterministically.
 
     As :func:`write_exr_XYZ`, with channels ``R``, ``G``, ``B`` and ``chromaticities`` the
@@ -455,7 +458,8 @@ def write_exr_RGB(path: str | os.PathLike[str], RGB: npt.ArrayLike, tag: ColourT
     _write_exr(path, RGB, "RGB", tag_chromaticities(tag), attributes)
 
 
-def read_exr(path: str | os.PathLike[str], channels: str = "XYZ") -> tuple[npt.NDArray[np.float32], dict[str, Any]]:
+def read_exr(path: str | os.PathLike[str],
+             channels: str = "XYZ") -> tuple[npt.NDArray[np.float32], dict[str, Any]]:
     """Read an XYZ OpenEXR image written by :func:`write_exr_XYZ` (or any file with X, Y, Z;
     ``channels="RGB"``: R, G, B, as :func:`write_exr_RGB` writes them).
 

@@ -63,7 +63,9 @@ def describe_seconds(t):
             else f"{t:.0f} s")
 
 
-def size_problem(key: str, value: str, dims: Sequence[tuple[float, str]], memory: float | None = None, max_seconds: float = MAX_SECONDS, streamed: bool = False) -> str | None:
+def size_problem(key: str, value: str, dims: Sequence[tuple[float, str]],
+                 memory: float | None = None, max_seconds: float = MAX_SECONDS,
+                 streamed: bool = False) -> str | None:
     """One line if the arrays a size makes cannot fit or take too long, else None.
 
     Parameters

@@ -32,7 +32,8 @@ def package_data(*parts: str) -> Traversable:
     return files("reflectance").joinpath("data", *parts)
 
 
-def file_inside(value: str | os.PathLike[str], root: str | os.PathLike[str], where: str = "the project folder") -> str:
+def file_inside(value: str | os.PathLike[str], root: str | os.PathLike[str],
+                where: str = "the project folder") -> str:
     """``value`` (a relative path read from data) as a POSIX path, if it stays inside ``root``.
 
     ValueError otherwise (an absolute path, or one that leaves ``root`` through ``..`` or a

@@ -46,7 +46,8 @@ class Progress:
 
     WIDTH = 24  # characters of the bar
 
-    def __init__(self, total: int, label: str, stream: TextIO | None = None, enabled: bool = True, tty: bool | None = None) -> None:
+    def __init__(self, total: int, label: str, stream: TextIO | None = None, enabled: bool = True,
+                 tty: bool | None = None) -> None:
         self.total = max(int(total), 1)
         self.label = label
         self._stream = stream

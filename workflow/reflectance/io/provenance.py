@@ -153,7 +153,8 @@ def metadata_path(table: str | os.PathLike[str]) -> Path:
     return table.with_name(f"{table.stem}_metadata.yaml")
 
 
-def write_metadata(path: str | os.PathLike[str], document: Mapping[str, Any], tables: Iterable[str | os.PathLike[str]] = ()) -> None:
+def write_metadata(path: str | os.PathLike[str], document: Mapping[str, Any],
+                   tables: Iterable[str | os.PathLike[str]] = ()) -> None:
     """Write an audit table's metadata ``document`` (a mapping, in the order to be read) as YAML,
     atomically; with ``tables`` (paths), their SHA-256 under ``tables`` at the end.
 

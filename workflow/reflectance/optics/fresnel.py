@@ -122,7 +122,8 @@ def _safe_ratio(num, den, where_zero):
 
 # --- exact ----------------------------------------------------------------------------------------
 
-def fresnel_conductor(cos_theta: npt.ArrayLike, n: npt.ArrayLike, k: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def fresnel_conductor(cos_theta: npt.ArrayLike, n: npt.ArrayLike,
+                      k: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Exact unpolarised reflectance from air into a medium of complex index ``n + i k``.
 
     With ``eta = n + i k``, ``c = cos(theta_i)`` and ``w = eta cos(theta_t) = sqrt(eta^2 - sin^2
@@ -226,7 +227,8 @@ def _g_c_terms(c, n):
     return first, second, tir
 
 
-def fresnel_dielectric_CookTorrance1982(cos_theta: npt.ArrayLike, n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def fresnel_dielectric_CookTorrance1982(cos_theta: npt.ArrayLike,
+                                        n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Cook & Torrance's unpolarised Fresnel equation for ``k = 0``, as printed (with the 1/2).
 
         F = 1/2 (g - c)^2 / (g + c)^2 {1 + [c (g + c) - 1]^2 / [c (g - c) + 1]^2},
@@ -263,7 +265,8 @@ def fresnel_dielectric_CookTorrance1982(cos_theta: npt.ArrayLike, n: npt.ArrayLi
     return _out(np.where(tir, 1.0, F))
 
 
-def fresnel_Blinn1977(cos_theta: npt.ArrayLike, n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def fresnel_Blinn1977(cos_theta: npt.ArrayLike,
+                      n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's g, c form of the Fresnel equation exactly as printed: it lacks the factor 1/2.
 
         F = (g - c)^2 / (g + c)^2 [1 + (c (g + c) - 1)^2 / (c (g - c) + 1)^2],
@@ -347,7 +350,8 @@ def n_from_F0_CookTorrance1982(F0: npt.ArrayLike) -> npt.NDArray[np.float64] | n
 
 # --- Schlick 1994 and the F82-tint model -----------------------------------------------------
 
-def fresnel_Schlick1994(cos_theta: npt.ArrayLike, F0: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def fresnel_Schlick1994(cos_theta: npt.ArrayLike,
+                        F0: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Schlick's approximation ``F = F0 + (1 - F0) (1 - c)^5``.
 
     Exact at c = 1 (F0) and at c = 0 (1); in between an approximation.
@@ -380,7 +384,8 @@ def fresnel_Schlick1994(cos_theta: npt.ArrayLike, F0: npt.ArrayLike) -> npt.NDAr
     return _out(F0 + (1.0 - F0) * (1.0 - c) ** 5)
 
 
-def fresnel_F82(cos_theta: npt.ArrayLike, F0: npt.ArrayLike, F82: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def fresnel_F82(cos_theta: npt.ArrayLike, F0: npt.ArrayLike,
+                F82: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """The F82-tint model: Schlick plus a correction ``- b c (1 - c)^6`` that pins F at 1/7.
 
         F(c) = F_Schlick(c) - b c (1 - c)^6,
@@ -462,7 +467,9 @@ def _n_min_max_Gulbrandsen2014(r):
     return n_min, n_max
 
 
-def nk_from_reflectivity_Gulbrandsen2014(r: npt.ArrayLike, g: npt.ArrayLike) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
+def nk_from_reflectivity_Gulbrandsen2014(r: npt.ArrayLike,
+                                         g: npt.ArrayLike
+                                        ) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
     """Complex index ``(n, k)`` from reflectivity ``r`` (= F0) and edge tint ``g``::
 
         n = g n_min + (1 - g) n_max,   n_min = (1 - r) / (1 + r),
@@ -508,7 +515,9 @@ def nk_from_reflectivity_Gulbrandsen2014(r: npt.ArrayLike, g: npt.ArrayLike) -> 
     return _out(n), _out(k)
 
 
-def reflectivity_from_nk_Gulbrandsen2014(n: npt.ArrayLike, k: npt.ArrayLike) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
+def reflectivity_from_nk_Gulbrandsen2014(n: npt.ArrayLike,
+                                         k: npt.ArrayLike
+                                        ) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
     """Reflectivity ``r`` (= F0) and edge tint ``g`` of a complex index ``(n, k)``.
 
     The inverse of :func:`nk_from_reflectivity_Gulbrandsen2014`:
@@ -572,7 +581,8 @@ FRESNEL_METHODS = {
 """Fresnel methods of :func:`fresnel`, each ``f(cos_theta, n, k)``."""
 
 
-def fresnel(cos_theta: npt.ArrayLike, n: npt.ArrayLike, k: npt.ArrayLike, method: str = "exact") -> npt.NDArray[np.float64] | np.float64:
+def fresnel(cos_theta: npt.ArrayLike, n: npt.ArrayLike, k: npt.ArrayLike,
+            method: str = "exact") -> npt.NDArray[np.float64] | np.float64:
     """Reflectance of a material of index ``n + i k`` by one of :data:`FRESNEL_METHODS`.
 
     Parameters

@@ -105,7 +105,8 @@ def _check_convention(convention):
         )
 
 
-def _check_positive(name: str, value: npt.ArrayLike, allow_zero: bool = False) -> npt.NDArray[np.float64]:
+def _check_positive(name: str, value: npt.ArrayLike,
+                    allow_zero: bool = False) -> npt.NDArray[np.float64]:
     value = np.asarray(value, dtype=np.float64)
     # NaN compares False: NaN parameters propagate instead of raising.
     bad = (value < 0) if allow_zero else (value <= 0)
@@ -143,7 +144,8 @@ def _gaussian_of_angle(cos_alpha, k):
 
 # --- Blinn 1977: D1, D2, D3 -----------------------------------------------------------------------
 
-def distribution_Phong1975(cos_alpha: npt.ArrayLike, c1: npt.ArrayLike, convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_Phong1975(cos_alpha: npt.ArrayLike, c1: npt.ArrayLike,
+                           convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Phong's cosine power as a facet distribution: Blinn's D1 = cos^c1(alpha).
 
     Parameters
@@ -180,7 +182,9 @@ def distribution_Phong1975(cos_alpha: npt.ArrayLike, c1: npt.ArrayLike, conventi
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_TorranceSparrow1967(cos_alpha: npt.ArrayLike, c2: npt.ArrayLike, convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_TorranceSparrow1967(cos_alpha: npt.ArrayLike, c2: npt.ArrayLike,
+                                     convention: str = "paper"
+                                    ) -> npt.NDArray[np.float64] | np.float64:
     """Torrance & Sparrow's Gaussian in the facet angle, as Blinn writes it: D2 = exp(-(alpha c2)^2).
 
     Note that ``c2`` is an *inverse* width: large ``c2`` gives a narrow lobe (a shiny surface). Blinn
@@ -217,7 +221,9 @@ def distribution_TorranceSparrow1967(cos_alpha: npt.ArrayLike, c2: npt.ArrayLike
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_TrowbridgeReitz1975(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike, convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_TrowbridgeReitz1975(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike,
+                                     convention: str = "paper"
+                                    ) -> npt.NDArray[np.float64] | np.float64:
     """Trowbridge & Reitz's ellipsoid distribution in Blinn's normalisation, D3.
 
     ``D3 = (c3^2 / (cos^2 alpha (c3^2 - 1) + 1))^2``. Blinn multiplies Trowbridge & Reitz's
@@ -255,7 +261,8 @@ def distribution_TrowbridgeReitz1975(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike
     return _out(_facing(cos_alpha, D))
 
 
-def c3_texture_Blinn1977(t: npt.ArrayLike, c_min: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def c3_texture_Blinn1977(t: npt.ArrayLike,
+                         c_min: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Texture-modulated roughness: ``C3 = C_min + (1 - C_min) t(u, v)``.
 
     References
@@ -272,7 +279,9 @@ def c3_texture_Blinn1977(t: npt.ArrayLike, c_min: npt.ArrayLike) -> npt.NDArray[
     return _out(c_min + (1.0 - c_min) * t)  # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
 
 
-def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike, c_min: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike,
+                                                   c_min: npt.ArrayLike
+                                                  ) -> npt.NDArray[np.float64] | np.float64:
     """D3 for a roughness C3 varying over the surface, normalised by its minimum C_min.
 
     ``D3 = [C_min C3 / (cos^2 alpha (C3^2 - 1) + 1)]^2``, equal to
@@ -306,7 +315,8 @@ def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha: npt.ArrayLike, c3:
 
 # --- Cook & Torrance 1982 -------------------------------------------------------------------------
 
-def distribution_Beckmann1963(cos_alpha: npt.ArrayLike, m: npt.ArrayLike, convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_Beckmann1963(cos_alpha: npt.ArrayLike, m: npt.ArrayLike,
+                              convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Beckmann distribution, as Cook & Torrance print it or normalised.
 
     ``"paper"``: ``D = exp(-(tan alpha / m)^2) / (m^2 cos^4 alpha)`` (no 1/pi).
@@ -352,7 +362,10 @@ def distribution_Beckmann1963(cos_alpha: npt.ArrayLike, m: npt.ArrayLike, conven
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_Gaussian_CookTorrance1982(cos_alpha: npt.ArrayLike, m: npt.ArrayLike, c: npt.ArrayLike | None = None, convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_Gaussian_CookTorrance1982(cos_alpha: npt.ArrayLike, m: npt.ArrayLike,
+                                           c: npt.ArrayLike | None = None,
+                                           convention: str = "paper"
+                                          ) -> npt.NDArray[np.float64] | np.float64:
     """Cook & Torrance's Gaussian model ``D = c exp(-(alpha/m)^2)``.
 
     Parameters
@@ -536,7 +549,10 @@ def _method(method):
         ) from None
 
 
-def distribution_mixture(cos_alpha: npt.ArrayLike, lobes: Iterable[tuple[float, float | Mapping[str, Any]]], base: str = "Beckmann1963", convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
+def distribution_mixture(cos_alpha: npt.ArrayLike,
+                         lobes: Iterable[tuple[float, float | Mapping[str, Any]]],
+                         base: str = "Beckmann1963",
+                         convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Weighted sum of distributions of one kind: ``D = sum_j w_j D(m_j)``, ``sum_j w_j = 1``.
 
     Parameters
@@ -591,7 +607,8 @@ def distribution_mixture(cos_alpha: npt.ArrayLike, lobes: Iterable[tuple[float, 
 DISTRIBUTION_METHODS["mixture"] = distribution_mixture
 
 
-def distribution(cos_alpha: npt.ArrayLike, method: str = "Beckmann1963", **kwargs: Any) -> npt.NDArray[np.float64] | np.float64:
+def distribution(cos_alpha: npt.ArrayLike, method: str = "Beckmann1963",
+                 **kwargs: Any) -> npt.NDArray[np.float64] | np.float64:
     """Facet distribution D by one of :data:`DISTRIBUTION_METHODS`.
 
     Parameters

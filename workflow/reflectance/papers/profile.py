@@ -54,7 +54,8 @@ __all__ = [
 ]
 
 
-def gaussian_profile(n: int, correlation_length: float, rms_slope: float, seed: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def gaussian_profile(n: int, correlation_length: float, rms_slope: float,
+                     seed: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """A periodic random profile: Gaussian heights, autocorrelation ``~ exp(-(dx/l)^2)``.
 
     White noise is filtered by the square root of the power spectrum of ``exp(-(dx/l)^2)``, which is
@@ -153,7 +154,8 @@ def visible_fraction(h: npt.NDArray[np.float64], theta: float) -> npt.NDArray[np
     return np.where(drop > 0, np.clip((g0 - ahead) / np.where(drop > 0, drop, 1.0), 0, 1), 0.0)
 
 
-def masking_G1(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], theta: float) -> tuple[float, float]:
+def masking_G1(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64],
+               theta: float) -> tuple[float, float]:
     """Masking of the whole profile from ``theta``: visible over facing projected length.
 
     Returns
@@ -176,7 +178,9 @@ def masking_G1(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], theta: fl
     return seen / np.sum(proj), seen / (np.size(h) * np.cos(theta))
 
 
-def visible_fraction_by_slope(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], theta: float, edges: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.intp]]:
+def visible_fraction_by_slope(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], theta: float,
+                              edges: npt.ArrayLike
+                             ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.intp]]:
     """Projected-length weighted visible fraction of the facing facets in each slope bin.
 
     Parameters
@@ -212,7 +216,8 @@ def visible_fraction_by_slope(h: npt.NDArray[np.float64], p: npt.NDArray[np.floa
     return seen / np.where(total > 0, total, np.nan), np.bincount(b[inside], minlength=nb)
 
 
-def crossings(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], s: npt.ArrayLike, s0: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def crossings(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], s: npt.ArrayLike,
+              s0: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Points where the polyline ``(xs, hs)`` (unit x spacing) crosses each ray ``s = s0``.
 
     ``s`` is the value at the nodes of a quantity that is constant along the rays and linear in
@@ -238,7 +243,8 @@ def crossings(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], s: npt.A
     return np.where(ok, xs[:-1] + t, np.nan), np.where(ok, hs[:-1] + t * (hs[1:] - hs[:-1]), np.nan)
 
 
-def first_hit(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.NDArray[np.float64], theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def first_hit(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.NDArray[np.float64],
+              theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Where rays coming down from direction ``theta`` first meet the polyline ``(xs, hs)``.
 
     Each ray is the line through ``(x0, 0)`` along ``(sin theta, cos theta)``; travelling down it
@@ -262,7 +268,9 @@ def first_hit(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.
     return hx[np.arange(x0.size), k], hh[np.arange(x0.size), k]
 
 
-def first_blocker(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.NDArray[np.float64], h0: npt.NDArray[np.float64], theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+def first_blocker(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64],
+                  x0: npt.NDArray[np.float64], h0: npt.NDArray[np.float64],
+                  theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """First point of the polyline ``(xs, hs)`` on the ray from each ``(x0, h0)`` towards ``theta``.
 
     Returns
@@ -326,7 +334,8 @@ class WindowRays:
         return self.faces_view & np.isnan(self.masked_at[:, 0])
 
 
-def trace_window(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], window: Sequence[int], theta_light: float, theta_view: float, n_rays: int) -> WindowRays:
+def trace_window(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], window: Sequence[int],
+                 theta_light: float, theta_view: float, n_rays: int) -> WindowRays:
     """Follow ``n_rays`` light rays, evenly spaced across ``window``, to the profile and on.
 
     The rays enter through ``(x0, 0)`` for ``x0`` evenly spaced over ``window`` and travel away from

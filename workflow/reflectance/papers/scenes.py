@@ -101,8 +101,11 @@ def display_from_colour(colour: Mapping[str, Any], illuminant: bool = True) -> d
     return out
 
 
-def scene_document(camera: Mapping[str, Any], objects: Sequence[Mapping[str, Any]], lights: Sequence[Mapping[str, Any]], wavelengths: Mapping[str, Any], spectra_dir: str | None = None, observer: str | None = None,
-                   spectral: str | None = None, ambient: Mapping[str, Any] | None = None, display: Mapping[str, Any] | None = None) -> dict[str, Any]:
+def scene_document(camera: Mapping[str, Any], objects: Sequence[Mapping[str, Any]],
+                   lights: Sequence[Mapping[str, Any]], wavelengths: Mapping[str, Any],
+                   spectra_dir: str | None = None, observer: str | None = None,
+                   spectral: str | None = None, ambient: Mapping[str, Any] | None = None,
+                   display: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """A scene mapping (reflectance/data/scene.schema.yaml); keys left None take the defaults.
 
     Parameters
@@ -136,8 +139,11 @@ def panel_material(panel: Mapping[str, Any]) -> dict[str, Any]:
     return {**{k: v for k, v in panel.items() if k != "material"}, "name": panel["material"]}
 
 
-def vase_scene_CookTorrance1982(fig6: Mapping[str, Any], material: Mapping[str, Any], reference: str, wavelengths: Mapping[str, Any], colour: Mapping[str, Any], spectra_dir: str | None,
-                                image: Mapping[str, Any] | None = None, exposure: Mapping[str, Any] | None = None) -> dict[str, Any]:
+def vase_scene_CookTorrance1982(fig6: Mapping[str, Any], material: Mapping[str, Any],
+                                reference: str, wavelengths: Mapping[str, Any],
+                                colour: Mapping[str, Any], spectra_dir: str | None,
+                                image: Mapping[str, Any] | None = None,
+                                exposure: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """One vase alone as Cook & Torrance 1982 Fig. 6 renders it (Fig. 7: every vase).
 
     Parameters
@@ -169,7 +175,9 @@ def vase_scene_CookTorrance1982(fig6: Mapping[str, Any], material: Mapping[str, 
         display={**display_from_colour(colour), **(exposure or {})})
 
 
-def fig6_scene_CookTorrance1982(panel: str = "b", reading: str = "irradiance", config: dict[str, Any] | str | os.PathLike[str] | None = None, spectra_dir: str | None = None) -> dict[str, Any]:
+def fig6_scene_CookTorrance1982(panel: str = "b", reading: str = "irradiance",
+                                config: dict[str, Any] | str | os.PathLike[str] | None = None,
+                                spectra_dir: str | None = None) -> dict[str, Any]:
     """The scene of Cook & Torrance 1982 Fig. 6 ``panel`` from config.yaml.
 
     Parameters
@@ -203,7 +211,8 @@ def fig6_scene_CookTorrance1982(panel: str = "b", reading: str = "irradiance", c
                                        str(spectra_dir or spectra_default))
 
 
-def light_direction(position: npt.ArrayLike, look_at: npt.ArrayLike, up: npt.ArrayLike, angle_deg: float, azimuth_deg: float) -> npt.NDArray[np.float64]:
+def light_direction(position: npt.ArrayLike, look_at: npt.ArrayLike, up: npt.ArrayLike,
+                    angle_deg: float, azimuth_deg: float) -> npt.NDArray[np.float64]:
     """Unit vector toward a directional light at ``angle_deg`` from the direction to the viewer.
 
     ``L = cos(a) E + sin(a) (cos(b) X + sin(b) Y)`` with E the unit vector from ``look_at`` toward
@@ -238,7 +247,8 @@ def light_direction(position: npt.ArrayLike, look_at: npt.ArrayLike, up: npt.Arr
     return np.cos(a) * E + np.sin(a) * (np.cos(b) * X + np.sin(b) * Y)
 
 
-def materials_Blinn1977(p_s: float, p_d: float, c3: float, n: float, phong_specular: str = "as_printed") -> dict[str, Any]:
+def materials_Blinn1977(p_s: float, p_d: float, c3: float, n: float,
+                        phong_specular: str = "as_printed") -> dict[str, Any]:
     """Scene materials of Blinn's Phong and Torrance-Sparrow models at equal beta.
 
     Both have a flat diffuse albedo 1 (so ``d p_d`` is the diffuse intensity). The
@@ -347,7 +357,10 @@ def highlight_crossover_Blinn1977(first, second, bracket_deg=(90.0, 179.9)):
     return float(brentq(difference, lo, hi, xtol=1e-10))
 
 
-def blinn_scene_Blinn1977(fig7: Mapping[str, Any], material: Mapping[str, Any], light: dict[str, Any] | list[dict[str, Any]], wavelengths: Mapping[str, Any], camera: Mapping[str, Any] | None = None) -> dict[str, Any]:
+def blinn_scene_Blinn1977(fig7: Mapping[str, Any], material: Mapping[str, Any],
+                          light: dict[str, Any] | list[dict[str, Any]],
+                          wavelengths: Mapping[str, Any],
+                          camera: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """One render of Blinn 1977 Fig. 7's object (also Fig. 8 and the sweep).
 
     Parameters

@@ -159,7 +159,9 @@ def _unit(v, name):
     return v / norm
 
 
-def simulate_vgroove(L: npt.ArrayLike, E: npt.ArrayLike, N: npt.ArrayLike = (0.0, 0.0, 1.0), n_rays: int = 100_000, n_keep: int = 24, half_width: float = 1.0) -> VGrooveSimulation:
+def simulate_vgroove(L: npt.ArrayLike, E: npt.ArrayLike, N: npt.ArrayLike = (0.0, 0.0, 1.0),
+                     n_rays: int = 100_000, n_keep: int = 24,
+                     half_width: float = 1.0) -> VGrooveSimulation:
     """Trace a parallel beam from L through the V-groove whose facet normal is ``H = (L + E)/|L + E|``.
 
     Parameters

@@ -49,7 +49,8 @@ if TYPE_CHECKING:
 __all__ = ["vgroove_case", "GrooveAngles", "groove_angles_Blinn1977"]
 
 
-def vgroove_case(light: Mapping[str, Any], eye: Mapping[str, Any], n_rays: int = 100_000, n_keep: int = 24) -> tuple[VGrooveSimulation, dict[str, Any]]:
+def vgroove_case(light: Mapping[str, Any], eye: Mapping[str, Any], n_rays: int = 100_000,
+                 n_keep: int = 24) -> tuple[VGrooveSimulation, dict[str, Any]]:
     """One case of Blinn's Fig. 1: simulate the groove and evaluate the closed forms.
 
     Parameters
@@ -132,7 +133,8 @@ def _angle(u, v):
     return float(np.arctan2(abs(u[0] * v[1] - u[1] * v[0]), u @ v))
 
 
-def groove_angles_Blinn1977(simulation: VGrooveSimulation, blocked: str = "masking") -> GrooveAngles:
+def groove_angles_Blinn1977(simulation: VGrooveSimulation,
+                            blocked: str = "masking") -> GrooveAngles:
     """Measure Blinn's Fig. 4 angles a..f and m/l on a simulated groove.
 
     Parameters

@@ -270,7 +270,9 @@ class Camera:
         eye, d = self.view().rays(x * self.supersample, y * self.supersample)
         return eye[:, 0].copy(), np.ascontiguousarray(d.T)
 
-    def project(self, points: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    def project(self,
+                points: npt.ArrayLike
+               ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """Image coordinates (x, y) in final-image pixels and depth of world points (..., 3).
 
         Points behind the camera have no image: their x, y are NaN.

@@ -35,7 +35,8 @@ if TYPE_CHECKING:
 __all__ = ["common_exposure", "covered_rows", "image_grid", "part_pixels", "appearance"]
 
 
-def common_exposure(images: Sequence[npt.NDArray[np.float64]], space: str, illuminant: str, observer: str, wavelengths: npt.ArrayLike | None) -> float:
+def common_exposure(images: Sequence[npt.NDArray[np.float64]], space: str, illuminant: str,
+                    observer: str, wavelengths: npt.ArrayLike | None) -> float:
     """The Cook & Torrance 1982 exposure scale of several XYZ images taken as one scene."""
     # Cook & Torrance 1982: "all XYZ values in the scene are scaled equally"
     _, scale = expose_CookTorrance1982(np.stack(images), space, illuminant=illuminant,
@@ -51,8 +52,10 @@ def covered_rows(images: Sequence[npt.NDArray[np.float64]], margin: int = 4) -> 
     return slice(max(lit[0] - margin, 0), lit[-1] + margin + 1)
 
 
-def image_grid(cells: Sequence[tuple[int, int, npt.NDArray[Any], str]], n_rows: int, n_cols: int, title: str, headings: Sequence[tuple[int, int, str, dict[str, Any]]] = (), crop: slice = slice(None), head: float = 0.25, foot: float = 0.4,
-               top: float = 0.45, dpi: float = 100, label_size: float | None = None) -> Figure:
+def image_grid(cells: Sequence[tuple[int, int, npt.NDArray[Any], str]], n_rows: int, n_cols: int,
+               title: str, headings: Sequence[tuple[int, int, str, dict[str, Any]]] = (),
+               crop: slice = slice(None), head: float = 0.25, foot: float = 0.4, top: float = 0.45,
+               dpi: float = 100, label_size: float | None = None) -> Figure:
     """A figure of display images (encoded RGB) in a grid on a black ground.
 
     Parameters
@@ -99,7 +102,9 @@ def image_grid(cells: Sequence[tuple[int, int, npt.NDArray[Any], str]], n_rows: 
     return fig
 
 
-def part_pixels(samples: SurfaceSamples, part_codes: npt.ArrayLike, XYZ: npt.NDArray[np.float64], scale: float, space: str, gamut_clip_method: str, display: Mapping[str, Any]) -> Callable[[int], dict[str, Any]]:
+def part_pixels(samples: SurfaceSamples, part_codes: npt.ArrayLike, XYZ: npt.NDArray[np.float64],
+                scale: float, space: str, gamut_clip_method: str,
+                display: Mapping[str, Any]) -> Callable[[int], dict[str, Any]]:
     """Per named part: the pixels it covers and the colour they show.
 
     Parameters
@@ -147,7 +152,8 @@ def part_pixels(samples: SurfaceSamples, part_codes: npt.ArrayLike, XYZ: npt.NDA
     return stats
 
 
-def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], space: str = "sRGB", highlight_percentile: float = 99.5) -> dict[str, float]:
+def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], space: str = "sRGB",
+               highlight_percentile: float = 99.5) -> dict[str, float]:
     """How an object reads in its display image: visibility, lightness range, highlight colour.
 
     The object is the pixels with scene ``Y > 0`` less a one-pixel rim (partly covered, antialiased

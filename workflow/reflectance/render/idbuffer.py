@@ -147,7 +147,8 @@ def renderer_for(scene, renderer=None):
     return IdRenderer(scene)
 
 
-def id_buffer(meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]], camera: Camera) -> npt.NDArray[np.int32]:
+def id_buffer(meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+              camera: Camera) -> npt.NDArray[np.int32]:
     """The ID buffer of a camera's fine grid: (rows, cols) int32, 0 background, k triangle k - 1.
 
     Parameters

@@ -34,8 +34,9 @@ COMPONENTS = ("ambient", "diffuse", "specular", "emission")
 """Parts of the reflected XYZ a render can return separately (table shading)."""
 
 
-def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_], spectral: str | None = None, components: bool = False, fresnel_table: Callable[..., Any] | None = None,
-                  threads: int | None = 1) -> Any:
+def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
+                  spectral: str | None = None, components: bool = False,
+                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
     """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``);
     ``threads`` as for :func:`reflectance.render.shading.shade`."""
     spectral = scene.spectral if spectral is None else spectral
@@ -133,7 +134,8 @@ class Integrator:
         The pixels :meth:`refine` sampled again (None before).
     """
 
-    def __init__(self, scene: Scene, spectral: str | None, components: bool = False, fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> None:
+    def __init__(self, scene: Scene, spectral: str | None, components: bool = False,
+                 fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> None:
         self.scene, self.spectral, self.components = scene, spectral, components
         self.fresnel_table, self.threads = fresnel_table, threads
         camera = scene.camera
@@ -163,7 +165,8 @@ class Integrator:
         self.timings["shadows"] += traced["shadows"]
         self.timings["shading"] += time.perf_counter() - since
 
-    def add_band(self, rows: tuple[int, int], samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_], traced: Any) -> None:
+    def add_band(self, rows: tuple[int, int], samples: SurfaceSamples,
+                 shadowed: npt.NDArray[np.bool_], traced: Any) -> None:
         """Shade the band ``rows`` ``(start, stop)`` of the fine grid (its trace: ``samples``,
         ``shadowed``, ``traced`` its timings) and box-filter it into its pixel rows."""
         t0 = time.perf_counter()

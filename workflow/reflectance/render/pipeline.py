@@ -106,8 +106,10 @@ class RenderResult:
     display: tuple | None = field(default=None, repr=False)
 
 
-def render(scene: Scene, spectral: str | None = None, components: bool = False, fresnel_table: Callable[..., Any] | None = None, progress: Callable[[str], None] | None = None,
-           keep_trace: bool = False, threads: int | None = None) -> RenderResult:
+def render(scene: Scene, spectral: str | None = None, components: bool = False,
+           fresnel_table: Callable[..., Any] | None = None,
+           progress: Callable[[str], None] | None = None, keep_trace: bool = False,
+           threads: int | None = None) -> RenderResult:
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -190,7 +192,8 @@ def _shown(scene):
     return d, scene.observer, scene.wavelengths, white
 
 
-def display_linear_RGB(result: RenderResult, exposure: float | None = None, encoded: bool = False) -> tuple[npt.NDArray[np.float64], float]:
+def display_linear_RGB(result: RenderResult, exposure: float | None = None,
+                       encoded: bool = False) -> tuple[npt.NDArray[np.float64], float]:
     """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
     exposed, highlights compressed, gamut clipped; the light the display emits, before the
     transfer function (:func:`reflectance.colour.exposure.image_display_RGB`, in bands of rows).
@@ -210,7 +213,8 @@ def automatic_exposure(result: RenderResult) -> float:
     return float(exposure_scale(result.XYZ, *_shown(result.scene)))
 
 
-def display_image(result: RenderResult, exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
+def display_image(result: RenderResult,
+                  exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display (as
     :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
     :func:`display_linear_RGB`)."""
@@ -236,7 +240,10 @@ def _software_versions():
     return out
 
 
-def write_render(result: RenderResult, exr_path: str | os.PathLike[str] | None = None, png_path: str | os.PathLike[str] | None = None, rgb_exr_path: str | os.PathLike[str] | None = None, exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
+def write_render(result: RenderResult, exr_path: str | os.PathLike[str] | None = None,
+                 png_path: str | os.PathLike[str] | None = None,
+                 rgb_exr_path: str | os.PathLike[str] | None = None,
+                 exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """Write the linear XYZ image (EXR), the display PNG and the display-referred linear RGB EXR,
     each if its path is given (at least one), atomically: all files or none.
 
@@ -280,7 +287,9 @@ def write_render(result: RenderResult, exr_path: str | os.PathLike[str] | None =
     return rgb, scale
 
 
-def write_linear_RGB_from_XYZ(exr_path: str | os.PathLike[str], scene_path: str | os.PathLike[str], rgb_exr_path: str | os.PathLike[str], spectra_dir: SpectraDirs = None) -> None:
+def write_linear_RGB_from_XYZ(exr_path: str | os.PathLike[str], scene_path: str | os.PathLike[str],
+                              rgb_exr_path: str | os.PathLike[str],
+                              spectra_dir: SpectraDirs = None) -> None:
     """Write the display-referred linear RGB EXR of a rendered XYZ EXR (:func:`write_render`'s)
     and its scene file, exposed as the render was (the header's ``display_exposure_scale``).
 
@@ -304,8 +313,11 @@ def write_linear_RGB_from_XYZ(exr_path: str | os.PathLike[str], scene_path: str 
                  exposure=float(header["display_exposure_scale"]))
 
 
-def render_to_files(scene: Scene, scene_path: str | os.PathLike[str], exr_path: str | os.PathLike[str], png_path: str | os.PathLike[str] | None = None, components: bool = False,
-                    rgb_exr_path: str | os.PathLike[str] | None = None, keep_trace: bool = False) -> RenderResult:
+def render_to_files(scene: Scene, scene_path: str | os.PathLike[str],
+                    exr_path: str | os.PathLike[str],
+                    png_path: str | os.PathLike[str] | None = None, components: bool = False,
+                    rgb_exr_path: str | os.PathLike[str] | None = None,
+                    keep_trace: bool = False) -> RenderResult:
     """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
     the result.
 

@@ -30,7 +30,8 @@ if TYPE_CHECKING:
 __all__ = ["render_spectral_and_rgb", "display_exposure"]
 
 
-def render_spectral_and_rgb(scene: Scene, space: str = "sRGB", keep_trace: bool = False) -> tuple[RenderResult, RenderResult]:
+def render_spectral_and_rgb(scene: Scene, space: str = "sRGB",
+                            keep_trace: bool = False) -> tuple[RenderResult, RenderResult]:
     """(spectral XYZ image, RGB-renderer XYZ image) of ``scene``, one visibility pass for both.
 
     Parameters

@@ -74,14 +74,16 @@ class SurfaceSamples:
     depth: np.ndarray
     pixel: np.ndarray
     stats: dict = field(default_factory=dict)
-    scene: Primitives | None = field(default=None, repr=False, compare=False)  # the flat scene, reused
+    # the flat scene, reused
+    scene: Primitives | None = field(default=None, repr=False, compare=False)
 
     def image(self, values: npt.NDArray[Any]) -> npt.NDArray[Any]:
         """Reshape per-sample values (N, ...) to the fine grid (rows, cols, ...)."""
         values = np.asarray(values)
         return values.reshape(tuple(self.shape) + values.shape[1:])
 
-    def to_pixels(self, values: npt.NDArray[Any], threads: int | None = 1) -> npt.NDArray[np.float64]:
+    def to_pixels(self, values: npt.NDArray[Any],
+                  threads: int | None = 1) -> npt.NDArray[np.float64]:
         """Average per-sample values over each pixel's samples (box filter): (H, W, ...); with
         several ``threads`` (:mod:`reflectance.render.parallel`), bands of pixel rows at once
         (each pixel's mean as in one call)."""

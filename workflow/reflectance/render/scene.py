@@ -540,7 +540,9 @@ def size_problems(doc, memory=None):
     return [p for p in problems if p is not None]
 
 
-def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>", base_dir: str | os.PathLike[str] = ".", spectra_dir: SpectraDirs = None) -> Scene:
+def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>",
+                    base_dir: str | os.PathLike[str] = ".",
+                    spectra_dir: SpectraDirs = None) -> Scene:
     """A :class:`Scene` from a scene mapping (as a scene file holds it).
 
     Parameters
@@ -649,14 +651,17 @@ def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>", base_d
     composed = check.run(["objects"], _compose, objects, doc["objects"])
     check.raise_if_any()
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
-                 display=display, wavelengths=grid, observer=observer,  # type: ignore[arg-type]  # checked
+                 display=display, wavelengths=grid,
+                 observer=observer,  # type: ignore[arg-type]  # checked above
                  spectral=doc["spectral"],
                  table_size=doc["fresnel_table_size"], shadows=doc["shadows"], mesh=composed,
                  source=source, document=doc, refinement=refinement)
 
 
-def load_scene(path: str | os.PathLike[str], spectra_dir: SpectraDirs = None, width: int | None = None, height: int | None = None, supersample: int | None = None,
-               spectral: str | None = None, wavelengths: Mapping[str, float] | None = None) -> Scene:
+def load_scene(path: str | os.PathLike[str], spectra_dir: SpectraDirs = None,
+               width: int | None = None, height: int | None = None, supersample: int | None = None,
+               spectral: str | None = None,
+               wavelengths: Mapping[str, float] | None = None) -> Scene:
     """Read a scene file, validate it and resolve it (see :func:`scene_from_dict`).
 
     Parameters
@@ -693,8 +698,11 @@ def load_scene(path: str | os.PathLike[str], spectra_dir: SpectraDirs = None, wi
                            wavelengths=wavelengths)
 
 
-def scene_from_text(text: str | bytes, source: str, base_dir: str | os.PathLike[str], spectra_dir: SpectraDirs = None, width: int | None = None, height: int | None = None,
-                    supersample: int | None = None, spectral: str | None = None, wavelengths: Mapping[str, float] | None = None) -> Scene:
+def scene_from_text(text: str | bytes, source: str, base_dir: str | os.PathLike[str],
+                    spectra_dir: SpectraDirs = None, width: int | None = None,
+                    height: int | None = None, supersample: int | None = None,
+                    spectral: str | None = None,
+                    wavelengths: Mapping[str, float] | None = None) -> Scene:
     """A scene from the bytes of a scene file (``reflectance render -`` reads them from standard
     input), named ``source`` in messages, its relative paths taken from ``base_dir``; the other
     parameters as for :func:`load_scene`."""

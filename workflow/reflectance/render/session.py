@@ -51,7 +51,8 @@ class RenderSession:
     and awaited (its error raised) when the session closes, after the window.
     """
 
-    def __init__(self, scene: Scene, threads: int = 1, progress: Callable[[str], None] | None = None, keep_trace: bool = False) -> None:
+    def __init__(self, scene: Scene, threads: int = 1,
+                 progress: Callable[[str], None] | None = None, keep_trace: bool = False) -> None:
         self.scene, self.threads, self.keep_trace = scene, threads, keep_trace
         self._progress = progress
         self._stack = contextlib.ExitStack()
@@ -91,7 +92,9 @@ class RenderSession:
         return trace_once(self.scene, self.keep_trace, rows, self.tools, self._at(where),
                           self.threads)
 
-    def trace_selected(self, scene: Scene, rows: tuple[int, int], select: Any, map_size: int | None, where: str = "") -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
+    def trace_selected(self, scene: Scene, rows: tuple[int, int], select: Any, map_size: int | None,
+                       where: str = ""
+                      ) -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
         """``(samples, shadowed, timings)`` of the samples ``select`` of the band ``rows`` of
         ``scene`` (the session's scene on a finer grid: the adaptive refinement's), with the
         light maps' side ``map_size`` (:func:`reflectance.render.tracing.trace`)."""

@@ -285,8 +285,8 @@ def white_card_luminance(lights: Iterable[Light]) -> float:
     return float(sum(light.intensity * light.solid_angle for light in lights)) / np.pi
 
 
-def emission_XYZ(dominant_wavelength_nm: float, luminance: float, purity: float = 1.0, white: str = "D65",
-                 observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
+def emission_XYZ(dominant_wavelength_nm: float, luminance: float, purity: float = 1.0,
+                 white: str = "D65", observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """XYZ of luminance Y on the line from a white to the spectral locus at a dominant wavelength.
 
     The chromaticity is ``xy_w + purity (xy_lambda - xy_w)`` with ``xy_lambda`` the spectral locus
@@ -413,7 +413,8 @@ def _cosines(N, V, L):
 # The per-angle table of the integrated Fresnel term
 # --------------------------------------------------------------------------------------------
 
-def fresnel_XYZ_table(material: ShadingMaterial, W: npt.NDArray[np.float64], size: int = 1025) -> npt.NDArray[np.float64]:
+def fresnel_XYZ_table(material: ShadingMaterial, W: npt.NDArray[np.float64],
+                      size: int = 1025) -> npt.NDArray[np.float64]:
     """``XYZ_F(c) = sum_lambda F(lambda, c) W(lambda)`` on ``size`` equally spaced c in [0, 1].
 
     Parameters
@@ -439,7 +440,8 @@ def fresnel_XYZ_table(material: ShadingMaterial, W: npt.NDArray[np.float64], siz
     return np.concatenate(rows)
 
 
-def fresnel_XYZ_table_rgb(material: ShadingMaterial, W: npt.NDArray[np.float64], size: int = 1025, space: str = "sRGB") -> npt.NDArray[np.float64]:
+def fresnel_XYZ_table_rgb(material: ShadingMaterial, W: npt.NDArray[np.float64], size: int = 1025,
+                          space: str = "sRGB") -> npt.NDArray[np.float64]:
     """:func:`fresnel_XYZ_table` as a three-channel RGB renderer makes it: F0 per display channel
     and Schlick 1994 per channel (:func:`reflectance.colour.display.fresnel_XYZ_rgb`) from the
     material's exact F0 under the light ``W``; same arguments and result."""
@@ -475,9 +477,12 @@ def _light_terms(light, position, shadowed):
     return L, energy
 
 
-def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike, material: ShadingMaterial, lights: Sequence[Light] = (), shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
-          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT, spectral: str = "table", table_size: int = 1025,
-          components: bool = False, fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
+def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
+          material: ShadingMaterial, lights: Sequence[Light] = (),
+          shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
+          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
+          spectral: str = "table", table_size: int = 1025, components: bool = False,
+          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
     """XYZ reflected (and emitted) toward the viewer by surface samples of one material.
 
     ``I_r = I_ia R_a + sum_l I_il (N.L_l) d omega_il R_l(lambda)`` (Cook & Torrance 1982) with

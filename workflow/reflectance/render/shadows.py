@@ -166,7 +166,10 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
         blocked[r[hit]] = True
 
 
-def shadow_masks(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]], lights: Sequence[DirectionalLight | PointLight | Mapping[str, Any]], map_size: int | None = None, renderer: IdRenderer | None = None, threads: int | None = 1) -> npt.NDArray[np.bool_]:
+def shadow_masks(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+                 lights: Sequence[DirectionalLight | PointLight | Mapping[str, Any]],
+                 map_size: int | None = None, renderer: IdRenderer | None = None,
+                 threads: int | None = 1) -> npt.NDArray[np.bool_]:
     """True where a surface sample does not see a light (cast shadow or facing away).
 
     Samples whose shading normal faces away from the light (N.L <= 0) are in shadow without a
@@ -279,6 +282,8 @@ def shadow_masks(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[p
     return shadow
 
 
-def shadow_mask(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]], light: DirectionalLight | PointLight | Mapping[str, Any], map_size: int | None = None) -> npt.NDArray[np.bool_]:
+def shadow_mask(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+                light: DirectionalLight | PointLight | Mapping[str, Any],
+                map_size: int | None = None) -> npt.NDArray[np.bool_]:
     """:func:`shadow_masks` for one light: (N,) bool, True where the light is not seen."""
     return shadow_masks(samples, meshes, [light], map_size)[0]

@@ -36,7 +36,8 @@ __all__ = ["tiles", "light_map_size", "trace", "trace_key", "trace_once"]
 # as this module's names (which tests patch)
 
 
-def tiles(camera: Camera, single: int | None = None, tile: int | None = None) -> list[tuple[int, int]]:
+def tiles(camera: Camera, single: int | None = None,
+          tile: int | None = None) -> list[tuple[int, int]]:
     """Bands ``(start, stop)`` of rows of the camera's fine grid that
     :func:`reflectance.render.pipeline.render` traces one at a time: the whole grid if it has at
     most ``single`` samples (default :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES`), else
@@ -68,8 +69,11 @@ def _silent(phase):
     pass
 
 
-def trace(scene: Scene, rows: tuple[int, int] | None = None, primitives: Any = None, progress: Callable[[str], None] | None = None, select: Any = None, map_size: int | None = None,
-          renderer: IdRenderer | None = None, threads: int | None = 1) -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
+def trace(scene: Scene, rows: tuple[int, int] | None = None, primitives: Any = None,
+          progress: Callable[[str], None] | None = None, select: Any = None,
+          map_size: int | None = None, renderer: IdRenderer | None = None,
+          threads: int | None = 1
+         ) -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
     (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
@@ -118,7 +122,10 @@ def trace_key(scene: Scene, rows: tuple[int, int] | None = None) -> str:
     return digest.hexdigest()
 
 
-def trace_once(scene: Scene, keep: bool = True, rows: tuple[int, int] | None = None, tools: Callable[[], tuple[Any, IdRenderer]] | None = None, progress: Callable[[str], None] | None = None, threads: int | None = 1) -> tuple[Any, ...]:
+def trace_once(scene: Scene, keep: bool = True, rows: tuple[int, int] | None = None,
+               tools: Callable[[], tuple[Any, IdRenderer]] | None = None,
+               progress: Callable[[str], None] | None = None,
+               threads: int | None = 1) -> tuple[Any, ...]:
     """:func:`trace` of ``scene`` (the band ``rows``; None: the whole grid), or, with ``keep``,
     the one the process's trace memo (:data:`reflectance.io.cache.TRACES`) keeps under its
     :func:`trace_key`, for scenes that differ only in what the trace does not look at (a new
