@@ -104,7 +104,7 @@ AUDIT_METHODS = {
 #: about 1) and well above float noise (about 1e-14), so an exact zero prints as 0.0000.
 AUDIT_TABLE_COLUMNS = (
     Column("material", "", "the material's name (a file: its stem)"),
-    Column("kind", "", "nk (measured n, k) or reflectance_k0 (a reflectance: k = 0, n from F0)"),
+    Column("kind", "", "measured (n, k) or derived (a reflectance: k = 0, n from F0)"),
     Column("illuminant", "", "the light: a colour-science name or the SPD file given"),
     Column("observer", "", "the colour-matching functions (colour-science's name)"),
     Column("method", "", "the shortcut (exact: the reference)"),
@@ -483,7 +483,7 @@ def audit_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np
     xy = XYZ_to_xy(XYZ)
     wl, purity = dominant_wavelength(XYZ, white, observer=observer)
     n = len(methods) * angles.size
-    kind = "nk" if material.kind == "measured" else "reflectance_k0"
+    kind = material.kind  # the one vocabulary of a material's kind: measured or derived
     flat = lambda a: np.asarray(a, dtype=np.float64).reshape(n)  # noqa: E731
     return {
         "material": [material.name] * n,
@@ -572,7 +572,7 @@ def audit_metadata(table: Mapping[str, Any], settings: Mapping[str, Any], materi
         "reflectance": version("reflectance"),
         "packages": {name: version(name) for name in ("numpy", "colour-science")},
         "input": {"material": material.name,
-                  "kind": "nk" if material.kind == "measured" else "reflectance_k0",
+                  "kind": material.kind,
                   "file": None if source is None else str(source),
                   "sha256": None if source is None else sha256_file(source)},
         "illuminant": illuminant,
