@@ -143,6 +143,10 @@ def test_fig5_6_numbers(tmp, fig):
             assert c[key].to_numpy() == pytest.approx(values, rel=2e-5)
             assert row[f"{key}_max"] == pytest.approx(values.max(), rel=1e-5)
             assert row[f"{key}_max_deg"] == pytest.approx(np.degrees(tr[np.argmax(values)]), abs=1e-3)
+        # the marked corners: where min(1, G_b, G_c), written out above, changes term
+        term = np.argmin(np.stack([np.ones_like(NE), 2 * NH * NE / EH, 2 * NH * NL / EH]), axis=0)
+        corners = np.degrees(tr[np.flatnonzero(np.diff(term)) + 1])
+        assert [float(a) for a in str(row.G_corners_deg).split()] == pytest.approx(corners, abs=0.06)
         for reading in ("matched", "as_printed"):
             assert row[f"peak_ratio_ts_to_{reading}"] == pytest.approx(
                 hand["torrance_sparrow"].max() / hand[f"phong_{reading}"].max(), rel=1e-5)

@@ -615,31 +615,29 @@ def _command(*args):
 
 
 def test_ctrl_c_during_render_is_one_line_and_exit_130(workdir, root):
-    """SIGINT while the renderer works (after its first band's progress line): one line, the
-    shell's status for it (128 + 2), no traceback, no file."""
+    """SIGINT while the renderer works (after its first band's progress, on a terminal): one
+    line, the shell's status for it (128 + 2), no traceback, no file."""
     import signal
     import time
 
+    from terminal import read_rest, stderr_of
+
     (workdir / "busy.yaml").write_text(BUSY_SCENE)
     before = listing(workdir)
-    proc = subprocess.Popen(_command("render", "busy.yaml", "-o", "busy.exr", "--png", "busy.png",
-                                     "--spectra-dir", str(root / "spectra")),
-                            cwd=workdir, stderr=subprocess.PIPE, text=True,
-                            env=dict(os.environ, PYTHONPATH=str(root / "workflow")),
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    lines = []
-    for line in proc.stderr:  # progress: the render has begun
-        lines.append(line)
-        if "visibility" in line:
-            break
+    proc, _ = stderr_of(_command("render", "busy.yaml", "-o", "busy.exr", "--png", "busy.png",
+                                 "--spectra-dir", str(root / "spectra")), True,
+                        until=lambda text: "visibility" in text,  # the render has begun
+                        cwd=workdir, env=dict(os.environ, PYTHONPATH=str(root / "workflow")),
+                        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     time.sleep(0.5)
     proc.send_signal(signal.SIGINT)
-    rest = proc.stderr.read()
-    proc.wait(timeout=120)
+    rest = read_rest(proc)
     assert proc.returncode == 130, rest
     assert "Traceback" not in rest and "KeyboardInterrupt" not in rest
-    said = [line for line in rest.splitlines() if line.startswith("reflectance: ")]
+    # its own line, after the bar's (a redraw is "\r"; the terminal ends a line with "\r\n")
+    said = [line for line in rest.split("\r\n") if line.startswith("reflectance: ")]
     assert said == ["reflectance: render: interrupted; no file written"], rest
+    assert rest.endswith("\r\nreflectance: render: interrupted; no file written\r\n"), rest
     assert listing(workdir) == before
 
 

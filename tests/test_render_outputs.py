@@ -1,5 +1,6 @@
 """`reflectance render` and `bench` outputs: PNG alone, --exposure, the linear RGB EXR, tagged
-PNGs, and progress on standard error (plain lines when not a terminal, nothing with --quiet)."""
+PNGs, and progress on standard error (a tqdm bar on a terminal; nothing on a file or a pipe, nor
+with --quiet)."""
 
 import io
 import re
@@ -40,23 +41,32 @@ def render(root, tmp_path):
     return run
 
 
-def test_progress_plain_lines_terminal_bar_and_silence():
-    log = io.StringIO()
-    p = Progress(3, "job", stream=log, tty=False)
-    p.update(0, "a"), p.update(2, "b"), p.close()
-    assert log.getvalue().splitlines() == ["job: [0/3] a", "job: [2/3] b", "job: [3/3] done"]
-    term = io.StringIO()
-    p = Progress(4, "job", stream=term, tty=True)
+class Terminal(io.StringIO):
+    """A stream that says it is a terminal (as a user's standard error)."""
+
+    def isatty(self):
+        return True
+
+
+def test_progress_bar_on_a_terminal_only():
+    """tqdm's bar, phase as its description and the time left, on a terminal; nothing on a file
+    (a log, a pipe) nor when disabled (--quiet)."""
+    term = Terminal()
+    p = Progress(4, "job", stream=term)
     p.update(1, "a long phase name"), p.update(2, "b"), p.close()
     text = term.getvalue()
-    assert text.count("\r") == 3 and text.endswith("\n") and text.count("\n") == 1
-    assert "[" + "#" * 6 + "." * 18 + "] 1/4 a long phase name" in text
-    # a shorter line blanks what is left of the longer one before it
-    assert re.search(r"2/4 b {10,}\r", text)
-    quiet = io.StringIO()
-    p = Progress(2, "job", stream=quiet, enabled=False)
+    assert text.endswith("\n") and text.count("\n") == 1  # one line, redrawn in place
+    assert "job: a long phase name:  25%|" in text and "| 1/4 [" in text
+    assert re.search(r"job: done: 100%\|.*\| 4/4 \[\d\d:\d\d<\d\d:\d\d", text), text
+    for stream, options in ((io.StringIO(), {}), (Terminal(), {"enabled": False}),
+                            (Terminal(), {"tty": False})):
+        p = Progress(2, "job", stream=stream, **options)
+        p.update(1, "x"), p.close()
+        assert stream.getvalue() == "" and not p.enabled
+    forced = io.StringIO()
+    p = Progress(2, "job", stream=forced, tty=True)
     p.update(1, "x"), p.close()
-    assert quiet.getvalue() == ""
+    assert p.enabled and "job: done: 100%|" in forced.getvalue()
 
 
 def test_a_worker_main_answers_run_worker(tmp_path, monkeypatch):
@@ -88,16 +98,72 @@ def test_a_worker_main_answers_run_worker(tmp_path, monkeypatch):
         run_worker("toy_worker", {"size": 3, "name": "x", "colour": 1}, failure="toy failed")
 
 
-def test_render_png_alone_reports_each_phase_on_stderr(render, tmp_path, capsys):
+def test_render_png_alone_prints_nothing_on_a_pipe(render, tmp_path, capsys):
     assert render("--png", tmp_path / "a.png") == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png"]
-    out, err = capsys.readouterr()
-    assert out == ""
-    lines = err.splitlines()
-    for k, phase in enumerate(["scene", "visibility", "shadows", "shading", "writing"]):
-        assert f"reflectance render: [{k}/5] {phase}" in lines
-    assert "reflectance render: [5/5] done" in lines and "\r" not in err
+    assert capsys.readouterr() == ("", "")  # (pytest's capture is not a terminal)
     assert b"sRGB" in chunks(tmp_path / "a.png")  # the scene's display space is sRGB
+
+
+#: `reflectance render` in a process of its own, its image in bands of 4 pixel rows (so that the
+#: bar has several steps to estimate the time left from)
+BANDED_RENDER = ("import sys\n"
+                 "import reflectance.render.tracing as tracing\n"
+                 "tracing.SINGLE_TILE_SAMPLES, tracing.TILE_SAMPLES = 0, 64 * 2 * 2 * 4\n"
+                 "from reflectance.cli import main\n"
+                 "sys.exit(main(['render', *sys.argv[1:]]))\n")
+
+
+def banded_render(root, tmp_path, terminal, *options, scene=None):
+    import os
+    import sys
+
+    from terminal import stderr_of
+
+    scene = scene or root / "workflow" / "scenes" / "example_spheres.yaml"
+    return stderr_of([sys.executable, "-c", BANDED_RENDER, str(scene),
+                      "--width", "64", "--height", "48", "--spectra-dir", str(root / "spectra"),
+                      *map(str, options)], terminal, cwd=tmp_path,
+                     env=dict(os.environ, PYTHONPATH=str(root / "workflow")))
+
+
+def test_render_on_a_terminal_shows_a_bar_with_the_time_left(root, tmp_path):
+    """On a terminal: tqdm's bar of the samples (12288: 64 x 48 pixels of 2 x 2), each band's
+    phase as its description, the time left once a band is done (elapsed<left), one line
+    redrawn in place, then the summary."""
+    proc, text = banded_render(root, tmp_path, True, "--png", tmp_path / "a.png")
+    assert proc.returncode == 0, text
+    frames = re.split(r"[\r\n]+", text.strip())
+    middle = [f for f in frames if re.search(r": +([1-9]|[1-9]\d)%\|", f)]  # 1 % to 99 %
+    assert middle, text
+    assert any(re.search(r"\| [\d.]+k/12\.3k \[\d\d:\d\d<\d\d:\d\d, [\d.]+[kM]? samples/s\]$", f)
+               for f in middle), text
+    assert any(f.startswith("reflectance render: rows 24-28: shadows: ") for f in frames), text
+    assert re.search(r"reflectance render: done: 100%\|.*\| 12\.3k/12\.3k ", frames[-2]), text
+    assert frames[-1].startswith(f"{tmp_path / 'a.png'}: 64 x 48 pixels"), text
+    assert text.count("\n") == 2  # the bar's line and the summary's
+    proc, text = banded_render(root, tmp_path, True, "--png", tmp_path / "b.png", "--quiet")
+    assert (proc.returncode, text) == (0, "")
+
+
+def test_render_on_a_pipe_prints_nothing_but_errors(root, tmp_path):
+    """Standard error to a pipe (a Snakemake log, CI): no bar, no phases, no summary; a failure
+    is its one line, on a pipe and on a terminal (after the bar's line)."""
+    proc, text = banded_render(root, tmp_path, False, "--png", tmp_path / "a.png")
+    assert (proc.returncode, text) == (0, ""), text
+    assert (tmp_path / "a.png").is_file()
+    # a material no spectra folder has: refused when the scene is read, the bar begun
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(X_SCENE.replace("{model: Lambert, albedo: 0.5}", "{name: Unobtainium, m: 0.3}"))
+    proc, text = banded_render(root, tmp_path, False, "--png", tmp_path / "c.png", scene=bad)
+    assert proc.returncode == 1 and len(text.splitlines()) == 1, text
+    assert text.startswith("reflectance: ") and "Unobtainium" in text, text
+    proc, text = banded_render(root, tmp_path, True, "--png", tmp_path / "c.png", scene=bad)
+    lines = text.replace("\r\n", "\n").rstrip("\n").split("\n")  # (a redraw is "\r")
+    assert proc.returncode == 1 and len(lines) == 2, text
+    assert lines[0].split("\r")[-1].startswith("reflectance render: failed: "), text
+    assert lines[1].startswith("reflectance: ") and "Unobtainium" in lines[1], text
+    assert not (tmp_path / "c.png").exists()
 
 
 def test_render_quiet_prints_nothing(render, tmp_path, capsys):
@@ -153,19 +219,21 @@ def test_bad_exposure_is_refused(render, tmp_path, exposure):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_bench_reports_each_size_and_phase(root, capsys):
-    # one size (each runs in its own process, ~15 s); the sizes' count is the bar's total
+def test_bench_reports_each_size_and_phase(root, monkeypatch, capsys):
+    # one size (each runs in its own process, ~15 s); its pixels are the bar's total
+    term = Terminal()
+    monkeypatch.setattr("sys.stderr", term)
     assert main(["bench", "--sizes", "8", "--runs", "2", "--brute-force-runs", "0",
                  "--grids", "--spectra-dir", str(root / "spectra")]) == 0
-    out, err = capsys.readouterr()
+    out = capsys.readouterr().out
     assert "size" in out.splitlines()[1]  # the report itself, on stdout
-    lines = err.splitlines()
-    where = "reflectance bench: [0/1] size 8 (1/1)"
-    assert lines[0] == where
+    frames = re.split(r"[\r\n]+", term.getvalue().strip())
+    where = "reflectance bench: size 8 (1/1)"
+    assert any(f.startswith(f"{where}:   0%|") for f in frames), frames
     for phase in ("scene", "run 1/2: visibility", "run 1/2: shadows", "run 1/2: shading",
                   "run 2/2: shading"):
-        assert f"{where}: {phase}" in lines
-    assert lines[-1] == "reflectance bench: [1/1] done"
+        assert any(f.startswith(f"{where}: {phase}:   0%|") for f in frames), phase
+    assert re.match(r"reflectance bench: done: 100%\|.*\| 64\.0/64\.0 \[", frames[-1]), frames
 
 
 #: a scene for the bench commands below (the bench reads and checks it before its sizes run)
@@ -175,21 +243,32 @@ X_SCENE = ("camera: {position: [0, -5, 0], look_at: [0, 0, 0], fov_deg: 30, widt
            "lights: [{type: directional, direction: [0, -1, 1]}]\n")
 
 
-def test_bench_quiet_prints_no_progress(monkeypatch, capsys, tmp_path):
+def test_bench_progress_on_a_terminal_only(monkeypatch, capsys, tmp_path):
     import reflectance.bench.run as bench
 
     monkeypatch.chdir(tmp_path)
     (tmp_path / "x.yaml").write_text(X_SCENE)
 
     def fake_run_bench(*args, progress=None, **kwargs):
-        progress.update(0, "size 8 (1/1)")
+        progress.update(0, "size 8 (1/2)")
+        progress.update(64, "size 16 (2/2)")
         progress.close()
         return []
     monkeypatch.setattr(bench, "run_bench", fake_run_bench)
-    assert main(["bench", "--sizes", "8", "--scene", "x.yaml", "--quiet"]) == 0
+    assert main(["bench", "--sizes", "8", "16", "--scene", "x.yaml", "--quiet"]) == 0
     assert capsys.readouterr().err == ""
-    assert main(["bench", "--sizes", "8", "--scene", "x.yaml"]) == 0
-    assert "reflectance bench: [0/1] size 8 (1/1)" in capsys.readouterr().err
+    assert main(["bench", "--sizes", "8", "16", "--scene", "x.yaml"]) == 0
+    assert capsys.readouterr().err == ""  # not a terminal
+    term = Terminal()
+    for quiet in (["--quiet"], []):
+        with monkeypatch.context() as patch:
+            patch.setattr("sys.stderr", term)
+            assert main(["bench", "--sizes", "8", "16", "--scene", "x.yaml", *quiet]) == 0
+        if quiet:
+            assert term.getvalue() == ""
+    # the bar counts the sizes' pixels (8 x 8 + 16 x 16), the size under way its description
+    assert "reflectance bench: size 16 (2/2):  20%|" in term.getvalue()
+    assert re.search(r"reflectance bench: done: 100%\|.*\| 320/320 \[", term.getvalue())
 
 
 def test_bench_command_defaults_are_the_librarys(monkeypatch, tmp_path):

@@ -57,6 +57,26 @@ def test_one_window_for_every_band_and_refinement_band(hard, monkeypatch, window
     assert len(windows) == 1 and windows[0].closed
 
 
+def test_the_tally_counts_every_sample_traced_and_shaded(hard, monkeypatch):
+    """render's tally: (done, total) samples, the first pass's in its bands, then the adaptive
+    refinement's added when its pixels are picked; at the end done = total = the samples spent
+    (its stats' samples per pixel times the pixels)."""
+    scene = hard
+    monkeypatch.setattr(tracing, "SINGLE_TILE_SAMPLES", 0)
+    monkeypatch.setattr(tracing, "TILE_SAMPLES", 32 * 2 * 2 * 8)  # bands of 8 pixel rows
+    counts = []
+    result = render(scene, tally=lambda done, total: counts.append((done, total)), threads=1)
+    first = 32 * 32 * 2 * 2
+    band = 32 * 8 * 2 * 2
+    assert counts[:5] == [(0, first), (band, first), (2 * band, first), (3 * band, first),
+                          (first, first)]
+    refined = round(result.stats["refined"] * 32 * 32)
+    assert refined > 0 and counts[5] == (first, first + refined * 4 * 4)
+    done, total = zip(*counts)
+    assert list(done) == sorted(done) and counts[-1] == (total[-1], total[-1])
+    assert total[-1] == round(result.stats["samples_per_pixel"] * 32 * 32)
+
+
 def test_a_kept_trace_opens_no_window(hard, windows):
     scene = dataclasses.replace(hard, refinement=dataclasses.replace(hard.refinement,
                                                                     enabled=False))

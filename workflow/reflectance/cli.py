@@ -521,8 +521,9 @@ def _add_render(sub):
                     "header), a display PNG (Cook & Torrance exposure, gamut clipping; tagged with "
                     "its colour space) and a display-referred linear RGB OpenEXR, any of them (at "
                     "least one). A bad scene is reported, by file and key, before anything is "
-                    "rendered or written. Progress goes to standard error (a bar on a terminal, "
-                    "one line per phase otherwise).")
+                    "rendered or written. On a terminal, progress goes to standard error (a "
+                    "bar of the samples traced and shaded, with the time left, then a summary "
+                    "line); written to a file or a pipe, only errors and warnings are.")
     p.add_argument("scene", metavar="SCENE.yaml", help="scene file (- reads it from standard "
                                                        "input; its relative paths from here)")
     p.add_argument("-o", "--output", metavar="OUT.exr", help="linear XYZ image")
@@ -548,7 +549,8 @@ def _add_render(sub):
                    help="override the scene's wavelength integration (default: the scene's, "
                         "table)")
     _spectra_dir_option(p, "the scene's spectra_dir and the bundled spectra")
-    p.add_argument("--quiet", action="store_true", help="print nothing (no progress either)")
+    p.add_argument("--quiet", action="store_true",
+                   help="no progress nor summary, even on a terminal (errors and warnings only)")
     p.set_defaults(run=_run_render)
 
 
@@ -588,50 +590,48 @@ def _run_render(args):
     for option, path, _ in outputs:
         _writable(option, path)
     spectra_dirs = _spectra_dirs(args)
-    progress = Progress(5, "reflectance render", enabled=not args.quiet)
-    phases = ["scene", "visibility", "shadows", "shading", "writing"]
-    # a band's or the refinement's phase is named "rows a-b: shading" and so on
-    step = lambda phase: progress.update(  # noqa: E731
-        phases.index(phase.rsplit(": ", 1)[-1]), phase)
-    try:
-        step("scene")
-        options = dict(spectra_dir=spectra_dirs, width=args.width, height=args.height,
-                       supersample=args.supersample, spectral=args.spectral)
-        if args.scene == "-":
-            from reflectance.io.yamlfile import MAX_BYTES
+    # the bar counts the samples traced and shaded (render's tally), the phase its description
+    progress = Progress(None, "reflectance render", enabled=not args.quiet, unit=" samples",
+                        unit_scale=True)
+    step = lambda phase: progress.update(message=phase)  # noqa: E731
+    tally = lambda done, total: progress.update(done, total=total)  # noqa: E731
+    with progress:  # closed before any failure's line: "failed", or "interrupted" by Ctrl-C
+        try:
+            step("scene")
+            options = dict(spectra_dir=spectra_dirs, width=args.width, height=args.height,
+                           supersample=args.supersample, spectral=args.spectral)
+            if args.scene == "-":
+                from reflectance.io.yamlfile import MAX_BYTES
 
-            # one byte past the bound is enough for its one-line refusal
-            scene = scene_from_text(sys.stdin.buffer.read(MAX_BYTES + 1), "<standard input>",
-                                    Path.cwd(),
-                                    **options)
-        else:
-            scene = load_scene(args.scene, **options)
-        result = render(scene, progress=step)
-    except ValueError as err:
-        progress.close("failed", done=0)
-        raise SystemExit(f"reflectance: {err}") from None
-    step("writing")
-    named = ", ".join(f"{option} {path}" for option, path, _ in outputs)
-    exposure = args.exposure
-    if args.exposure_stops is not None:
-        automatic = automatic_exposure(result)
-        if not (math.isfinite(automatic) and automatic > 0):
-            progress.close("failed", done=4)
-            raise SystemExit(f"reflectance: --exposure-stops: the scene's automatic exposure is "
-                             f"{automatic:g} (an empty image?): give --exposure FACTOR instead")
-        exposure = automatic * 2.0 ** args.exposure_stops
-    try:
-        write_render(result, args.output, args.png, args.rgb_exr, exposure=exposure)
-    except (OSError, ValueError) as err:  # all files or none
-        progress.close("failed", done=4)
-        where = f" {err.filename}" if getattr(err, "filename", None) else ""
-        reason = getattr(err, "strerror", None) or " ".join(str(err).split())
-        raise SystemExit(f"reflectance: cannot write{where} ({named}): {reason}; "
-                         f"nothing written") from None
+                # one byte past the bound is enough for its one-line refusal
+                scene = scene_from_text(sys.stdin.buffer.read(MAX_BYTES + 1),
+                                        "<standard input>", Path.cwd(), **options)
+            else:
+                scene = load_scene(args.scene, **options)
+            result = render(scene, progress=step, tally=tally)
+        except ValueError as err:
+            raise SystemExit(f"reflectance: {err}") from None
+        step("writing")
+        named = ", ".join(f"{option} {path}" for option, path, _ in outputs)
+        exposure = args.exposure
+        if args.exposure_stops is not None:
+            automatic = automatic_exposure(result)
+            if not (math.isfinite(automatic) and automatic > 0):
+                raise SystemExit(f"reflectance: --exposure-stops: the scene's automatic "
+                                 f"exposure is {automatic:g} (an empty image?): give --exposure "
+                                 f"FACTOR instead")
+            exposure = automatic * 2.0 ** args.exposure_stops
+        try:
+            write_render(result, args.output, args.png, args.rgb_exr, exposure=exposure)
+        except (OSError, ValueError) as err:  # all files or none
+            where = f" {err.filename}" if getattr(err, "filename", None) else ""
+            reason = getattr(err, "strerror", None) or " ".join(str(err).split())
+            raise SystemExit(f"reflectance: cannot write{where} ({named}): {reason}; "
+                             f"nothing written") from None
     progress.close()
     for warning in render_warnings(result):
         print(f"reflectance: warning: {warning}", file=sys.stderr)
-    if not args.quiet:
+    if progress.enabled:  # the summary, where the bar was: on a terminal, without --quiet
         t = result.timings
         print(f"{', '.join(path for _, path, _ in outputs)}: {scene.camera.width} x "
               f"{scene.camera.height} pixels, "
@@ -707,8 +707,8 @@ def _add_bench(sub):
     _spectra_dir_option(p, "the scene's spectra_dir and the bundled spectra")
     p.add_argument("--json", action="store_true", help="print the raw results as JSON")
     p.add_argument("--quiet", action="store_true",
-                   help="no progress on standard error (by default: each size and phase, a bar "
-                        "on a terminal, one line each otherwise)")
+                   help="no progress on standard error (by default, on a terminal only: a bar "
+                        "of the sizes' pixels with the time left, the size and phase under way)")
     p.set_defaults(run=_run_bench)
 
 
@@ -748,14 +748,16 @@ def _run_bench(args):
 
             load_scene(args.scene, spectra_dir=spectra_dirs)
         scene = args.scene or _default_bench_scene()
-        progress = Progress(len(args.sizes), "reflectance bench", enabled=not args.quiet)
-        results = run_bench(scene, args.sizes, args.supersample, args.runs,
-                            args.brute_force_runs, args.grids, args.grid_size, spectra_dirs,
-                            args.reference_supersample, progress=progress,
-                            adaptive={"scene": None, "on": True, "off": False}[args.adaptive],
-                            crosscheck_size=args.crosscheck_size,
-                            crosscheck_spp=args.crosscheck_spp,
-                            crosscheck_supersamples=args.crosscheck_supersamples)
+        progress = Progress(sum(size * size for size in args.sizes), "reflectance bench",
+                            enabled=not args.quiet, unit=" px", unit_scale=True)
+        with progress:  # closed before any failure's line
+            results = run_bench(scene, args.sizes, args.supersample, args.runs,
+                                args.brute_force_runs, args.grids, args.grid_size, spectra_dirs,
+                                args.reference_supersample, progress=progress,
+                                adaptive={"scene": None, "on": True, "off": False}[args.adaptive],
+                                crosscheck_size=args.crosscheck_size,
+                                crosscheck_spp=args.crosscheck_spp,
+                                crosscheck_supersamples=args.crosscheck_supersamples)
     except (ValueError, RuntimeError) as err:
         raise SystemExit(f"reflectance: {err}") from None
     print(json.dumps(results, indent=1) if args.json else format_report(results))
@@ -1054,8 +1056,9 @@ def _run_audit_database(args):
         W, observer = audit_weights(database_grid(params), params["illuminant"],
                                     params["observer"])
         entries = select_entries(params, args.database or None)
-        progress = Progress(1, "reflectance audit --database", enabled=not args.quiet)
-        table, counts = audit_datasets(entries, params, W, observer, progress=progress)
+        with Progress(1, "reflectance audit --database", enabled=not args.quiet,
+                      unit=" blocks") as progress:  # (closed before any failure's line)
+            table, counts = audit_datasets(entries, params, W, observer, progress=progress)
         text, counts_text = format_tables(table, counts, params)
         if args.output is not None:
             from reflectance.io.atomic import write_text

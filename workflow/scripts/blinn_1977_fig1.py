@@ -47,10 +47,11 @@ with script_log(snakemake) as log:
             "printed_G_closed": printed_closed,
         })
         log.info("case %s: simulated %.6f, closed form %.6f", name, r["G_simulated"], r["G_closed"])
-    # one entry per colour drawn: the masked part of the facet orange, the shadowed part black
+    # one entry per colour drawn: the masked part of the facet orange, the shadowed part purple
+    # (not black: the groove's outline is black)
     handles = [axes[0].plot([], [], color=COLOURS.get(k, k), lw=w)[0] for k, w in
                (("light", 1), ("eye", 1), ("masked", 1), ("other", 1), ("facet", 4), ("masked", 4),
-                ("k", 4))]
+                ("shadowed", 4))]
     fig.legend(handles, ["incident ray (along L')", "reflected ray, escapes (along E')",
                          "reflected ray, masked", "ray landing on the other side",
                          "facet with normal H", "part of the facet masked",

@@ -5,13 +5,15 @@ printed), Torrance-Sparrow on the same scale, and the three as Cartesian curves 
 
 import numpy as np
 import pandas as pd
+from matplotlib.lines import Line2D
 from matplotlib.ticker import MaxNLocator
 
 from reflectance.io.captions import write_caption_values
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.papers.polar import intensity_in_plane_of_incidence
+from reflectance.optics.shadowing import vcavity_terms_Blinn1977
+from reflectance.papers.polar import intensity_in_plane_of_incidence, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -81,7 +83,7 @@ with script_log(snakemake) as log:
                     edge = -values[key][-1]
                     ax.plot([edge], [0.0], "o", color=colour, ms=4, clip_on=False, zorder=4)
                     ax.annotate(f"{values[key][-1]:.2f} at the horizon", xy=(edge, 0.0),
-                                xytext=(edge, 0.32 * R), ha="left", va="bottom", color=colour,
+                                xytext=(edge, 0.6 * R), ha="left", va="bottom", color=colour,
                                 fontsize=TEXT_SIZE["annotation"],
                                 arrowprops=dict(arrowstyle="-", color=colour, lw=0.8))
             ax.annotate("", xy=0.03 * light, xytext=light,  # the incoming ray
@@ -98,13 +100,23 @@ with script_log(snakemake) as log:
             label, colour, style = CURVES[key]
             cart.plot(tr_deg, values[key], color=colour, ls=style, lw=1.6 if style == "-" else 1.2,
                       label=label)
+        # Blinn 1977, G = min(1, G_b, G_c): where the term in force changes, the Torrance-Sparrow
+        # curve has a corner (marked, so that it does not read as an artefact)
+        L, E, N = plane_of_incidence_vectors(theta_i, theta_r)
+        H = (L + E) / np.linalg.norm(L + E, axis=-1, keepdims=True)
+        G_b, G_c = vcavity_terms_Blinn1977(L @ N, E @ N, H @ N, np.sum(E * H, axis=-1))
+        term = np.argmin(np.stack([np.ones_like(G_b), G_b, G_c]), axis=0)
+        corners = np.flatnonzero(np.diff(term)) + 1
+        cart.plot(tr_deg[corners], values["torrance_sparrow"][corners], "v", color="0.2", ms=4,
+                  zorder=4)
+        row["G_corners_deg"] = " ".join(f"{a:.1f}" for a in tr_deg[corners])
         cart.axvline(np.degrees(theta_i), color="0.5", lw=0.8, ls=(0, (3, 2)))
-        right = np.degrees(theta_i) > 45  # the word beside the line, inside the axes
-        cart.text(np.degrees(theta_i), 1.0, "mirror " if right else " mirror",
-                  transform=cart.get_xaxis_transform(), fontsize=TEXT_SIZE["annotation"],
-                  color="0.35", va="top", ha="right" if right else "left")
-        cart.set(xlim=(-90, 90), ylim=(0, 1.05 * R), xticks=np.arange(-90, 91, 45),
-                 xlabel="\u03b8 from N (\u00b0; + mirror side)", ylabel="intensity i")
+        # the word beside the line, inside the axes (the axis runs from +90 on the left)
+        cart.text(np.degrees(theta_i), 1.0, " mirror", transform=cart.get_xaxis_transform(),
+                  fontsize=TEXT_SIZE["annotation"], color="0.35", va="top", ha="left")
+        # the mirror side on the left, as in the polar plots (Blinn's light from the right)
+        cart.set(xlim=(90, -90), ylim=(0, 1.05 * R), xticks=np.arange(-90, 91, 45),
+                 xlabel="\u03b8 from N (\u00b0; mirror side +, left)", ylabel="intensity i")
         cart.grid(True)
         cart.set_title("the same, i(\u03b8)", pad=2)
         row_axes[0].text(0.0, 1.36, f"{s['label']}: p_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
@@ -121,7 +133,10 @@ with script_log(snakemake) as log:
     fig.suptitle(f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\nlight at "
                  f"{np.degrees(theta_i):g}\u00b0 from the normal, from the right", y=0.998, va="top",
                  linespacing=1.3)
-    fig.legend(*axes[0, 2].get_legend_handles_labels(), loc="upper center", ncol=2,
+    handles, labels = axes[0, 2].get_legend_handles_labels()
+    handles.append(Line2D([], [], marker="v", ls="none", color="0.2", ms=4))
+    labels.append("where G = min(1, G_b, G_c) changes term")
+    fig.legend(handles, labels, loc="upper center", ncol=2,
                bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
     fig.subplots_adjust(left=0.01, right=0.99, top=1 - 1.5 / fig.get_figheight(), bottom=0.08,
                         wspace=0.3, hspace=0.75)

@@ -56,7 +56,8 @@ def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
     return the list of results.
 
     ``scene`` is a scene file's path or a scene document (dict). ``progress``, if given, is a
-    :class:`reflectance.io.progress.Progress` told each size and each phase of it. ``adaptive``
+    :class:`reflectance.io.progress.Progress` of ``sum(size**2)`` units told the pixels of the
+    sizes measured and each size and phase under way. ``adaptive``
     (True, False; None: the scene's) switches the adaptive supersampling. With Mitsuba
     installed and ``crosscheck_size`` among ``sizes``, that size's result gets the path-tracer
     cross-check under ``"crosscheck"`` (Mitsuba's reference at ``crosscheck_spp`` samples per
@@ -67,11 +68,13 @@ def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
 
     spectra_dir = folder_list(spectra_dir)  # (JSON for the workers)
     results = []
+    done = 0  # pixels of the sizes measured (the work the bar counts: a size's costs scale so)
     for i, size in enumerate(sizes):
         where = f"size {size} ({i + 1}/{len(sizes)})"
         if progress is not None:
-            progress.update(i, where)
-        tell = None if progress is None else (lambda phase: progress.update(i, f"{where}: {phase}"))
+            progress.update(done, where)
+        tell = None if progress is None else (lambda phase: progress.update(
+            message=f"{where}: {phase}"))
         job = {"scene": scene if isinstance(scene, dict) else str(scene),
                "size": int(size), "supersample": supersample,
                "runs": runs, "brute_force_runs": brute_force_runs,
@@ -84,7 +87,7 @@ def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
                 progress=tell))
         except RuntimeError:
             if progress is not None:
-                progress.close(f"size {size} failed", done=i)
+                progress.close(f"size {size} failed", complete=False)
             raise
         if size == crosscheck_size:  # the path-tracer cross-check (reflectance.bench.crosscheck)
             from reflectance.bench.crosscheck import mitsuba_available, run_crosscheck
@@ -95,6 +98,7 @@ def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
                     reference_supersample or REFERENCE_SUPERSAMPLE,
                     crosscheck_spp, spectra_dir=spectra_dir, progress=tell,
                     our_supersamples=crosscheck_supersamples)
+        done += size * size
     if progress is not None:
         progress.close()
     return results

@@ -1,97 +1,120 @@
-"""Progress of long work on standard error: a bar on a terminal, plain lines in a log.
+"""Progress of long work on standard error: a tqdm bar with the time left, on a terminal only.
 
-``reflectance render`` and ``reflectance bench`` report each phase (and each image size) through a
-:class:`Progress`. On a terminal one line is redrawn in place (carriage return); written to a file
-or a pipe (a Snakemake log, CI) each step is one line of its own, so a log reads as a history.
-Disabled (``--quiet``), it writes nothing. Standard output is never touched: it carries the
-commands' CSV and JSON.
+``reflectance render``, ``reflectance bench`` and ``reflectance audit --database`` count their
+work through a :class:`Progress` (render: the samples traced and shaded; bench: the pixels of the
+sizes; the audit: its blocks of datasets), the phase under way as the bar's description. The bar
+is tqdm's (https://tqdm.github.io), whose estimate of the time left is the work still to do at
+the recent rate. It is drawn only when the stream is a terminal: written to a file or a pipe (a
+Snakemake log, CI) nothing is written, nor with ``--quiet``. Standard output is never touched: it
+carries the commands' CSV and JSON.
 """
 
 from __future__ import annotations
 
 import sys
 from collections.abc import Callable, Sequence
+from types import TracebackType
 from typing import Any, TextIO
 
 __all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker", "worker_main"]
 
 
 class Progress:
-    """Steps of one long task, reported on a stream.
+    """The work of one long task, a bar on a terminal (:class:`tqdm.tqdm`).
 
     Parameters
     ----------
-    total : int
-        Number of steps of the task (the bar is full at ``total``).
+    total : int or None
+        Units of work of the task (None: not known yet; :meth:`update` may set or grow it).
     label : str
         Who is working, printed first (e.g. ``"reflectance render"``).
     stream : file, optional
-        Where to write (default: standard error, looked up when writing).
+        Where to draw (default: standard error when the task starts).
     enabled : bool
-        False writes nothing (``--quiet``).
+        False draws nothing (``--quiet``).
     tty : bool, optional
-        Force the terminal (True) or the plain-line (False) form; default: ``stream.isatty()``.
+        Force the bar (True) or nothing (False); default: a bar if ``stream.isatty()`` (tqdm's
+        ``disable=None``).
+    unit : str
+        The units' name, after their count (``" samples"``).
+    unit_scale : bool
+        Counts with SI prefixes (``1.05M``).
 
     Examples
     --------
     >>> import io
-    >>> log = io.StringIO()
+    >>> log = io.StringIO()  # not a terminal: nothing is written
     >>> progress = Progress(2, "demo", stream=log)
-    >>> progress.update(0, "visibility"); progress.update(1, "shading"); progress.close()
-    >>> print(log.getvalue(), end="")
-    demo: [0/2] visibility
-    demo: [1/2] shading
-    demo: [2/2] done
+    >>> progress.update(1, "shading"); progress.close()
+    >>> log.getvalue()
+    ''
     """
 
-    WIDTH = 24  # characters of the bar
+    def __init__(self, total: int | None, label: str, stream: TextIO | None = None, enabled: bool = True, tty: bool | None = None, unit: str = " steps",
+                 unit_scale: bool = False) -> None:
+        from tqdm import tqdm
 
-    def __init__(self, total: int, label: str, stream: TextIO | None = None, enabled: bool = True,
-                 tty: bool | None = None) -> None:
-        self.total = max(int(total), 1)
         self.label = label
-        self._stream = stream
-        self.enabled = bool(enabled)
-        self._tty = tty
-        self._drawn = 0  # length of the line drawn on a terminal (0: none)
+        disable = True if not enabled or tty is False else (False if tty else None)
+        # mininterval and the rest left to tqdm (and to its TQDM_* environment variables); no
+        # prefixes while the total is unknown (a bare 0, not "0.00")
+        self._unit_scale = unit_scale
+        self._bar = tqdm(total=total, desc=label, file=sys.stderr if stream is None else stream,
+                         disable=disable, unit=unit, unit_scale=unit_scale and total is not None,
+                         dynamic_ncols=True, leave=True)
+        self.enabled = not self._bar.disable  # (tqdm disables a bar when it closes)
+        self._closed = False
+
+    def __enter__(self) -> Progress:
+        return self
+
+    def __exit__(self, kind: type[BaseException] | None, value: BaseException | None, traceback: TracebackType | None) -> None:
+        """Closes the bar if the task did not: stopped (``"interrupted"`` by Ctrl-C, else
+        ``"failed"``), before the caller says why on a line of its own."""
+        if not self._closed:
+            if kind is None:
+                self.close()
+            else:
+                self.close("interrupted" if issubclass(kind, KeyboardInterrupt) else "failed",
+                           complete=False)
 
     @property
-    def stream(self) -> TextIO:
-        return sys.stderr if self._stream is None else self._stream
+    def total(self) -> int | None:
+        return self._bar.total
 
-    @property
-    def tty(self) -> bool:
-        if self._tty is not None:
-            return self._tty
-        isatty = getattr(self.stream, "isatty", None)
-        return bool(isatty and isatty())
+    @total.setter
+    def total(self, value: int | None) -> None:
+        self._bar.total, self._bar.unit_scale = value, self._unit_scale
 
-    def update(self, done: int, message: str) -> None:
-        """Report that ``done`` of the steps are finished and ``message`` is under way."""
-        if not self.enabled:
+    def update(self, done: int | None = None, message: str | None = None, total: int | None = None) -> None:
+        """``done`` units of the work are finished (None: as before), ``message`` is under way
+        (None: as before) and the work has ``total`` units (None: as before)."""
+        bar = self._bar
+        if bar.disable:
             return
-        done = min(max(int(done), 0), self.total)
-        if self.tty:
-            filled = round(self.WIDTH * done / self.total)
-            line = (f"{self.label} [{'#' * filled}{'.' * (self.WIDTH - filled)}] "
-                    f"{done}/{self.total} {message}")
-            pad = max(self._drawn - len(line), 0)
-            self.stream.write("\r" + line + " " * pad)
-            self._drawn = len(line)
-        else:
-            self.stream.write(f"{self.label}: [{done}/{self.total}] {message}\n")
-        self.stream.flush()
+        if total is not None:
+            bar.total, bar.unit_scale = total, self._unit_scale
+        if message is not None:
+            bar.set_description_str(f"{self.label}: {message}", refresh=False)
+        drawn = bar.last_print_t
+        if done is not None and done > bar.n:
+            bar.update(done - bar.n)  # (tqdm's rate, and so its estimate, follow the counts)
+        elif done is not None:
+            bar.n = done
+        if bar.last_print_t == drawn:  # not drawn by update (at most every mininterval)
+            bar.refresh()
 
-    def close(self, message: str = "done", done: int | None = None) -> None:
-        """The task is finished (or stopped at step ``done``, for a failure): a last step and
-        the end of the terminal's line."""
-        if not self.enabled:
+    def close(self, message: str = "done", complete: bool = True) -> None:
+        """The task is finished (``complete``: all its units) or stopped (a failure: the count
+        as it is); the bar's last state stays on its line, the line ended. Once only."""
+        if self._closed:
             return
-        self.update(self.total if done is None else done, message)
-        if self.tty:
-            self.stream.write("\n")
-            self.stream.flush()
-            self._drawn = 0
+        self._closed = True
+        bar = self._bar
+        if complete and bar.total is not None:
+            bar.update(bar.total - bar.n)
+        bar.set_description_str(f"{self.label}: {message}", refresh=False)
+        bar.close()
 
 
 #: a worker's progress lines on its standard output start so (:func:`run_worker`)

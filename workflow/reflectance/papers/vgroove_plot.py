@@ -30,7 +30,7 @@ __all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle"
 
 #: Colours (Okabe-Ito, readable by colour-blind readers) of the groove drawings.
 COLOURS = {"light": "#e69f00", "eye": "#0072b2", "masked": "#d55e00", "facet": "#009e73",
-           "other": "0.75", "normal": "0.2"}
+           "other": "0.75", "normal": "0.2", "shadowed": "#cc79a7"}
 
 
 def draw_arrow(ax: Axes, start: npt.ArrayLike, vector: npt.ArrayLike, label: str | None = None,
@@ -98,7 +98,7 @@ def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_
                          closed=True, facecolor="0.93", edgecolor="none", zorder=0))
     ax.plot(*np.array(ground).T, color="k", lw=1.4, zorder=2)
     ax.plot(*np.array([A, B]).T, color=COLOURS["facet"], lw=4, solid_capstyle="butt", zorder=3)
-    for length, point, color in ((sim.m_shadowing, sim.shadowing_point, "k"),
+    for length, point, color in ((sim.m_shadowing, sim.shadowing_point, COLOURS["shadowed"]),
                                  (sim.m_masking, sim.masking_point, COLOURS["masked"])):
         if length > 0:  # the blocked part of the facet, from B
             ax.plot(*np.array([B, point]).T, color=color, lw=4, solid_capstyle="butt", zorder=4)
@@ -122,7 +122,7 @@ def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_
         # ... and beside its tip, on the side away from the steeper of L', E' (its shaft runs there)
         steep = max((sim.L2, sim.E2), key=lambda v: v[1])
         draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--",
-                   label_offset=(-0.09 * np.sign(steep[0] or 1.0), -0.07))
+                   label_offset=(-0.17 * np.sign(steep[0] or 1.0), -0.16))
         draw_arrow(ax, M, 0.55 * h * sim.H2, "H", "k")
         draw_arrow(ax, M, 0.8 * h * sim.L2, "L'", COLOURS["light"])
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])

@@ -201,7 +201,9 @@ class Integrator:
         fine = dataclasses.replace(scene, camera=dataclasses.replace(scene.camera, supersample=N))
         flat = self.image.reshape(-1, 3)
         map_size = light_map_size(scene.camera)  # the whole first pass's light maps
-        for rows, select, pixels in refinement_bands(self.refined, N):
+        bands = refinement_bands(self.refined, N)
+        session.plan(sum(len(pixels) for _, _, pixels in bands) * N * N)
+        for rows, select, pixels in bands:
             where = f"refining rows {rows[0] // N}-{rows[1] // N}: "
             samples, shadowed, traced = session.trace_selected(fine, rows, select, map_size,
                                                                where)
@@ -212,6 +214,7 @@ class Integrator:
                 self.parts[name].reshape(-1, 3)[pixels] = value.reshape(
                     len(pixels), N * N, 3).mean(axis=1)
             self._n_refined += len(pixels)
+            session.finished(len(pixels) * N * N)
             self._spent(traced, t1)
         self.timings["refinement"] = time.perf_counter() - t0
 

@@ -109,7 +109,8 @@ class RenderResult:
 def render(scene: Scene, spectral: str | None = None, components: bool = False,
            fresnel_table: Callable[..., Any] | None = None,
            progress: Callable[[str], None] | None = None, keep_trace: bool = False,
-           threads: int | None = None) -> RenderResult:
+           threads: int | None = None,
+           tally: Callable[[int, int], None] | None = None) -> RenderResult:
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -124,7 +125,8 @@ def render(scene: Scene, spectral: str | None = None, components: bool = False,
         :func:`reflectance.render.shading.fresnel_XYZ_table_rgb` for an RGB renderer's F).
     progress : callable, optional
         Called with the name of each phase (``"visibility"``, ``"shadows"``, ``"shading"``) as it
-        starts (e.g. :meth:`reflectance.io.progress.Progress.update` through a small adapter).
+        starts, after where it is (``"rows 0-31: shading"``; e.g.
+        :meth:`reflectance.io.progress.Progress.update` through a small adapter).
     keep_trace : bool
         Look the trace up in the process's trace memo
         (:func:`reflectance.render.tracing.trace_once`), and keep it there, for renders of
@@ -137,6 +139,10 @@ def render(scene: Scene, spectral: str | None = None, components: bool = False,
         default the environment variable ``REFLECTANCE_RENDER_THREADS``, else
         ``OMP_NUM_THREADS``, else the cores this process may use; 1 is the serial path). The
         image is the same, bit for bit, at any count.
+    tally : callable, optional
+        Called with ``(done, total)`` samples as the work is planned and each band is shaded:
+        the first pass's samples, then the adaptive refinement's, added to ``total`` when its
+        pixels are picked (the units of a progress bar's estimate of the time left).
     """
     spectral = scene.spectral if spectral is None else spectral
     if components and spectral != "table":
@@ -146,13 +152,16 @@ def render(scene: Scene, spectral: str | None = None, components: bool = False,
     n = scene.camera.supersample
     bands = tiles(scene.camera)
     integrator = Integrator(scene, spectral, components, fresnel_table, threads)
-    with RenderSession(scene, threads, progress, keep_trace) as session, \
+    cols = scene.camera.shape[1]
+    with RenderSession(scene, threads, progress, keep_trace, tally) as session, \
             np.errstate(over="ignore", invalid="ignore"):  # (an overflow: refused below, by name)
+        session.plan(sum(stop - start for start, stop in bands) * cols)
         for start, stop in bands:
             where = "" if len(bands) == 1 else f"rows {start // n}-{stop // n}: "
             samples, shadowed, traced = session.trace((start, stop), where)
             session.tell(where + "shading")
             integrator.add_band((start, stop), samples, shadowed, traced)
+            session.finished((stop - start) * cols)
             del samples, shadowed  # before the next band is traced: one band's at a time
         if integrator.adaptive:
             integrator.refine(session, lambda image: exposure_scale(image, *_shown(scene)))

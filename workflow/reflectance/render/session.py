@@ -41,6 +41,9 @@ class RenderSession:
     keep_trace : bool
         The first pass's trace of an image of one band is looked up in, and kept in, the
         process's trace memo (:func:`reflectance.render.tracing.trace_once`).
+    tally : callable, optional
+        Told ``(done, total)``, the samples traced and shaded so far and the samples planned
+        (:meth:`plan`, :meth:`finished`): the work a progress bar counts.
 
     Notes
     -----
@@ -52,9 +55,11 @@ class RenderSession:
     """
 
     def __init__(self, scene: Scene, threads: int = 1,
-                 progress: Callable[[str], None] | None = None, keep_trace: bool = False) -> None:
+                 progress: Callable[[str], None] | None = None, keep_trace: bool = False,
+                 tally: Callable[[int, int], None] | None = None) -> None:
         self.scene, self.threads, self.keep_trace = scene, threads, keep_trace
-        self._progress = progress
+        self._progress, self._tally = progress, tally
+        self.done = self.total = 0  # samples traced and shaded, and planned
         self._stack = contextlib.ExitStack()
         self._tools: tuple[Any, IdRenderer] | None = None
 
@@ -80,6 +85,20 @@ class RenderSession:
         """Tell the progress callback, if any, that ``phase`` starts."""
         if self._progress is not None:
             self._progress(phase)
+
+    def plan(self, samples):
+        """``samples`` more are to be traced and shaded (the first pass's, the refinement's)."""
+        self.total += int(samples)
+        self._count()
+
+    def finished(self, samples):
+        """``samples`` of the planned ones are traced and shaded."""
+        self.done += int(samples)
+        self._count()
+
+    def _count(self):
+        if self._tally is not None:
+            self._tally(self.done, self.total)
 
     def _at(self, where):
         """The progress callback of the phases of a trace at ``where`` (None without one)."""
