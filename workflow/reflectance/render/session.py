@@ -86,12 +86,12 @@ class RenderSession:
         if self._progress is not None:
             self._progress(phase)
 
-    def plan(self, samples):
+    def plan(self, samples: int) -> None:
         """``samples`` more are to be traced and shaded (the first pass's, the refinement's)."""
         self.total += int(samples)
         self._count()
 
-    def finished(self, samples):
+    def finished(self, samples: int) -> None:
         """``samples`` of the planned ones are traced and shaded."""
         self.done += int(samples)
         self._count()
