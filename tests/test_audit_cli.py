@@ -142,7 +142,7 @@ def test_refractiveindex_info_files_in_micrometres(root, tmp_path, capsys, monke
     bundled = audit(["Cu", "--angle", "0", "80", "--methods", "exact", "fitted"], capsys)
     for path in write_um_forms(root, tmp_path):
         rows = audit([str(path), "--angle", "0", "80", "--methods", "exact", "fitted"], capsys)
-        assert rows[0]["material"] == path.stem and rows[0]["kind"] == "nk"
+        assert rows[0]["material"] == path.stem and rows[0]["kind"] == "measured"
         for a, b in zip(bundled, rows):
             assert float(a["X"]) == pytest.approx(float(b["X"]), rel=1e-7)
             assert float(a["dE2000_vs_exact"]) == pytest.approx(float(b["dE2000_vs_exact"]),
@@ -154,7 +154,7 @@ def test_reflectance_spectrum_is_audited_with_k_zero(tmp_path, capsys, monkeypat
     path = tmp_path / "grey.csv"
     path.write_text("wavelength_nm,reflectance\n300,0.5\n900,0.5\n")
     rows = audit([str(path), "--angle", "0", "70", "--methods", "exact", "fitted"], capsys)
-    assert {r["kind"] for r in rows} == {"reflectance_k0"}
+    assert {r["kind"] for r in rows} == {"derived"}  # as Material.kind and sources.csv say
     assert pick(rows, "exact", 0)["Y"] == pytest.approx(0.5, abs=1e-8)  # flat: Y = F0
     # k = 0 and n from F0: exact is the fit itself
     assert pick(rows, "fitted", 70)["dE2000_vs_exact"] == pytest.approx(0, abs=1e-9)
@@ -395,6 +395,8 @@ def test_installed_package_works_in_any_folder(root, early, tmp_path_factory):
                  data / "config.yaml"):
         assert path.exists() and not path.is_symlink(), path
     assert (data / "config.yaml").read_bytes() == (root / "config.yaml").read_bytes()
+    # PEP 561: a type checker reads the installed package's annotations
+    assert (site_dir / "reflectance" / "py.typed").is_file()
     rows = csv_rows(audit)
     assert rows[0]["material"] == "Cu" and float(rows[0]["Y"]) > 0.5
     _, colour_ = _installed_result(early, root, tmp_path_factory, "colour")

@@ -425,7 +425,7 @@ def test_a_paint_is_warned_about_a_glaze_is_not(tmp_path, capsys, monkeypatch):
     assert len(warnings) == 2 and "needs n = " in warnings[0] and "-fold" in warnings[1]
     assert captured.out.startswith("material,kind,illuminant,observer,")  # still audited
     meta = yaml.safe_load((tmp_path / "out" / "audit_metadata.yaml").read_text())
-    assert len(meta["warnings"]) == 2 and meta["input"]["kind"] == "reflectance_k0"
+    assert len(meta["warnings"]) == 2 and meta["input"]["kind"] == "derived"
     main(["audit", "glaze.csv", "--angle", "0"])
     assert "warning" not in capsys.readouterr().err
     main(["audit", "Cu", "--angle", "0"])  # measured n, k: not a reflectance, not checked

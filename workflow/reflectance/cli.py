@@ -9,6 +9,7 @@ import argparse
 import math
 import os
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 
 __all__ = ["main", "COMMANDS"]
@@ -774,7 +775,7 @@ searched first), or a CSV file in one of three forms, detected from its header:
 
 A reflectance has no k: it is audited as Cook & Torrance 1982 treat such data, as a smooth
 dielectric with k = 0 and n = (1 + sqrt F0)/(1 - sqrt F0) per wavelength (the `kind` column
-says reflectance_k0, against nk for measured n, k; its exact and fitted rows coincide). That
+says derived, against measured for n, k; its exact and fitted rows coincide). That
 suits the specular reflectance of a smooth transparent surface: glass, a glaze, polished stone,
 water, a clear coat (F0 about 0.02-0.1). It does not suit a diffuse surface, whose reflectance
 (a paint's, paper's) is mostly light scattered inside it, nor an absorbing one (a metal: give
@@ -1118,7 +1119,7 @@ def _command(argv):
     return words[0] if words and words[0] in COMMANDS else ""
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
     args = build_parser(_command(argv)).parse_args(argv)
     args.argv = argv  # (the metadata files record the command)

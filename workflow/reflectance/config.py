@@ -31,7 +31,9 @@ import inspect
 import json
 import math
 import os
+from collections.abc import Mapping
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import yaml
 
@@ -39,6 +41,10 @@ from reflectance.io.limits import grid_points, physical_memory_bytes, size_probl
 from reflectance.io.paths import package_data, project_file
 from reflectance.render.memory import (MESH_ELEMENTS_PER_VERTEX, render_memory_bytes,
                                        render_size_problem)
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
 
 __all__ = ["ConfigError", "SCHEMA_PATH", "KEYWORD_MAPPINGS", "read_config", "unknown_keys",
            "non_finite_numbers", "validate_schema", "check_config", "load_config",
@@ -76,7 +82,7 @@ def _raise(problems, source=SOURCE):
 # 1. YAML: syntax errors and duplicated keys with their line numbers
 # --------------------------------------------------------------------------------------------
 
-def read_config(path="config.yaml"):
+def read_config(path: str | os.PathLike[str] = "config.yaml") -> dict[str, Any]:
     """The mapping in a YAML config file; ConfigError naming the line of a syntax error or of a
     key given twice, or a document that grows when read (aliases, depth, size:
     :func:`reflectance.io.yamlfile.read_yaml`, whose bounds hold before anything is built)."""
@@ -224,7 +230,7 @@ def _mapping_rules(schema, instance, root):
     return props, extra, closed and not open_
 
 
-def unknown_keys(config, schema=None):
+def unknown_keys(config: Mapping[str, Any], schema: Mapping[str, Any] | None = None) -> list[str]:
     """Problems (one line each) for every key that no schema mapping allows.
 
     Parameters
@@ -278,7 +284,7 @@ def _unknown(path, key, props):
 # 3. NaN and infinity
 # --------------------------------------------------------------------------------------------
 
-def non_finite_numbers(config):
+def non_finite_numbers(config: Any) -> list[str]:
     """Problems for every NaN or infinite number anywhere in ``config``."""
     problems = []
 
@@ -300,7 +306,8 @@ def non_finite_numbers(config):
 # 4. The schema
 # --------------------------------------------------------------------------------------------
 
-def validate_schema(config, schema_path=SCHEMA_PATH, source=SOURCE):
+def validate_schema(config: Any, schema_path: str | os.PathLike[str] = SCHEMA_PATH,
+                    source: str = SOURCE) -> None:
     """Unknown keys, non-finite numbers, then the JSON schema; ConfigError naming every key."""
     import jsonschema
 
@@ -340,7 +347,7 @@ def _schema_messages(error, root):
     return [f"{_key(e.absolute_path)}: {e.message}"]
 
 
-def wavelengths_from_config(config):
+def wavelengths_from_config(config: Mapping[str, Any]) -> npt.NDArray[np.float64]:
     """The spectral grid of ``config['wavelengths']`` (inclusive, in nm)."""
     from reflectance.optics.spectra import wavelength_grid
 
@@ -654,7 +661,7 @@ def _refines(camera, supersample):
     return bool(adaptive.get("enabled")) and adaptive.get("supersample", 8) > supersample
 
 
-def render_sizes(config):
+def render_sizes(config: Mapping[str, Any]) -> list[tuple[str, int, int, int, bool, bool]]:
     """(keys, width, height, supersample, whole, adaptive) of every render of the figures, keys
     naming the size; ``whole``: the figure traces its whole image at once
     (:data:`WHOLE_IMAGE_TRACES`); ``adaptive``: its camera refines adaptively."""
@@ -770,7 +777,7 @@ def _grid_sizes(config):
             (MESH_ELEMENTS_PER_VERTEX, "values per vertex")])
 
 
-def size_problems(config, memory=None):
+def size_problems(config: Mapping[str, Any], memory: float | None = None) -> list[str]:
     """One line per size of config.yaml whose arrays cannot fit in ``memory`` bytes (default:
     this machine's) or take more than :data:`reflectance.io.limits.MAX_SECONDS`, naming the key
     and the estimate; checked before anything is made (a grid of a billion points is counted,
@@ -787,7 +794,7 @@ def size_problems(config, memory=None):
 
 # --- every figure's scene, built and validated without rendering ------------------------------
 
-_BUILT_GEOMETRIES = set()  # geometries (canonical JSON) already built once in this process
+_BUILT_GEOMETRIES: set[str] = set()  # geometries (canonical JSON) built once in this process
 
 #: The config key of the geometry of the scenes of a figure (key prefix -> geometry key).
 GEOMETRY_KEYS = {
@@ -863,8 +870,9 @@ def _figure_scene_problems(config, spectra_dir):
     return problems
 
 
-def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spectra",
-                 memory=None):
+def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_scenes: bool = True,
+                 spectra_dir: str | os.PathLike[str] = "spectra",
+                 memory: float | None = None) -> None:
     """Checks the schema cannot express; raises :class:`ConfigError` listing every problem.
 
     - the illuminant and observer are names colour-science knows;
@@ -972,7 +980,8 @@ def check_config(config, check_spectra=True, check_scenes=True, spectra_dir="spe
     _raise(problems)
 
 
-def load_config(path="config.yaml", check_spectra=True, check_scenes=True):
+def load_config(path: str | os.PathLike[str] = "config.yaml", check_spectra: bool = True,
+                check_scenes: bool = True) -> dict[str, Any]:
     """Read, schema-validate and check a config file; return the dict."""
     path = Path(path)
     config = read_config(path)

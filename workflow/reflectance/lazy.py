@@ -6,12 +6,17 @@ turns that into the package's ``__getattr__``, ``__dir__`` and ``__all__`` (PEP 
 only what it needs. It imports nothing of the project: every layer may use it.
 """
 
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
 from importlib import import_module
+from typing import Any
 
 __all__ = ["attach"]
 
 
-def attach(package, modules, exports):
+def attach(package: str, modules: Sequence[str], exports: Mapping[str, str]
+           ) -> tuple[Callable[[str], Any], Callable[[], list[str]], list[str]]:
     """``(__getattr__, __dir__, __all__)`` for ``package``.
 
     Parameters
@@ -25,14 +30,14 @@ def attach(package, modules, exports):
     """
     names = [*modules, *exports]
 
-    def __getattr__(name):
+    def __getattr__(name: str) -> Any:
         if name in exports:
             return getattr(import_module(f"{package}.{exports[name]}"), name)
         if name in modules:
             return import_module(f"{package}.{name}")
         raise AttributeError(f"module {package!r} has no attribute {name!r}")
 
-    def __dir__():
+    def __dir__() -> list[str]:
         return sorted(names)
 
     return __getattr__, __dir__, names

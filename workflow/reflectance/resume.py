@@ -34,7 +34,9 @@ import os
 import re
 import socket
 import sys
+from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any, TextIO
 
 from reflectance.io.atomic import process_alive, process_start_time
 
@@ -63,7 +65,8 @@ def _dead(record):
             and not process_alive(record["pid"], record["start_time"]))
 
 
-def resume_after_kill(main_process=True, state_dir=".snakemake", stream=sys.stderr):
+def resume_after_kill(main_process: bool = True, state_dir: str | os.PathLike[str] = ".snakemake",
+                      stream: TextIO = sys.stderr) -> list[str]:
     """Clear what a killed run of this workflow left in ``state_dir``; record this run.
 
     Parameters
@@ -85,7 +88,7 @@ def resume_after_kill(main_process=True, state_dir=".snakemake", stream=sys.stde
         return []
     state = Path(state_dir)
     lock_dir, incomplete_dir = state / "locks", state / "incomplete"
-    cleared = []
+    cleared: list[str] = []
     locks = sorted(lock_dir.glob("*.lock")) if lock_dir.is_dir() else []
     records = {p: _read_record(p) for p in lock_dir.glob(RUN_RECORDS)} if locks else {}
     if locks:
@@ -133,7 +136,9 @@ def _fields(body):
     return dict(re.findall(r"^    (\w+): (.*)$", body, flags=re.MULTILINE))
 
 
-def memory_kills(log_text, read_text=lambda path: Path(path).read_text(errors="replace")):
+def memory_kills(log_text: str,
+                 read_text: Callable[[str], str] = lambda path: Path(path).read_text(errors="replace")
+                ) -> list[dict[str, Any]]:
     """The jobs of a Snakemake run that the cluster killed for exceeding their memory request.
 
     Snakemake's SLURM executor reports such a job only as failed ("SLURM status is: 'FAILED'",
@@ -186,7 +191,8 @@ def memory_kills(log_text, read_text=lambda path: Path(path).read_text(errors="r
     return kills
 
 
-def report_memory_kills(log_path, stream=sys.stderr):
+def report_memory_kills(log_path: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
+                        stream: TextIO = sys.stderr) -> list[str]:
     """Say, for each job of the run in ``log_path`` killed for its memory, which rule and request.
 
     ``log_path`` is one log file or a list of them (what Snakemake hands ``onerror:``).

@@ -7,13 +7,16 @@ import errno
 import logging
 import sys
 import traceback
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
 
 __all__ = ["script_log", "peak_memory", "params_dict", "command_line_job",
            "write_audit_metadata"]
 
 
-def peak_memory():
+def peak_memory() -> str | None:
     """This process's peak resident memory, as ``'612 MB'`` (None where the system does not say).
 
     The kernel's high-water mark (``VmHWM`` in /proc/self/status) counts this program only;
@@ -31,7 +34,7 @@ def peak_memory():
     return None
 
 
-def command_line_job(rule, argv=None):
+def command_line_job(rule: str, argv: Sequence[str] | None = None) -> SimpleNamespace:
     """A stand-in for Snakemake's ``snakemake`` object, for a script a rule runs with ``shell:``
     (workflow/rules/spectra.smk says why): ``--log LOG --params JSON OUTPUT...``."""
     import argparse
@@ -52,7 +55,7 @@ _WRITE_ERRORS = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO
 
 
 @contextlib.contextmanager
-def script_log(snakemake):
+def script_log(snakemake: Any) -> Iterator[logging.Logger]:
     """Send a script's output and any traceback to ``snakemake.log[0]``; yield a logger."""
     log_path = Path(snakemake.log[0]) if len(snakemake.log) else None
     logger = logging.getLogger(f"reflectance.{getattr(snakemake, 'rule', 'script')}")
@@ -89,7 +92,7 @@ def script_log(snakemake):
             logger.removeHandler(handler)
 
 
-def params_dict(params):
+def params_dict(params: Any) -> dict[str, Any]:
     """A job's params as a plain dict: Snakemake's ``Params`` (named items), a mapping, or a
     namespace (the tests' stand-in for Snakemake's object).
 
@@ -111,8 +114,8 @@ def _grid_nm(grid):
     return grid
 
 
-def write_audit_metadata(snakemake, what, *, illuminant, observer, wavelengths_nm, units,
-                         **settings):
+def write_audit_metadata(snakemake: Any, what: str, *, illuminant: str, observer: str,
+                         wavelengths_nm: Any, units: Mapping[str, str], **settings: Any) -> None:
     """Write the metadata file beside a workflow audit's tables (``snakemake.output.metadata``,
     :func:`reflectance.io.provenance.write_metadata`), as ``reflectance audit -o`` writes one
     beside its audit.csv: what the audit computes, the rule that ran it, the package's and its

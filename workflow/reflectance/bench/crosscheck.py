@@ -52,16 +52,24 @@ References
 
 from __future__ import annotations
 
+import os
 import shutil
 import tempfile
 import time
+from collections.abc import Callable, Mapping, Sequence
 from importlib.util import find_spec
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.spectra import folder_list
 from reflectance.bench.measure import CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES
+
+if TYPE_CHECKING:
+    from reflectance.optics.spectra import SpectraDirs
+    from reflectance.render.scene import Scene
 
 __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to_mitsuba",
            "mitsuba_renderer", "render_mitsuba", "equal_error_seconds", "fastest_at_goal",
@@ -72,7 +80,7 @@ __all__ = ["mitsuba_available", "mitsuba_variant", "crosscheck_scene", "scene_to
 VARIANTS = ("llvm_ad_spectral", "scalar_spectral")
 
 
-def mitsuba_available():
+def mitsuba_available() -> bool:
     """Whether Mitsuba 3 is installed (without importing it)."""
     return find_spec("mitsuba") is not None
 
@@ -98,7 +106,7 @@ def mitsuba_variant(prefer=VARIANTS):
     raise ValueError(f"none of the Mitsuba variants {', '.join(prefer)} works here")
 
 
-def crosscheck_scene(document):
+def crosscheck_scene(document: dict[str, Any]) -> dict[str, Any]:
     """A scene document made exportable: the same geometry, camera and lights, with each
     Cook & Torrance material read in the ``physical`` convention with Smith shadowing, one
     Beckmann lobe (the narrowest of its lobes), the exact Fresnel, and no ambient light."""
@@ -193,7 +201,8 @@ def _write_ply(path, points, normals, triangles):
         f.write(face.tobytes())
 
 
-def scene_to_mitsuba(scene, folder, spp=64, seed=0):
+def scene_to_mitsuba(scene: Scene, folder: str | os.PathLike[str], spp: int = 64,
+                     seed: int = 0) -> dict[str, Any]:
     """The ``mitsuba.load_dict`` dictionary of a loaded scene (see the module docstring).
 
     ``folder`` receives the meshes (PLY files) the dictionary names. Raises ValueError, one
@@ -212,7 +221,7 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
     wl = scene.wavelengths
     if not np.allclose(np.diff(wl), wl[1] - wl[0]):
         _refuse("wavelengths", "a non-uniform wavelength grid")
-    doc = {"type": "scene",
+    doc: dict[str, Any] = {"type": "scene",
            "integrator": {"type": "direct", "emitter_samples": 1, "bsdf_samples": 0}}
     mesh = scene.mesh
     tris = np.asarray(mesh.faces, np.int64).reshape(-1, 4)[:, 1:]
@@ -270,7 +279,9 @@ def scene_to_mitsuba(scene, folder, spp=64, seed=0):
     return doc
 
 
-def mitsuba_renderer(scene, variant=None):
+def mitsuba_renderer(scene: Scene,
+                     variant: str | None = None
+                    ) -> Callable[..., tuple[npt.NDArray[np.float64], float]]:
     """Load a loaded scene into Mitsuba once; return ``render(spp, seed=0)``.
 
     ``render`` gives what :func:`render_mitsuba` gives, ``(XYZ, seconds)``, for any number of
@@ -284,7 +295,7 @@ def mitsuba_renderer(scene, variant=None):
 
     if variant is not None:
         mi.set_variant(variant)
-    elif not mi.variant() or not mi.variant().endswith("spectral"):
+    elif not mi.variant() or not mi.variant().endswith("spectral"):  # type: ignore[union-attr]
         mitsuba_variant()
     with tempfile.TemporaryDirectory(prefix="reflectance-mitsuba-") as folder:
         doc = scene_to_mitsuba(scene, folder)
@@ -302,7 +313,8 @@ def mitsuba_renderer(scene, variant=None):
     return render
 
 
-def render_mitsuba(scene, spp, seed=0, variant=None):
+def render_mitsuba(scene: Scene, spp: int, seed: int = 0,
+                   variant: str | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """Render a loaded scene with Mitsuba at ``spp`` samples per pixel.
 
     Returns ``(XYZ, seconds)``: the image, shape (height, width, 3), in our XYZ units, and the
@@ -509,9 +521,12 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
     return out
 
 
-def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersample=8,
-                     reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
-                     progress=None, variants=VARIANTS, our_supersamples=CROSSCHECK_SUPERSAMPLES):
+def bench_crosscheck(document: str | os.PathLike[str] | dict[str, Any], size: int,
+                     supersample: int = 2, runs: int = 3, reference_supersample: int = 8,
+                     reference_spp: int = CROSSCHECK_SPP, ladder_spp: Sequence[int] = LADDER_SPP,
+                     spectra_dir: SpectraDirs = None, progress: Callable[[str], None] | None = None,
+                     variants: Sequence[str] = VARIANTS,
+                     our_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES) -> dict[str, Any]:
     """The bench's cross-check at one square size: our renderer and Mitsuba against the same
     converged references.
 
@@ -567,7 +582,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     mitsuba = mitsuba_renderer(scene, variant)  # the scene loaded once for every render
     mitsuba(1, seed=0)  # compiles the kernels (LLVM) once, not timed
     mitsuba_reference, reference_s = mitsuba(reference_spp, seed=1)
-    rungs = []
+    rungs: list[dict[str, Any]] = []
     for spp in ladder_spp:
         progress(f"cross-check: Mitsuba at {spp} spp")
         XYZ, seconds = mitsuba(spp, seed=2)
@@ -576,11 +591,11 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
         rungs.append({"spp": int(spp), "seconds": seconds,
                       "vs_mitsuba": list(errors(XYZ, mitsuba_reference, scene)),
                       "vs_ours": list(errors(XYZ, our_reference, scene))})
-    our_ladder = [{"supersample": n, "seconds": seconds,
+    our_ladder: list[dict[str, Any]] = [{"supersample": n, "seconds": seconds,
                    "vs_mitsuba": list(errors(XYZ, mitsuba_reference, scene)),
                    "vs_ours": list(errors(XYZ, our_reference, scene))}
                   for n, (seconds, XYZ) in our_images.items()]
-    out = {
+    out: dict[str, Any] = {
         "size": size, "variant": variant, "supersample": supersample, "runs": runs,
         "material": scene.document["objects"][0]["material"],
         "reference_spp": reference_spp, "reference_supersample": reference_supersample,
@@ -621,7 +636,7 @@ def bench_crosscheck(document, size, supersample=2, runs=3, reference_supersampl
     return out
 
 
-def format_crosscheck(result):
+def format_crosscheck(result: Mapping[str, Any]) -> list[str]:
     """Lines of the bench's report for :func:`bench_crosscheck`'s result."""
     r = result
 

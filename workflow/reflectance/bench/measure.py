@@ -33,10 +33,19 @@ Speed targets are measured here, never asserted in tests.
 
 from __future__ import annotations
 
+import os
 import resource
 import time
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 from reflectance.io.progress import worker_main
+
+if TYPE_CHECKING:
+    import numpy.typing as npt
+
+    from reflectance.optics.spectra import SpectraDirs
+    from reflectance.render.scene import Scene
 
 __all__ = ["load_bench_scene", "scene_difference", "bench_size"]
 
@@ -57,7 +66,8 @@ def _peak_MiB():
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0  # Linux: KiB
 
 
-def scene_difference(XYZ, XYZ_reference, scene):
+def scene_difference(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike,
+                     scene: Scene) -> tuple[float, float]:
     """(mean, 95th percentile) CIEDE2000 of two renders of ``scene`` on the reference's
     Cook & Torrance exposure, in the scene's display illuminant, observer and wavelengths
     (:func:`reflectance.colour.difference.difference_statistics_CIEDE2000`); (0, 0) when no
@@ -68,8 +78,11 @@ def scene_difference(XYZ, XYZ_reference, scene):
                                            scene.observer, scene.wavelengths)
 
 
-def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersample=None,
-                     spectral=None, wavelengths=None, adaptive=None, base_dir="."):
+def load_bench_scene(scene: str | os.PathLike[str] | dict[str, Any],
+                     spectra_dir: SpectraDirs = None, width: int | None = None,
+                     height: int | None = None, supersample: int | None = None,
+                     spectral: str | None = None, wavelengths: Mapping[str, float] | None = None,
+                     adaptive: bool | None = None, base_dir: str | os.PathLike[str] = ".") -> Scene:
     """The benchmarked scene: a scene file's path, or a scene document (dict, with its
     ``source`` description under the key ``"_source"`` if any; its mesh paths and material
     files relative to ``base_dir``), with overrides as
@@ -80,13 +93,13 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
 
     from reflectance.render.scene import load_scene, scene_from_dict
 
-    overrides = {"width": width, "height": height, "supersample": supersample,
+    overrides: dict[str, Any] = {"width": width, "height": height, "supersample": supersample,
                  "spectral": spectral, "wavelengths": wavelengths}
     if not isinstance(scene, dict):
         out = load_scene(scene, spectra_dir=spectra_dir, **overrides)
         if adaptive is None:
             return out
-        return dataclasses.replace(out, refinement=dataclasses.replace(out.refinement,
+        return dataclasses.replace(out, refinement=dataclasses.replace(out.refinement,  # type: ignore[type-var]
                                                                       enabled=bool(adaptive)))
     doc = copy.deepcopy(scene)
     source = doc.pop("_source", "scene document")
@@ -101,9 +114,12 @@ def load_bench_scene(scene, spectra_dir=None, width=None, height=None, supersamp
     return scene_from_dict(doc, source=source, base_dir=base_dir, spectra_dir=spectra_dir)
 
 
-def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=(),
-               spectra_dir=None, reference_supersample=REFERENCE_SUPERSAMPLE,
-               reference_max_samples=REFERENCE_MAX_SAMPLES, progress=None, adaptive=None):
+def bench_size(scene: str | os.PathLike[str] | dict[str, Any], size: int, supersample: int = 2,
+               runs: int = 5, brute_force_runs: int = 1, grids_nm: Sequence[float] = (),
+               spectra_dir: SpectraDirs = None, reference_supersample: int = REFERENCE_SUPERSAMPLE,
+               reference_max_samples: int = REFERENCE_MAX_SAMPLES,
+               progress: Callable[[str], None] | None = None,
+               adaptive: bool | None = None) -> dict[str, Any]:
     """Measurements for one image size, in this process (see :func:`reflectance.bench.run.run_bench`); ``progress``, if
     given, is called with the name of each phase as it starts; ``adaptive`` as for
     :func:`load_bench_scene`."""
@@ -125,7 +141,7 @@ def bench_size(scene, size, supersample=2, runs=5, brute_force_runs=1, grids_nm=
     scene = load_bench_scene(document, spectra_dir=spectra_dir, width=size, height=size,
                              supersample=supersample, spectral="table", adaptive=adaptive)
     load_s = time.perf_counter() - t0
-    times = {"visibility": [], "shadows": [], "shading": []}
+    times: dict[str, list[float]] = {"visibility": [], "shadows": [], "shading": []}
     for run in range(runs):
         result = render(scene, progress=lambda phase: progress(f"run {run + 1}/{runs}: {phase}"))
         for key, value in times.items():

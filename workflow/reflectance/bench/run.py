@@ -13,14 +13,22 @@ says in one line that the cross-check is skipped (:func:`crosscheck_status`).
 
 from __future__ import annotations
 
+import os
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
 from reflectance.io.progress import run_worker
 from reflectance.bench.measure import (CROSSCHECK_SIZE, CROSSCHECK_SPP, CROSSCHECK_SUPERSAMPLES,
                                       REFERENCE_SUPERSAMPLE)
 
+if TYPE_CHECKING:
+    from reflectance.io.progress import Progress
+    from reflectance.optics.spectra import SpectraDirs
+
 __all__ = ["run_bench", "format_report", "crosscheck_status"]
 
 
-def crosscheck_status(results=()):
+def crosscheck_status(results: Sequence[Mapping[str, Any]] = ()) -> str:
     """The report's lines on the path-tracer cross-check (Mitsuba 3): its table
     (:func:`reflectance.bench.crosscheck.format_crosscheck`) where it ran, else one line saying
     why it was skipped."""
@@ -36,11 +44,14 @@ def crosscheck_status(results=()):
             f"--crosscheck-size, default {CROSSCHECK_SIZE}, when that size is benchmarked)")
 
 
-def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_runs=1,
-              grids_nm=(5, 1), grid_size=512, spectra_dir=None,
-              reference_supersample=REFERENCE_SUPERSAMPLE, progress=None, adaptive=None,
-              crosscheck_size=CROSSCHECK_SIZE, crosscheck_spp=CROSSCHECK_SPP,
-              crosscheck_supersamples=CROSSCHECK_SUPERSAMPLES):
+def run_bench(scene: str | os.PathLike[str] | dict[str, Any],
+              sizes: Sequence[int] = (256, 512, 1024), supersample: int = 2, runs: int = 5,
+              brute_force_runs: int = 1, grids_nm: Sequence[float] = (5, 1), grid_size: int = 512,
+              spectra_dir: SpectraDirs = None, reference_supersample: int = REFERENCE_SUPERSAMPLE,
+              progress: Progress | None = None, adaptive: bool | None = None,
+              crosscheck_size: int = CROSSCHECK_SIZE, crosscheck_spp: int = CROSSCHECK_SPP,
+              crosscheck_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES
+             ) -> list[dict[str, Any]]:
     """Run :func:`reflectance.bench.measure.bench_size` for each size in a fresh subprocess;
     return the list of results.
 
@@ -93,7 +104,7 @@ def run_bench(scene, sizes=(256, 512, 1024), supersample=2, runs=5, brute_force_
     return results
 
 
-def format_report(results):
+def format_report(results: Sequence[Mapping[str, Any]]) -> str:
     """A plain-text report of :func:`run_bench` results."""
     lines = []
     if results:

@@ -15,6 +15,7 @@ Li, C., Li, Z., Wang, Z., Xu, Y., Luo, M. R., Cui, G., Melgosa, M., Brill, M. H.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["CAM16_SURROUNDS", "XYZ_to_CAM16", "XYZ_to_CAM16UCS"]
 
@@ -33,7 +34,8 @@ def _compress(RGB, F_L):
     return 400.0 * np.sign(RGB) * F_L_RGB / (27.13 + F_L_RGB) + 0.1
 
 
-def XYZ_to_CAM16(XYZ, XYZ_w, L_A, Y_b, surround="Average"):
+def XYZ_to_CAM16(XYZ: npt.ArrayLike, XYZ_w: npt.ArrayLike, L_A: float, Y_b: float,
+                 surround: str = "Average") -> dict[str, npt.NDArray[np.float64]]:
     """CAM16 lightness J, chroma C, hue angle h (degrees) and colourfulness M.
 
     Parameters
@@ -89,7 +91,8 @@ def XYZ_to_CAM16(XYZ, XYZ_w, L_A, Y_b, surround="Average"):
     return {"J": J, "C": C, "h": h, "M": C * F_L ** 0.25}
 
 
-def XYZ_to_CAM16UCS(XYZ, XYZ_w, L_A, Y_b, surround="Average"):
+def XYZ_to_CAM16UCS(XYZ: npt.ArrayLike, XYZ_w: npt.ArrayLike, L_A: float, Y_b: float,
+                    surround: str = "Average") -> npt.NDArray[np.float64]:
     """CAM16-UCS J', a', b' (Li et al. 2017, eqs. 24-26; Luo et al. 2006's UCS constants).
 
     Same arguments as :func:`XYZ_to_CAM16`; the CAM16-UCS colour difference is the Euclidean

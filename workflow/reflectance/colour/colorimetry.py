@@ -28,6 +28,7 @@ from __future__ import annotations
 import functools
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.colour import tables
 
@@ -123,7 +124,8 @@ def _weights(S, xyz_bar):
     return S[:, None] * xyz_bar / np.sum(xyz_bar[:, 1] * S)
 
 
-def tristimulus_weights_spd(spd, wavelengths, observer=OBSERVER_DEFAULT):
+def tristimulus_weights_spd(spd: npt.ArrayLike, wavelengths: npt.ArrayLike,
+                            observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """:func:`tristimulus_weights` for an illuminant given by its SPD values on the grid.
 
     Parameters
@@ -160,7 +162,8 @@ def tristimulus_weights_spd(spd, wavelengths, observer=OBSERVER_DEFAULT):
     return _weights(S, xyz_bar)
 
 
-def cmfs(observer=OBSERVER_DEFAULT, wavelengths=None):
+def cmfs(observer: str = OBSERVER_DEFAULT,
+         wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Colour matching functions of a CIE standard observer on a wavelength grid.
 
     Parameters
@@ -189,7 +192,8 @@ def cmfs(observer=OBSERVER_DEFAULT, wavelengths=None):
     return _cmfs_cached(observer, _grid_key(wavelengths)).copy()
 
 
-def illuminant_sd(name="D65", wavelengths=None):
+def illuminant_sd(name: str = "D65",
+                  wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Relative spectral power distribution of a CIE illuminant on a wavelength grid.
 
     Parameters
@@ -218,7 +222,7 @@ def illuminant_sd(name="D65", wavelengths=None):
     return _illuminant_cached(name, _grid_key(wavelengths)).copy()
 
 
-def cmfs_wavelengths(observer=OBSERVER_DEFAULT):
+def cmfs_wavelengths(observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """The wavelengths (nm) of a CIE standard observer's own tabulation in colour-science.
 
     That is ``colour.MSDS_CMFS[observer].wavelengths``, read from the table cache
@@ -234,7 +238,7 @@ def cmfs_wavelengths(observer=OBSERVER_DEFAULT):
     return tables.cmfs_tabulated(_validate_observer(observer))[0]
 
 
-def illuminant_range_nm(name="D65"):
+def illuminant_range_nm(name: str = "D65") -> tuple[float, float]:
     """First and last wavelength (nm) of colour-science's own tabulation of a CIE illuminant.
 
     That is ``colour.SDS_ILLUMINANTS[name].shape``'s start and end, read from the table cache
@@ -250,7 +254,8 @@ def illuminant_range_nm(name="D65"):
     return float(wavelengths[0]), float(wavelengths[-1])
 
 
-def tristimulus_weights(wavelengths, illuminant="D65", observer=OBSERVER_DEFAULT):
+def tristimulus_weights(wavelengths: npt.ArrayLike, illuminant: str = "D65",
+                        observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """Weights ``W`` such that ``XYZ = S @ W`` for a spectral reflectance factor ``S``.
 
     ``W[i] = S_illum(l_i) * xyz_bar(l_i) / sum_j S_illum(l_j) y_bar(l_j)``, so that ``S = 1`` gives
@@ -304,7 +309,7 @@ def tristimulus_weights(wavelengths, illuminant="D65", observer=OBSERVER_DEFAULT
     return _weights_cached(key, illuminant, observer).copy()
 
 
-def spectrum_to_XYZ(S, W):
+def spectrum_to_XYZ(S: npt.ArrayLike, W: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """CIE XYZ of spectra ``S[..., n_wl]`` with tristimulus weights ``W`` (n_wl, 3): ``S @ W``.
 
     Examples
@@ -322,7 +327,8 @@ def spectrum_to_XYZ(S, W):
     return S @ W
 
 
-def white_XYZ(illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
+def white_XYZ(illuminant: str = "D65", observer: str = OBSERVER_DEFAULT,
+              wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """CIE XYZ (Y = 1) of an illuminant's white, i.e. of ``S = 1``, for an observer.
 
     Parameters
@@ -357,7 +363,7 @@ def white_XYZ(illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
     return spectrum_to_XYZ(np.ones(W.shape[0]), W)
 
 
-def XYZ_to_xy(XYZ):
+def XYZ_to_xy(XYZ: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """CIE xy chromaticity coordinates of CIE XYZ: ``x = X / (X + Y + Z)``, ``y = Y / (X + Y + Z)``.
 
     As colour-science's ``colour.XYZ_to_xy`` (to the bit): where ``X + Y + Z`` is 0 or a quotient
@@ -396,7 +402,7 @@ def _lightness_function_CIE1976(t):
     return np.where(t > (24 / 116) ** 3, np.abs(t) ** (1 / 3), (841 / 108) * t + 16 / 116)
 
 
-def XYZ_to_Lab(XYZ, illuminant_xy):
+def XYZ_to_Lab(XYZ: npt.ArrayLike, illuminant_xy: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """CIE 1976 L*a*b* of CIE XYZ (Y = 1 scale) relative to the white of chromaticity ``illuminant_xy``.
 
     The white is ``X_n = x / y``, ``Y_n = 1``, ``Z_n = (1 - x - y) / y``; then ``L* = 116 f(Y/Y_n)
@@ -436,7 +442,10 @@ def XYZ_to_Lab(XYZ, illuminant_xy):
     return np.stack([116 * f_Y - 16, 500 * (f_X - f_Y), 200 * (f_Y - f_Z)], axis=-1)
 
 
-def dominant_wavelength(XYZ, illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None):
+def dominant_wavelength(XYZ: npt.ArrayLike, illuminant: str = "D65",
+                        observer: str = OBSERVER_DEFAULT,
+                        wavelengths: npt.ArrayLike | None = None
+                       ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Dominant wavelength and excitation purity of CIE XYZ colours relative to a white.
 
     Purples, which have no dominant wavelength, get their complementary wavelength as a negative

@@ -17,12 +17,14 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["delta_E_CIE2000", "dE2000_map", "dE2000_statistics", "pixel_difference_CIEDE2000",
            "difference_statistics_CIEDE2000", "image_difference_CIEDE2000"]
 
 
-def delta_E_CIE2000(Lab_1, Lab_2, textiles=False):
+def delta_E_CIE2000(Lab_1: npt.ArrayLike, Lab_2: npt.ArrayLike,
+                    textiles: bool = False) -> npt.NDArray[np.float64]:
     """CIEDE2000 colour difference of CIE L*a*b* colours (L* 0-100), element-wise.
 
     Follows Sharma, Wu & Dalal (2005), equations (1)-(22), with their conventions for the
@@ -122,7 +124,8 @@ def delta_E_CIE2000(Lab_1, Lab_2, textiles=False):
     )
 
 
-def dE2000_map(XYZ, XYZ_reference, scale, white):
+def dE2000_map(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike, scale: float,
+               white: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """CIEDE2000 per pixel of two XYZ images, both scaled by ``scale``, in CIELAB of ``white``.
 
     Parameters
@@ -141,7 +144,8 @@ def dE2000_map(XYZ, XYZ_reference, scale, white):
     return delta_E_CIE2000(lab[0], lab[1])
 
 
-def dE2000_statistics(dE, mask, percentile=95.0):
+def dE2000_statistics(dE: npt.ArrayLike, mask: npt.ArrayLike,
+                      percentile: float = 95.0) -> dict[str, float]:
     """``{"mean", "p<percentile>", "max"}`` of ``dE`` over ``mask`` (NaN if the mask is empty)."""
     values = np.asarray(dE)[np.asarray(mask, dtype=bool)]
     if values.size == 0:
@@ -150,8 +154,9 @@ def dE2000_statistics(dE, mask, percentile=95.0):
             "max": float(values.max())}
 
 
-def pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
+def pixel_difference_CIEDE2000(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike,
+                               illuminant: str = "D65", observer: str | None = None,
+                               wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """CIEDE2000 of each pixel of two XYZ images that is not black in either, on the
     reference's Cook & Torrance exposure (as :func:`image_difference_CIEDE2000`): a 1-D array."""
     from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
@@ -171,16 +176,19 @@ def _mean_and(dE, statistic):
     return float(dE.mean()), float(statistic(dE))
 
 
-def difference_statistics_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                                    wavelengths=None):
+def difference_statistics_CIEDE2000(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike,
+                                    illuminant: str = "D65", observer: str | None = None,
+                                    wavelengths: npt.ArrayLike | None = None
+                                   ) -> tuple[float, float]:
     """(mean, 95th percentile) of :func:`pixel_difference_CIEDE2000`; (0, 0) when no pixel is
     lit."""
     return _mean_and(pixel_difference_CIEDE2000(XYZ, XYZ_reference, illuminant, observer,
                                                 wavelengths), lambda dE: np.percentile(dE, 95))
 
 
-def image_difference_CIEDE2000(XYZ, XYZ_reference, illuminant="D65", observer=None,
-                               wavelengths=None):
+def image_difference_CIEDE2000(XYZ: npt.ArrayLike, XYZ_reference: npt.ArrayLike,
+                               illuminant: str = "D65", observer: str | None = None,
+                               wavelengths: npt.ArrayLike | None = None) -> tuple[float, float]:
     """(mean, max) CIEDE2000 of two XYZ images on the reference's Cook & Torrance exposure.
 
     Both images are scaled by the exposure of ``XYZ_reference`` (so that its brightest colour

@@ -40,11 +40,17 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.colour import tables
 from reflectance.colour.colorimetry import OBSERVER_DEFAULT, white_XYZ
+
+if TYPE_CHECKING:
+    from reflectance.io.images import ColourTag
 
 __all__ = [
     "DISPLAY_SPACES",
@@ -114,7 +120,7 @@ def _display_space(name):
     return DisplaySpace(name, colourspace_name, transfer, M, M_inv, white)
 
 
-def display_space(space="sRGB"):
+def display_space(space: str = "sRGB") -> DisplaySpace:
     """The :class:`DisplaySpace` called ``space`` (one of :data:`DISPLAY_SPACES`).
 
     Examples
@@ -160,7 +166,8 @@ def _matrix_chromatic_adaptation_VonKries(XYZ_w, XYZ_wr, transform):
     return np.matmul(np.matmul(np.linalg.inv(M), D), M)
 
 
-def _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths):
+def _XYZ_to_RGB_matrix(space: str, illuminant: str | npt.ArrayLike, observer: str,
+                       wavelengths: npt.ArrayLike | None) -> npt.NDArray[np.float64]:
     ds = display_space(space)
     XYZ_w = _scene_white(illuminant, observer, wavelengths)
     M_cat = _matrix_chromatic_adaptation_VonKries(
@@ -169,16 +176,16 @@ def _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths):
     return ds.matrix_XYZ_to_RGB @ M_cat
 
 
-def _as_triplets(array, name):
+def _as_triplets(array: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
     array = np.asarray(array, dtype=np.float64)
     if array.ndim == 0 or array.shape[-1] != 3:
         raise ValueError(f"{name}: expected shape (..., 3), got {array.shape}")
     return array
 
 
-def XYZ_to_linear_RGB(
-    XYZ, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
-):
+def XYZ_to_linear_RGB(XYZ: npt.ArrayLike, space: str = "sRGB",
+                      illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT,
+                      wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Scene XYZ (relative to the illuminant's white, Y = 1) to linear display RGB.
 
     The illuminant's white maps to RGB (1, 1, 1) * Y to float precision: the scene white is adapted
@@ -217,9 +224,9 @@ def XYZ_to_linear_RGB(
     return XYZ @ _XYZ_to_RGB_matrix(space, illuminant, observer, wavelengths).T
 
 
-def linear_RGB_to_XYZ(
-    RGB, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
-):
+def linear_RGB_to_XYZ(RGB: npt.ArrayLike, space: str = "sRGB",
+                      illuminant: str | npt.ArrayLike = "D65", observer: str = OBSERVER_DEFAULT,
+                      wavelengths: npt.ArrayLike | None = None) -> npt.NDArray[np.float64]:
     """Inverse of :func:`XYZ_to_linear_RGB` (same arguments).
 
     Examples
@@ -232,9 +239,11 @@ def linear_RGB_to_XYZ(
     return RGB @ np.linalg.inv(M).T
 
 
-def expose_CookTorrance1982(
-    XYZ, space="sRGB", illuminant="D65", observer=OBSERVER_DEFAULT, wavelengths=None
-):
+def expose_CookTorrance1982(XYZ: npt.ArrayLike, space: str = "sRGB",
+                            illuminant: str | npt.ArrayLike = "D65",
+                            observer: str = OBSERVER_DEFAULT,
+                            wavelengths: npt.ArrayLike | None = None
+                           ) -> tuple[npt.NDArray[np.float64], float]:
     """Scale all XYZ of a scene equally so its most luminous colour peaks at the display maximum.
 
     Cook & Torrance 1982, "Determining the RGB values": "all XYZ values in the scene are scaled
@@ -296,7 +305,8 @@ def expose_CookTorrance1982(
     return XYZ * scale, scale
 
 
-def expose_key(XYZ, percentile=50.0, luminance=0.18):
+def expose_key(XYZ: npt.NDArray[np.float64], percentile: float = 50.0,
+               luminance: float = 0.18) -> tuple[npt.NDArray[np.float64], float]:
     """Scale a scene so that a percentile of its object's luminance lands at a display luminance.
 
     A photographer's reflected-light metering of the object instead of Cook & Torrance's "usually"
@@ -338,7 +348,7 @@ def expose_key(XYZ, percentile=50.0, luminance=0.18):
     return XYZ * scale, scale
 
 
-def compress_highlights(RGB_linear, knee):
+def compress_highlights(RGB_linear: npt.ArrayLike, knee: float) -> npt.NDArray[np.float64]:
     """Bring colours above ``knee`` smoothly below the display maximum at constant chromaticity.
 
     Each pixel's linear RGB is multiplied by ``g(M) / M`` with ``M`` its largest channel and
@@ -374,7 +384,8 @@ def _in_gamut(RGB):
     return np.all((RGB >= 0) & (RGB <= 1), axis=-1)
 
 
-def gamut_clip_CookTorrance1982(RGB_linear, space="sRGB"):
+def gamut_clip_CookTorrance1982(RGB_linear: npt.ArrayLike,
+                                space: str = "sRGB") -> npt.NDArray[np.float64]:
     """Desaturate toward the white of equal luminance, keeping dominant wavelength (C&T 1982).
 
     Cook & Torrance 1982, "Determining the RGB values": "The purity is then reduced while the
@@ -440,7 +451,7 @@ def gamut_clip_CookTorrance1982(RGB_linear, space="sRGB"):
     return np.where(finite[..., None], out, np.nan)
 
 
-def gamut_clip_channels(RGB_linear, space="sRGB"):
+def gamut_clip_channels(RGB_linear: npt.ArrayLike, space: str = "sRGB") -> npt.NDArray[np.float64]:
     """Clip each channel to [0, 1] independently (changes hue and luminance; for comparison).
 
     Non-finite input rows give NaN rows, as for the other methods.
@@ -467,7 +478,7 @@ def _oklab_to_RGB(Lab, ds):
     return colour.Oklab_to_XYZ(Lab) @ ds.matrix_XYZ_to_RGB.T
 
 
-def gamut_clip_CSSColor4(RGB_linear, space="sRGB"):
+def gamut_clip_CSSColor4(RGB_linear: npt.ArrayLike, space: str = "sRGB") -> npt.NDArray[np.float64]:
     """CSS Color 4 gamut mapping: binary search on OKLCh chroma with local MINDE (deltaEOK 0.02).
 
     Follows the CSS Color Module Level 4 algorithm "CSS gamut map" (§13.2) step by step, for all
@@ -575,7 +586,8 @@ def _validate_clip_method(method):
         )
 
 
-def gamut_clip(RGB_linear, method="dominant-wavelength", space="sRGB"):
+def gamut_clip(RGB_linear: npt.ArrayLike, method: str = "dominant-wavelength",
+               space: str = "sRGB") -> npt.NDArray[np.float64]:
     """Bring linear display RGB into [0, 1] with one of :data:`GAMUT_CLIP_METHODS`.
 
     Examples
@@ -597,7 +609,8 @@ TRANSFERS = {
 ``display.transfer``)."""
 
 
-def encode(RGB_linear, space="sRGB", transfer="display"):
+def encode(RGB_linear: npt.ArrayLike, space: str = "sRGB",
+           transfer: str = "display") -> npt.NDArray[np.float64]:
     """Apply the display's transfer function (linear light -> signal) to RGB in [0, 1].
 
     ``transfer`` 'none' (:data:`TRANSFERS`) writes the linear RGB as the signal instead: clipped
@@ -629,7 +642,7 @@ def encode(RGB_linear, space="sRGB", transfer="display"):
     return _eotf_inverse_BT1886(RGB, L_B=0.0, L_W=1.0)
 
 
-def decode_8bit(codes, space="sRGB"):
+def decode_8bit(codes: npt.ArrayLike, space: str = "sRGB") -> npt.NDArray[np.float64]:
     """The linear light of 8-bit display codes (integers 0-255, any shape): the display's EOTF,
     the inverse of :func:`encode`, read from colour-science's values for the 256 codes
     (:func:`reflectance.colour.tables.transfer_decoding_8bit`: ``colour.cctf_decoding(codes / 255,
@@ -674,15 +687,15 @@ def _eotf_inverse_BT1886(L, L_B=0.0, L_W=1.0):
 
 
 def XYZ_to_display(
-    XYZ,
-    space="sRGB",
-    clip="dominant-wavelength",
-    expose=True,
-    illuminant="D65",
-    observer=OBSERVER_DEFAULT,
-    wavelengths=None,
-    highlight_knee=None,
-):
+    XYZ: npt.ArrayLike,
+    space: str = "sRGB",
+    clip: str = "dominant-wavelength",
+    expose: bool = True,
+    illuminant: str | npt.ArrayLike = "D65",
+    observer: str = OBSERVER_DEFAULT,
+    wavelengths: npt.ArrayLike | None = None,
+    highlight_knee: float | None = None,
+) -> npt.NDArray[np.float64]:
     """Scene XYZ to encoded display RGB in [0, 1]: expose, linear RGB, gamut clip, encode.
 
     Parameters
@@ -726,7 +739,10 @@ def XYZ_to_display(
     return encode(gamut_clip(RGB, clip, space), space)
 
 
-def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB", *, fresnel):
+def fresnel_XYZ_rgb(F0_XYZ: npt.ArrayLike, cos_theta: npt.ArrayLike, white: npt.ArrayLike,
+                    space: str = "sRGB", *,
+                    fresnel: Callable[[npt.NDArray[np.float64], npt.NDArray[np.float64]], npt.ArrayLike]
+                   ) -> npt.NDArray[np.float64]:
     """XYZ of F by a three-channel RGB renderer: F0 per display channel, ``fresnel`` per channel.
 
     What a renderer that stores a metal as an RGB "specular colour" does: the colour of the normal
@@ -765,7 +781,7 @@ def fresnel_XYZ_rgb(F0_XYZ, cos_theta, white, space="sRGB", *, fresnel):
 _TAG_TRANSFER = {"sRGB": "sRGB", "SMPTE-C": 2.4}
 
 
-def display_tag(space="sRGB"):
+def display_tag(space: str = "sRGB") -> ColourTag:
     """The :class:`reflectance.io.images.ColourTag` of a display space, for
     :func:`reflectance.io.images.write_png`: colour-science's primaries and whitepoint of the
     space (the xy of the normalised primary matrix's columns and of its white) and the transfer of

@@ -13,7 +13,10 @@ the temporaries stay small at any image size, and the numbers are those of one c
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.colour.colorimetry import OBSERVER_DEFAULT
 from reflectance.colour.display import (XYZ_to_linear_RGB, compress_highlights, display_space,
@@ -33,7 +36,9 @@ def _colour(display, observer, wavelengths):
     return {"illuminant": display.illuminant, "observer": observer, "wavelengths": wavelengths}
 
 
-def exposure_scale(XYZ, display, observer=OBSERVER_DEFAULT, wavelengths=None, white_card=None):
+def exposure_scale(XYZ: npt.NDArray[np.float64], display: Any, observer: str = OBSERVER_DEFAULT,
+                   wavelengths: npt.ArrayLike | None = None,
+                   white_card: float | None = None) -> float:
     """The exposure factor :func:`image_display_RGB` applies to the image ``XYZ`` (its automatic
     exposure; 1 without).
 
@@ -56,8 +61,10 @@ def exposure_scale(XYZ, display, observer=OBSERVER_DEFAULT, wavelengths=None, wh
     return _large_image_scale(XYZ, d, _band_rows(XYZ), _colour(d, observer, wavelengths))
 
 
-def image_display_RGB(XYZ, display, observer=OBSERVER_DEFAULT, wavelengths=None, white_card=None,
-                      exposure=None, encoded=False):
+def image_display_RGB(XYZ: npt.NDArray[np.float64], display: Any, observer: str = OBSERVER_DEFAULT,
+                      wavelengths: npt.ArrayLike | None = None, white_card: float | None = None,
+                      exposure: float | None = None,
+                      encoded: bool = False) -> tuple[npt.NDArray[np.float64], float]:
     """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) of the image ``XYZ``:
     exposed, highlights compressed, gamut clipped; the light the display emits, before the
     transfer function.

@@ -11,11 +11,18 @@ formats whose binary payload is not parsed here: legacy VTK's and VTP's). Each p
 ``ValueError`` of one line that starts with the file's path.
 """
 
+from __future__ import annotations
+
+import os
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    import pyvista as pv
 
 __all__ = ["check_mesh_file", "check_read_mesh"]
 
@@ -302,7 +309,7 @@ def _vtp(data):
 _CHECKS = {".ply": _ply, ".stl": _stl, ".obj": _obj, ".vtk": _vtk, ".vtp": _vtp}
 
 
-def check_mesh_file(path):
+def check_mesh_file(path: str | os.PathLike[str]) -> None:
     """Refuse a mesh file whose header, indices or coordinates VTK would not survive.
 
     Parameters
@@ -331,7 +338,7 @@ def check_mesh_file(path):
         raise ValueError(f"{path}: not a readable {path.suffix[1:].upper()} file ({err})") from None
 
 
-def check_read_mesh(mesh, path):
+def check_read_mesh(mesh: pv.PolyData, path: str | os.PathLike[str]) -> None:
     """What VTK read from ``path``: every cell's vertex index in range, every point finite.
 
     Raises

@@ -21,9 +21,13 @@ an object with varied curvature for Blinn 1977, Fig. 7 (the paper does not descr
 from __future__ import annotations
 
 import functools
+import os
+from collections.abc import Iterable, Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pyvista as pv
 
 __all__ = [
@@ -69,7 +73,8 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(8)
 # Grid triangulation shared by every builder
 # --------------------------------------------------------------------------------------------
 
-def grid_mesh(points, normals, uv, part=0):
+def grid_mesh(points: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+              uv: npt.NDArray[np.float64], part: int = 0) -> pv.PolyData:
     """Triangulate a (rows, cols) grid of vertices; drop zero-area triangles (poles, axis).
 
     Each triangle is oriented so that its geometric normal agrees with its vertex normals.
@@ -85,7 +90,9 @@ def grid_mesh(points, normals, uv, part=0):
                           tris, part)
 
 
-def triangle_mesh(P, N, uv, tris, part):
+def triangle_mesh(P: npt.NDArray[np.float64], N: npt.NDArray[np.float64],
+                  uv: npt.NDArray[np.float64], tris: npt.NDArray[np.integer],
+                  part: int) -> pv.PolyData:
     """Mesh of triangles ``tris``: zero-area ones dropped, each turned to face its normals."""
     cross = np.cross(P[tris[:, 1]] - P[tris[:, 0]], P[tris[:, 2]] - P[tris[:, 0]])
     area2 = np.linalg.norm(cross, axis=-1)
@@ -208,7 +215,7 @@ def _cached_mesh(kind, build, *args):
     return mesh
 
 
-def merge_meshes(meshes):
+def merge_meshes(meshes: Sequence[pv.PolyData]) -> pv.PolyData:
     """Concatenate meshes without welding points (parts keep their own normals and uv)."""
     points, normals, uv, tris, part, sidx = [], [], [], [], [], []
     offset = 0
@@ -248,7 +255,7 @@ def _vector3(value, name):
     return v
 
 
-def check_positive(value, name):
+def check_positive(value: float, name: str) -> float:
     v = float(value)
     if not np.isfinite(v) or v <= 0:
         raise ValueError(f"{name} must be a positive finite number, got {value!r}")
@@ -331,8 +338,8 @@ def _fraction(length):
     return length / length[-1] if length[-1] > 0 else np.zeros_like(length)
 
 
-def vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples=9,
-         interpolation="cubic"):
+def vase(profile: npt.ArrayLike, n_theta: int, n_profile_samples: int, wall_thickness: float,
+         n_rim_samples: int = 9, interpolation: str = "cubic") -> pv.PolyData:
     """Thin-walled vase: a smooth profile revolved about the z axis, open at the top.
 
     The outer wall is the profile interpolated smoothly (chord-length parameter s); the inner
@@ -508,7 +515,7 @@ def _vase(profile, n_theta, n_profile_samples, wall_thickness, n_rim_samples, in
 # Analytic solids
 # --------------------------------------------------------------------------------------------
 
-def sphere(center, radius, n_theta, n_phi):
+def sphere(center: npt.ArrayLike, radius: float, n_theta: int, n_phi: int) -> pv.PolyData:
     """Sphere: a faceted proxy for rasterisation plus the exact centre and radius.
 
     The proxy is a longitude-latitude polyhedron scaled so that it encloses the sphere (every
@@ -563,7 +570,8 @@ def sphere(center, radius, n_theta, n_phi):
     return mesh
 
 
-def torus(major_radius, minor_radius, n_u, n_v, center=(0.0, 0.0, 0.0)):
+def torus(major_radius: float, minor_radius: float, n_u: int, n_v: int,
+          center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
     """Ring torus about the z axis with exact normals; u around the axis, v around the tube.
 
     Parameters
@@ -605,7 +613,8 @@ def _signed_power(x, exponent):
     return np.sign(x) * np.abs(x) ** exponent
 
 
-def superellipsoid_Barr1981(radii, exponents, n_u, n_v, center=(0.0, 0.0, 0.0)):
+def superellipsoid_Barr1981(radii: npt.ArrayLike, exponents: npt.ArrayLike, n_u: int, n_v: int,
+                            center: npt.ArrayLike = (0.0, 0.0, 0.0)) -> pv.PolyData:
     """Superellipsoid (superquadric ellipsoid) with exact normals: an object of varied curvature.
 
     Points ``(a1 C(eta)^e1 C(w)^e2, a2 C(eta)^e1 S(w)^e2, a3 S(eta)^e1)`` and normals
@@ -673,7 +682,8 @@ def superellipsoid_Barr1981(radii, exponents, n_u, n_v, center=(0.0, 0.0, 0.0)):
     return grid_mesh(points, normal, uv)
 
 
-def plane(center, normal, size, resolution, u_direction=None):
+def plane(center: npt.ArrayLike, normal: npt.ArrayLike, size: Sequence[float],
+          resolution: Sequence[int], u_direction: npt.ArrayLike | None = None) -> pv.PolyData:
     """Flat rectangle of triangles, normal constant, uv in [0, 1]^2.
 
     Parameters
@@ -767,7 +777,7 @@ def _with_attributes(mesh, feature_angle, source):
     return out
 
 
-def mesh_from_file(path, feature_angle=30.0):
+def mesh_from_file(path: str | os.PathLike[str], feature_angle: float = 30.0) -> pv.PolyData:
     """Read a triangle mesh (OBJ, PLY, STL, VTK, VTP) with pyvista.
 
     Normals stored in the file are used; otherwise smooth vertex normals are computed, split
@@ -805,7 +815,8 @@ def mesh_from_file(path, feature_angle=30.0):
     return _with_attributes(mesh, float(feature_angle), str(path))
 
 
-def place(mesh, offset=(0.0, 0.0, 0.0), scale=1.0, rotation=None):
+def place(mesh: pv.PolyData, offset: npt.ArrayLike = (0.0, 0.0, 0.0), scale: float = 1.0,
+          rotation: npt.ArrayLike | None = None) -> pv.PolyData:
     """Copy of ``mesh`` moved by ``x -> scale * rotation @ x + offset``.
 
     Normals turn with the rotation; analytic spheres move and scale with the mesh.
@@ -841,7 +852,7 @@ def place(mesh, offset=(0.0, 0.0, 0.0), scale=1.0, rotation=None):
     return out
 
 
-def analytic_spheres(mesh):
+def analytic_spheres(mesh: pv.PolyData) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """(centres (S, 3), radii (S,)) of the analytic spheres a mesh carries (S may be 0)."""
     if "sphere_center" not in mesh.field_data:
         return np.zeros((0, 3)), np.zeros(0)
@@ -849,7 +860,7 @@ def analytic_spheres(mesh):
             np.asarray(mesh.field_data["sphere_radius"], np.float64).reshape(-1))
 
 
-def compose(objects):
+def compose(objects: Iterable[tuple[pv.PolyData, int]]) -> pv.PolyData:
     """Merge objects into one triangle mesh tagged with ``cell_data["object_id"]``.
 
     Parameters
@@ -874,7 +885,10 @@ def compose(objects):
     objects = list(objects)
     if not objects:
         raise ValueError("compose needs at least one (mesh, object_id) pair")
-    meshes, ids, centers, radii = [], [], [], []
+    meshes: list[pv.PolyData] = []
+    ids: list[npt.NDArray[np.int32]] = []
+    centers: Any = []  # the spheres' centres and radii of each object, then all of them
+    radii: Any = []
     for k, item in enumerate(objects):
         if not (isinstance(item, (tuple, list)) and len(item) == 2):
             raise ValueError(f"objects[{k}] must be a (mesh, object_id) pair")

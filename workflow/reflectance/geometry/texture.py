@@ -35,8 +35,11 @@ References
 from __future__ import annotations
 
 import inspect
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "texture_sinusoid",
@@ -47,7 +50,7 @@ __all__ = [
 ]
 
 
-def _uv(u, v):
+def _uv(u: npt.ArrayLike, v: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], ...]:
     u = np.asarray(u, dtype=np.float64)
     v = np.asarray(v, dtype=np.float64)
     if not (np.all(np.isfinite(u)) and np.all(np.isfinite(v))):
@@ -66,7 +69,8 @@ def _unit_interval(x):
     return np.clip(x, 0.0, 1.0)[()]  # numpy scalar for scalar input
 
 
-def texture_sinusoid(u, v, cycles_u=8, cycles_v=4, sharpness=0.0):
+def texture_sinusoid(u: npt.ArrayLike, v: npt.ArrayLike, cycles_u: int = 8, cycles_v: int = 4,
+                     sharpness: float = 0.0) -> npt.NDArray[np.float64] | np.float64:
     """Product of sines: ``t = (1 + S(sin(2 pi a u) sin(2 pi b v))) / 2``.
 
     ``S(s) = tanh(k s) / tanh(k)`` with ``k = sharpness`` (``S(s) = s`` for k = 0) steepens the
@@ -103,7 +107,8 @@ def texture_sinusoid(u, v, cycles_u=8, cycles_v=4, sharpness=0.0):
     return _unit_interval(0.5 * (1.0 + s))
 
 
-def texture_spots(u, v, cells_u=8, cells_v=4, radius=0.35):
+def texture_spots(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4,
+                  radius: float = 0.35) -> npt.NDArray[np.float64] | np.float64:
     """Round spots on a lattice: 1 at each cell centre, falling as a raised cosine to 0.
 
     In cell units (each cell 1 x 1), with d the distance from the cell centre,
@@ -179,7 +184,9 @@ def _value_octave(u, v, nu, nv, octave, seed):
     return (c00 * (1 - fx) + c10 * fx) * (1 - fy) + (c01 * (1 - fx) + c11 * fx) * fy
 
 
-def texture_value_noise(u, v, cells_u=8, cells_v=4, octaves=3, persistence=0.5, seed=0):
+def texture_value_noise(u: npt.ArrayLike, v: npt.ArrayLike, cells_u: int = 8, cells_v: int = 4,
+                        octaves: int = 3, persistence: float = 0.5,
+                        seed: int = 0) -> npt.NDArray[np.float64] | np.float64:
     """Fractal value noise: octaves of interpolated random lattice values, normalised to [0, 1].
 
     Octave o has (cells_u 2^o) x (cells_v 2^o) lattice cells, each lattice point a hashed
@@ -231,7 +238,7 @@ def texture_value_noise(u, v, cells_u=8, cells_v=4, octaves=3, persistence=0.5, 
     return _unit_interval(total / weight).reshape(shape)
 
 
-TEXTURE_METHODS = {
+TEXTURE_METHODS: dict[str, Callable[..., Any]] = {
     "sinusoid": texture_sinusoid,
     "spots": texture_spots,
     "value_noise": texture_value_noise,
@@ -239,7 +246,8 @@ TEXTURE_METHODS = {
 """Texture functions t(u, v) in [0, 1], by name."""
 
 
-def texture(u, v, method="sinusoid", **params):
+def texture(u: npt.ArrayLike, v: npt.ArrayLike, method: str = "sinusoid",
+            **params: Any) -> npt.NDArray[np.float64] | np.float64:
     """Texture value t(u, v) in [0, 1] by one of :data:`TEXTURE_METHODS`.
 
     Parameters

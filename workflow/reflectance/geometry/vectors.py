@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["unit_vector", "normalize", "dot"]
 
 
-def unit_vector(v, name):
+def unit_vector(v: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
     """``v`` scaled to length 1; a one-line error naming ``name`` if it is not a finite non-zero 3-vector."""
     v = np.asarray(v, dtype=np.float64)
     norm = np.linalg.norm(v)
@@ -16,12 +17,13 @@ def unit_vector(v, name):
     return v / norm
 
 
-def normalize(v):
+def normalize(v: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     """Rows of ``v`` (..., 3) scaled to length 1; zero rows stay zero."""
     norm = np.linalg.norm(v, axis=-1, keepdims=True)
     return v / np.where(norm > 0, norm, 1.0)
 
 
-def dot(a, b):
+def dot(a: npt.NDArray[np.float64],
+        b: npt.NDArray[np.float64]) -> npt.NDArray[np.float64] | np.float64:
     """Row-wise dot product of (..., 3) arrays."""
     return np.einsum("...i,...i->...", a, b)

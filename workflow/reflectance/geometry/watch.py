@@ -36,9 +36,15 @@ Transactions on Graphics, 1(1), 7-24 (Fig. 8: a watch).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 import reflectance.geometry as geometry
+
+if TYPE_CHECKING:
+    import pyvista as pv
 
 # geometry.shapes (pyvista, scipy) is loaded on first use by the package's lazy attach
 # (reflectance.lazy), when a function builds a mesh: config.py reads watch()'s keywords at every
@@ -309,14 +315,17 @@ def _rotation_x(angle):
     return np.array([[1.0, 0.0, 0.0], [0.0, c, s], [0.0, -s, c]])
 
 
-def watch(*, case_size=(3.2, 3.6, 0.7), case_corner_radius=0.8, case_edge_radius=0.3,
-          button_radius=0.16, button_length=0.18,
-          window_size=(2.1, 1.0), window_corner_radius=0.15, bezel_width=0.16,
-          bezel_height=0.08, display="12:00", digit_height=0.62, segment_thickness=0.085,
-          digit_slant_deg=8.0, wrist_radius=4.5, band_height=0.3, links_per_side=6,
-          link_size=(0.62, 0.8, 0.26), link_gap=0.07, link_corner_radius=0.12,
-          link_edge_radius=0.07, link_border_width=0.12, inner_band_size=(0.56, 0.18),
-          inner_band_depth=0.05, column_gap=0.05, n_quarter=8, spacing=0.12):
+def watch(*, case_size: Sequence[float] = (3.2, 3.6, 0.7), case_corner_radius: float = 0.8,
+          case_edge_radius: float = 0.3, button_radius: float = 0.16, button_length: float = 0.18,
+          window_size: Sequence[float] = (2.1, 1.0), window_corner_radius: float = 0.15,
+          bezel_width: float = 0.16, bezel_height: float = 0.08, display: str = "12:00",
+          digit_height: float = 0.62, segment_thickness: float = 0.085,
+          digit_slant_deg: float = 8.0, wrist_radius: float = 4.5, band_height: float = 0.3,
+          links_per_side: int = 6, link_size: Sequence[float] = (0.62, 0.8, 0.26),
+          link_gap: float = 0.07, link_corner_radius: float = 0.12, link_edge_radius: float = 0.07,
+          link_border_width: float = 0.12, inner_band_size: Sequence[float] = (0.56, 0.18),
+          inner_band_depth: float = 0.05, column_gap: float = 0.05, n_quarter: int = 8,
+          spacing: float = 0.12) -> pv.PolyData:
     """The LED watch of Cook & Torrance 1982, Fig. 8, as one triangle mesh (units: cm).
 
     Parameters

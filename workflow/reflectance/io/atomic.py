@@ -13,6 +13,7 @@ import os
 import re
 import socket
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 __all__ = ["atomic_write", "write_text", "staged_folder", "remove_stale_temporaries",
@@ -54,7 +55,7 @@ def process_alive(pid, start_time=None):
     return True
 
 
-def remove_stale_temporaries(folder):
+def remove_stale_temporaries(folder: str | os.PathLike[str]) -> list[Path]:
     """Remove the temporary files that writers killed on this host left in ``folder``.
 
     A temporary file whose process is alive (another job writing to the same folder) or that was
@@ -100,7 +101,7 @@ def remove_stale_temporaries(folder):
 
 
 @contextlib.contextmanager
-def atomic_write(path, suffix=None):
+def atomic_write(path: str | os.PathLike[str], suffix: str | None = None) -> Iterator[Path]:
     """Yield a temporary path beside ``path``; move it onto ``path`` only if the block succeeds.
 
     Stale temporary files that killed writers left in the same folder are removed first
@@ -146,7 +147,7 @@ def atomic_write(path, suffix=None):
             os.unlink(tmp)
 
 
-def write_text(path, text):
+def write_text(path: str | os.PathLike[str], text: str) -> None:
     """Write ``text`` to ``path`` (UTF-8, its line endings as they are) in one rename
     (:func:`atomic_write`).
 

@@ -36,7 +36,7 @@ __all__ = ["Memo", "MEMOS", "BUILT_MESHES", "COMPOSED_MESHES", "TRACES", "clear"
            "CACHE_ENVIRONMENT_VARIABLE", "DISK_FOLDERS", "cache_root", "file_name", "store", "load",
            "distribution_version", "source_digest", "prune"]
 
-MEMOS = {}
+MEMOS: dict[str, Memo] = {}
 """Every :class:`Memo` of this process, by name."""
 
 

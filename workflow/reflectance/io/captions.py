@@ -11,7 +11,9 @@ a stale number in it.
 
 from __future__ import annotations
 
+import os
 import re
+from collections.abc import Mapping
 from pathlib import Path
 
 from reflectance.io.atomic import atomic_write
@@ -24,7 +26,7 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _DEFINITION = re.compile(r"\.\. \|(?P<name>[^|]+)\| replace:: (?P<text>.+)")
 
 
-def write_caption_values(path, values):
+def write_caption_values(path: str | os.PathLike[str], values: Mapping[str, str]) -> None:
     """Write ``values`` ({name: text}) to ``path`` as substitution definitions, in one rename.
 
     Each text is what the caption shows, formatted by the caller from its own table (``f"{x:.2f}"``
@@ -60,7 +62,7 @@ def write_caption_values(path, values):
         Path(tmp).write_text("".join(lines))
 
 
-def read_caption_values(path):
+def read_caption_values(path: str | os.PathLike[str]) -> dict[str, str]:
     """{name: text} of a file :func:`write_caption_values` wrote."""
     values = {}
     for line in Path(path).read_text().splitlines():

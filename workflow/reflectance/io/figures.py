@@ -16,7 +16,9 @@ font).
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -24,6 +26,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from reflectance.io.atomic import atomic_write  # noqa: E402
+
+if TYPE_CHECKING:
+    import pyvista as pv
+    from matplotlib.figure import Figure
+
+    from reflectance.io.images import ColourTag
 
 __all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter", "trim_to_content",
            "save_plotter", "font_file", "set_vtk_font"]
@@ -73,8 +81,9 @@ STYLE = {
     "axes.spines.right": False,
     "axes.grid": False,
     "axes.axisbelow": True,
-    "axes.prop_cycle": matplotlib.cycler(color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7)]
-                                          + [DARK_YELLOW]),  # yellow last, darkened for white
+    "axes.prop_cycle": matplotlib.cycler(  # type: ignore[attr-defined]  # not in its stubs
+        color=[OKABE_ITO[i] for i in (0, 1, 2, 3, 4, 5, 7)]
+        + [DARK_YELLOW]),  # yellow last, darkened for white
     "axes.xmargin": 0.0,
     "grid.color": "0.9",
     "grid.linewidth": 0.6,
@@ -141,14 +150,15 @@ _METADATA = {
 }
 
 
-def new_figure(width_in=7.0, height_in=4.0, **kwargs):
+def new_figure(width_in: float = 7.0, height_in: float = 4.0, **kwargs: Any) -> Figure:
     """A matplotlib figure in the project's style (:data:`STYLE`, applied to this process)."""
     apply_style()
     fig = plt.figure(figsize=(width_in, height_in), **kwargs)
     return fig
 
 
-def savefig(fig, *paths, dpi=200, tight=True, tag=None):
+def savefig(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 200, tight: bool = True,
+            tag: ColourTag | None = None) -> None:
     """Save ``fig`` to each path (.png or .pdf) deterministically and atomically, then close it.
 
     ``tight`` crops the file to its content (a small margin); pass ``False`` for layouts placed
@@ -166,13 +176,13 @@ def savefig(fig, *paths, dpi=200, tight=True, tag=None):
 
     from reflectance.io.images import SRGB_TAG, tag_png
 
-    paths = [Path(p) for p in paths]
-    for path in paths:
+    files = [Path(p) for p in paths]
+    for path in files:
         if path.suffix.lower() not in _METADATA:
             raise ValueError(f"figure path {path}: suffix must be one of {sorted(_METADATA)}")
     os.environ.setdefault("SOURCE_DATE_EPOCH", "0")
     try:
-        for path in paths:
+        for path in files:
             suffix = path.suffix.lower()
             buffer = io.BytesIO()
             fig.savefig(buffer, dpi=dpi, metadata=_METADATA[suffix], format=suffix[1:],
@@ -186,7 +196,7 @@ def savefig(fig, *paths, dpi=200, tight=True, tag=None):
         plt.close(fig)
 
 
-def off_screen_plotter(width, height, shape=(1, 1)):
+def off_screen_plotter(width: int, height: int, shape: Sequence[int] = (1, 1)) -> pv.Plotter:
     """A pyvista plotter that renders off-screen (EGL on a machine without a display).
 
     ``shape = (rows, columns)`` makes a grid of subplots (select one with ``plotter.subplot(i, j)``),
@@ -243,7 +253,8 @@ def trim_to_content(img, margin):
     return out
 
 
-def save_plotter(plotter, path, margin=None):
+def save_plotter(plotter: pv.Plotter, path: str | os.PathLike[str],
+                 margin: int | None = None) -> None:
     """Screenshot a pyvista plotter to a deterministic PNG (through the project's PNG writer),
     tagged sRGB: VTK's colours are sRGB values, written to the screen as they are. With
     ``margin`` (pixels), the screenshot is trimmed to its content and given that margin

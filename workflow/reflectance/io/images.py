@@ -39,12 +39,15 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import os
 import struct
 import zlib
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import OpenEXR
 
 from reflectance.io.atomic import atomic_write
@@ -141,7 +144,7 @@ def _icc_text_description(text):
             + struct.pack(">II", 0, 0) + struct.pack(">HB", 0, 0) + bytes(67))
 
 
-def icc_profile_v2(tag, copyright="No copyright, use freely"):
+def icc_profile_v2(tag: ColourTag, copyright: str = "No copyright, use freely") -> bytes:
     """An ICC version 2.4 RGB display profile (matrix/TRC) for a :class:`ColourTag` with a power
     transfer, as bytes; identical input gives identical bytes.
 
@@ -218,7 +221,8 @@ def _png_colour_chunks(tag):
             + _png_chunk(b"iCCP", name + b"\0\0" + zlib.compress(profile, 9)))
 
 
-def write_png(path, rgb01, bit_depth=8, tag=None):
+def write_png(path: str | os.PathLike[str], rgb01: npt.ArrayLike, bit_depth: int = 8,
+              tag: ColourTag | None = None) -> None:
     """Write display RGB in [0, 1] as a PNG, 8 or 16 bits per channel, deterministically.
 
     Values are quantised to the nearest code ``round(v * (2^b - 1))`` (ties to even). Rows use
@@ -294,7 +298,7 @@ def write_png(path, rgb01, bit_depth=8, tag=None):
 _PNG_COLOUR_CHUNK_TYPES = (b"cHRM", b"gAMA", b"iCCP", b"sRGB", b"cICP")
 
 
-def tag_png(data, tag):
+def tag_png(data: bytes, tag: ColourTag) -> bytes:
     """The PNG ``data`` (bytes) with the colour chunks of ``tag`` added: the same cHRM, gAMA and
     sRGB or iCCP chunks :func:`write_png` writes, placed right after IHDR (PNG specification
     §5.6: before PLTE and IDAT). The pixels and every other chunk are kept byte for byte, so
@@ -348,7 +352,8 @@ def _attribute_text(key, value):
         ) from error
 
 
-def write_exr_XYZ(path, XYZ, attributes=None):
+def write_exr_XYZ(path: str | os.PathLike[str], XYZ: npt.ArrayLike,
+                  attributes: Mapping[str, Any] | None = None) -> None:
     """Write a linear CIE XYZ image as a float32 OpenEXR file, deterministically.
 
     Channels ``X``, ``Y``, ``Z`` (FLOAT), ZIP compression, scanline image, ``chromaticities`` set
@@ -430,7 +435,8 @@ def tag_chromaticities(tag):
             *np.asarray(tag.whitepoint, np.float64).reshape(2).tolist())
 
 
-def write_exr_RGB(path, RGB, tag, attributes=None):
+def write_exr_RGB(path: str | os.PathLike[str], RGB: npt.ArrayLike, tag: ColourTag,
+                  attributes: Mapping[str, Any] | None = None) -> None:
     """Write display-referred linear RGB as a float32 OpenEXR file, deterministically.
 
     As :func:`write_exr_XYZ`, with channels ``R``, ``G``, ``B`` and ``chromaticities`` the
@@ -452,7 +458,8 @@ def write_exr_RGB(path, RGB, tag, attributes=None):
     _write_exr(path, RGB, "RGB", tag_chromaticities(tag), attributes)
 
 
-def read_exr(path, channels="XYZ"):
+def read_exr(path: str | os.PathLike[str],
+             channels: str = "XYZ") -> tuple[npt.NDArray[np.float32], dict[str, Any]]:
     """Read an XYZ OpenEXR image written by :func:`write_exr_XYZ` (or any file with X, Y, Z;
     ``channels="RGB"``: R, G, B, as :func:`write_exr_RGB` writes them).
 

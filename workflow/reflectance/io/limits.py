@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Sequence
 
 __all__ = ["ELEMENT_BYTES", "ELEMENT_SECONDS", "MAX_SECONDS", "physical_memory_bytes",
            "grid_points", "size_problem", "describe_bytes", "describe_seconds"]
@@ -30,7 +31,7 @@ ELEMENT_SECONDS = 1e-6
 MAX_SECONDS = 3600.0
 
 
-def physical_memory_bytes():
+def physical_memory_bytes() -> int | None:
     """This machine's physical memory (None where the system does not tell)."""
     try:
         return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
@@ -38,7 +39,7 @@ def physical_memory_bytes():
         return None
 
 
-def grid_points(span, step, ends=1):
+def grid_points(span: float, step: float, ends: int = 1) -> int:
     """Points of a grid of ``step`` over ``span`` (counted: no array is made), plus ``ends``.
 
     Examples
@@ -62,7 +63,9 @@ def describe_seconds(t):
             else f"{t:.0f} s")
 
 
-def size_problem(key, value, dims, memory=None, max_seconds=MAX_SECONDS, streamed=False):
+def size_problem(key: str, value: str, dims: Sequence[tuple[float, str]],
+                 memory: float | None = None, max_seconds: float = MAX_SECONDS,
+                 streamed: bool = False) -> str | None:
     """One line if the arrays a size makes cannot fit or take too long, else None.
 
     Parameters

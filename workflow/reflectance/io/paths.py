@@ -4,7 +4,9 @@ own data (``reflectance/data``) is."""
 
 from __future__ import annotations
 
+import os
 import re
+from importlib.resources.abc import Traversable
 from pathlib import Path
 
 __all__ = ["package_data", "file_inside", "project_file", "check_name"]
@@ -13,7 +15,7 @@ __all__ = ["package_data", "file_inside", "project_file", "check_name"]
 _NAME = re.compile(r"[^/\\\x00-\x1f.][^/\\\x00-\x1f]*")
 
 
-def package_data(*parts):
+def package_data(*parts: str) -> Traversable:
     """The file or folder ``reflectance/data/<parts>`` of the installed package.
 
     Found with :mod:`importlib.resources`, so that it is the package's own copy wherever the
@@ -30,7 +32,8 @@ def package_data(*parts):
     return files("reflectance").joinpath("data", *parts)
 
 
-def file_inside(value, root, where="the project folder"):
+def file_inside(value: str | os.PathLike[str], root: str | os.PathLike[str],
+                where: str = "the project folder") -> str:
     """``value`` (a relative path read from data) as a POSIX path, if it stays inside ``root``.
 
     ValueError otherwise (an absolute path, or one that leaves ``root`` through ``..`` or a
@@ -56,7 +59,7 @@ def file_inside(value, root, where="the project folder"):
     return path.as_posix()
 
 
-def project_file(value, key, root):
+def project_file(value: str | os.PathLike[str], key: str, root: str | os.PathLike[str]) -> str:
     """``value`` (a path from config ``key``) as a path relative to the project folder ``root``.
 
     Refuses, naming ``key``, an absolute path or one that leaves ``root`` (through ``..`` or a
@@ -77,7 +80,7 @@ def project_file(value, key, root):
         raise ValueError(f"{key}: {err}") from None
 
 
-def check_name(name, what="material"):
+def check_name(name: str, what: str = "material") -> str:
     """``name`` if it is a plain name (no path separator, not '.' or '..'), else ValueError.
 
     Examples

@@ -12,6 +12,9 @@ carries the commands' CSV and JSON.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable, Sequence
+from types import TracebackType
+from typing import Any, TextIO
 
 __all__ = ["Progress", "WORKER_PROGRESS", "worker_progress", "run_worker", "worker_main"]
 
@@ -47,8 +50,8 @@ class Progress:
     ''
     """
 
-    def __init__(self, total, label, stream=None, enabled=True, tty=None, unit=" steps",
-                 unit_scale=False):
+    def __init__(self, total: int | None, label: str, stream: TextIO | None = None, enabled: bool = True, tty: bool | None = None, unit: str = " steps",
+                 unit_scale: bool = False) -> None:
         from tqdm import tqdm
 
         self.label = label
@@ -62,10 +65,10 @@ class Progress:
         self.enabled = not self._bar.disable  # (tqdm disables a bar when it closes)
         self._closed = False
 
-    def __enter__(self):
+    def __enter__(self) -> Progress:
         return self
 
-    def __exit__(self, kind, value, traceback):
+    def __exit__(self, kind: type[BaseException] | None, value: BaseException | None, traceback: TracebackType | None) -> None:
         """Closes the bar if the task did not: stopped (``"interrupted"`` by Ctrl-C, else
         ``"failed"``), before the caller says why on a line of its own."""
         if not self._closed:
@@ -76,14 +79,14 @@ class Progress:
                            complete=False)
 
     @property
-    def total(self):
+    def total(self) -> int | None:
         return self._bar.total
 
     @total.setter
-    def total(self, value):
+    def total(self, value: int | None) -> None:
         self._bar.total, self._bar.unit_scale = value, self._unit_scale
 
-    def update(self, done=None, message=None, total=None):
+    def update(self, done: int | None = None, message: str | None = None, total: int | None = None) -> None:
         """``done`` units of the work are finished (None: as before), ``message`` is under way
         (None: as before) and the work has ``total`` units (None: as before)."""
         bar = self._bar
@@ -101,7 +104,7 @@ class Progress:
         if bar.last_print_t == drawn:  # not drawn by update (at most every mininterval)
             bar.refresh()
 
-    def close(self, message="done", complete=True):
+    def close(self, message: str = "done", complete: bool = True) -> None:
         """The task is finished (``complete``: all its units) or stopped (a failure: the count
         as it is); the bar's last state stays on its line, the line ended. Once only."""
         if self._closed:
@@ -151,7 +154,7 @@ def run_worker(module, job, progress=None, failure="worker failed"):
     return json.loads("".join(lines).strip().splitlines()[-1])
 
 
-def worker_main(function, argv=None):
+def worker_main(function: Callable[..., Any], argv: Sequence[str] | None = None) -> None:
     """The main of a module that :func:`run_worker` runs: ``function(**job,
     progress=worker_progress)`` for the job given as ``--worker JSON``, its value printed as
     JSON on the last line of standard output. ``argv``: the arguments (default: the process's).

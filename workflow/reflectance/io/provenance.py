@@ -19,10 +19,13 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import platform
 import subprocess
 import sys
+from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import Any
 
 import yaml
 
@@ -36,7 +39,7 @@ FORMAT = "reflectance provenance 1"
 METADATA_FORMAT = "reflectance audit metadata 1"
 
 
-def sha256_file(path):
+def sha256_file(path: str | os.PathLike[str]) -> str:
     """Hex SHA-256 of a file's bytes.
 
     Examples
@@ -129,7 +132,7 @@ def provenance(outputs, spectra, config, config_file="config.yaml", git=None, ro
     }
 
 
-def write_provenance(path, manifest):
+def write_provenance(path: str | os.PathLike[str], manifest: Mapping[str, Any]) -> None:
     """Write a :func:`provenance` manifest as YAML (keys in order, atomically)."""
     text = ("# Provenance of this build (reflectance.io.provenance): check a file with\n"
             "#   sha256sum <file>   against its entry under outputs.\n"
@@ -138,7 +141,7 @@ def write_provenance(path, manifest):
         Path(tmp).write_text(text, encoding="utf-8")
 
 
-def metadata_path(table):
+def metadata_path(table: str | os.PathLike[str]) -> Path:
     """The metadata file beside a table: ``audit.csv`` -> ``audit_metadata.yaml``.
 
     Examples
@@ -150,7 +153,8 @@ def metadata_path(table):
     return table.with_name(f"{table.stem}_metadata.yaml")
 
 
-def write_metadata(path, document, tables=()):
+def write_metadata(path: str | os.PathLike[str], document: Mapping[str, Any],
+                   tables: Iterable[str | os.PathLike[str]] = ()) -> None:
     """Write an audit table's metadata ``document`` (a mapping, in the order to be read) as YAML,
     atomically; with ``tables`` (paths), their SHA-256 under ``tables`` at the end.
 

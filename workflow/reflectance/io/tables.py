@@ -4,14 +4,20 @@ and are printed to the precision they carry."""
 from __future__ import annotations
 
 import math
+import os
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 from reflectance.io.atomic import atomic_write
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = ["write_csv", "Column", "csv_cell", "csv_text", "columns_metadata"]
 
 
-def write_csv(table, path, **options):
+def write_csv(table: pd.DataFrame, path: str | os.PathLike[str], **options: Any) -> None:
     """Write a pandas DataFrame to ``path`` as CSV (no index, ``\\n`` line ends) in one rename.
 
     Usable as ``table.pipe(write_csv, path, float_format="%.6g")``; ``options`` go to
@@ -57,7 +63,7 @@ class Column:
     significant: int | None = None
 
     @property
-    def precision(self):
+    def precision(self) -> str:
         """How the column is printed, in words (for metadata and help texts)."""
         if self.decimals is not None:
             return f"{self.decimals} decimals"
@@ -65,7 +71,7 @@ class Column:
             return f"{self.significant} significant digits"
         return "text"
 
-    def format(self, value):
+    def format(self, value: Any) -> str:
         if self.decimals is None and self.significant is None:
             return csv_cell(value)
         value = float(value)
@@ -76,7 +82,7 @@ class Column:
         return f"{float(f'{value:.{self.significant}g}') + 0.0:.{self.significant}g}"
 
 
-def csv_cell(text):
+def csv_cell(text: str) -> str:
     """A text field of a CSV: quoted only if it holds a comma, a quote or a line break."""
     text = "" if text is None else str(text)
     if any(c in text for c in ',"\n\r'):
@@ -84,7 +90,7 @@ def csv_cell(text):
     return text
 
 
-def csv_text(table, columns):
+def csv_text(table: Mapping[str, Sequence[Any]], columns: Sequence[Column]) -> str:
     """CSV text of ``table`` (column name -> sequence) in the order of ``columns`` (:class:`Column`
     each), ``\\n`` line endings, each value printed as its column says."""
     lines = [",".join(c.name for c in columns)]
@@ -93,7 +99,7 @@ def csv_text(table, columns):
     return "\n".join(lines) + "\n"
 
 
-def columns_metadata(columns):
+def columns_metadata(columns: Iterable[Column]) -> dict[str, dict[str, str]]:
     """``{name: {"unit", "precision", "description"}}`` of ``columns``, for a metadata file."""
     return {c.name: {"unit": c.unit or "1", "precision": c.precision,
                      "description": c.description} for c in columns}

@@ -13,7 +13,9 @@ document built, by a safe loader (data only) that refuses a key given twice in o
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
+from typing import Any
 
 import yaml
 
@@ -128,7 +130,7 @@ def _syntax_message(err):
     return f"{where}: not valid YAML: {what}"
 
 
-def load_yaml_text(text, source="<yaml>"):
+def load_yaml_text(text: str, source: str = "<yaml>") -> Any:
     """The document of ``text`` (see :func:`read_yaml`); YAMLFileError naming ``source``.
 
     Examples
@@ -166,7 +168,7 @@ def load_yaml_text(text, source="<yaml>"):
         raise YAMLFileError(f"{source}: {err}") from None
 
 
-def read_yaml(path, encoding="utf-8"):
+def read_yaml(path: str | os.PathLike[str], encoding: str = "utf-8") -> Any:
     """The document of the YAML file ``path``, built only if it stays within the bounds
     (:data:`MAX_BYTES`, :data:`MAX_DEPTH`, :data:`MAX_NODES`) and gives no key twice;
     YAMLFileError, one line naming the file (and the line), otherwise. ``encoding``: "utf-8",

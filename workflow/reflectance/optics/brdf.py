@@ -54,8 +54,11 @@ References
 from __future__ import annotations
 
 import inspect
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.microfacet import CONVENTIONS, distribution
 from reflectance.optics.shadowing import G_over_NE_Blinn1977, shadowing
@@ -86,7 +89,7 @@ def _out(x):
     return x[()] if x.ndim == 0 else x
 
 
-def _cosines(*cosines):
+def _cosines(*cosines: npt.ArrayLike) -> list[npt.NDArray[np.float64]]:
     # Round-off can push a cosine of unit vectors outside [-1, 1].
     return [np.clip(np.asarray(c, dtype=np.float64), -1.0, 1.0) for c in cosines]
 
@@ -109,7 +112,8 @@ def _check_convention(convention):
         )
 
 
-def _fresnel_values(F, VH):
+def _fresnel_values(F: npt.ArrayLike | Callable[[npt.NDArray[np.float64]], npt.ArrayLike] | None,
+                    VH: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     """F given as values (broadcasting against the cosines) or as a function of ``cos_theta``."""
     if F is None:
         raise ValueError("This model needs the Fresnel term 'F' (values or a function of V.H).")
@@ -128,7 +132,8 @@ def _distribution_values(NH, method, convention, parameters):
 
 # --- diffuse and empirical models -----------------------------------------------------------------
 
-def brdf_Lambert(NL, NV, rho_d=1.0, convention="physical"):
+def brdf_Lambert(NL: npt.ArrayLike, NV: npt.ArrayLike, rho_d: npt.ArrayLike = 1.0,
+                 convention: str = "physical") -> npt.NDArray[np.float64] | np.float64:
     """Lambertian diffuse reflection.
 
     ``"paper"``: ``f = p_d`` (Blinn 1977: ``i = p_a + d p_d`` with ``d = max(0, N.L)``).
@@ -159,7 +164,9 @@ def brdf_Lambert(NL, NV, rho_d=1.0, convention="physical"):
     return _out(np.where(_lit_and_seen(NL, NV), f, 0.0))
 
 
-def brdf_Phong1975(NL, NV, RV, p_d=0.0, p_s=1.0, c1=50.0):
+def brdf_Phong1975(NL: npt.ArrayLike, NV: npt.ArrayLike, RV: npt.ArrayLike,
+                   p_d: npt.ArrayLike = 0.0, p_s: npt.ArrayLike = 1.0,
+                   c1: npt.ArrayLike = 50.0) -> npt.NDArray[np.float64] | np.float64:
     """Phong's model with the mirror direction, ``i = p_a + d p_d + s p_s``, ``s = (R.V)^c1``.
 
     ``R = 2 (N.L) N - L`` is the mirror reflection of L, so ``R.V = 2 (N.L)(N.V) - L.V``. As a
@@ -191,7 +198,9 @@ def brdf_Phong1975(NL, NV, RV, p_d=0.0, p_s=1.0, c1=50.0):
     return _out(np.where(_lit_and_seen(NL, NV), f, 0.0))
 
 
-def brdf_BlinnPhong1977(NL, NV, NH, p_d=0.0, p_s=1.0, c1=50.0):
+def brdf_BlinnPhong1977(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                        p_d: npt.ArrayLike = 0.0, p_s: npt.ArrayLike = 1.0,
+                        c1: npt.ArrayLike = 50.0) -> npt.NDArray[np.float64] | np.float64:
     """Phong's model as Blinn writes it, with the half vector: ``s = (N.H)^c1``.
 
     ``i = p_a + d p_d + s p_s`` with ``d = max(0, N.L)``; as a BRDF ``f = p_d + p_s (N.H)^c1 / (N.L)``.
@@ -223,7 +232,10 @@ def brdf_BlinnPhong1977(NL, NV, NH, p_d=0.0, p_s=1.0, c1=50.0):
     return _out(np.where(_lit_and_seen(NL, NV), f, 0.0))
 
 
-def brdf_BlinnPhong_AkenineMoller2008(NL, NV, NH, c_diff=0.0, c_spec=1.0, m=50.0):
+def brdf_BlinnPhong_AkenineMoller2008(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                                      c_diff: npt.ArrayLike = 0.0, c_spec: npt.ArrayLike = 1.0,
+                                      m: npt.ArrayLike = 50.0
+                                     ) -> npt.NDArray[np.float64] | np.float64:
     """The lecture's normalised Blinn-Phong: ``f = c_diff / pi + (m + 8) / (8 pi) cos^m theta_h c_spec``.
 
     From ``L_o(v) = (c_diff / pi + (m + 8)/(8 pi) cos^m theta_h c_spec) E_L cos theta_i``. The
@@ -262,9 +274,13 @@ def brdf_BlinnPhong_AkenineMoller2008(NL, NV, NH, c_diff=0.0, c_spec=1.0, m=50.0
 
 # --- microfacet models ----------------------------------------------------------------------------
 
-def brdf_TorranceSparrow_Blinn1977(
-    NL, NV, NH, VH, F=None, p_d=0.0, p_s=1.0, distribution="TrowbridgeReitz1975", **distribution_parameters
-):
+def brdf_TorranceSparrow_Blinn1977(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                                   VH: npt.ArrayLike,
+                                   F: npt.ArrayLike | Callable[[npt.NDArray[np.float64]], npt.ArrayLike] | None = None,
+                                   p_d: npt.ArrayLike = 0.0, p_s: npt.ArrayLike = 1.0,
+                                   distribution: str = "TrowbridgeReitz1975",
+                                   **distribution_parameters: Any
+                                  ) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's Torrance-Sparrow highlight ``s = D G F / (N.E)`` in ``i = p_a + d p_d + s p_s``.
 
     As a BRDF, ``f = p_d + p_s D F [G / (N.E)] / (N.L)``, with ``G / (N.E)`` by Blinn's
@@ -306,10 +322,13 @@ def brdf_TorranceSparrow_Blinn1977(
     return _out(np.where(_lit_and_seen(NL, NV), f, 0.0))
 
 
-def brdf_CookTorrance1982(
-    NL, NV, NH, VH, F=None, s=1.0, d=0.0, R_d=0.0, distribution="Beckmann1963",
-    shadowing_method="VCavity_Blinn1977", convention="paper", **distribution_parameters,
-):
+def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                          VH: npt.ArrayLike,
+                          F: npt.ArrayLike | Callable[[npt.NDArray[np.float64]], npt.ArrayLike] | None = None,
+                          s: npt.ArrayLike = 1.0, d: npt.ArrayLike = 0.0, R_d: npt.ArrayLike = 0.0,
+                          distribution: str = "Beckmann1963",
+                          shadowing_method: str = "VCavity_Blinn1977", convention: str = "paper",
+                          **distribution_parameters: Any) -> npt.NDArray[np.float64] | np.float64:
     """Cook & Torrance's bidirectional reflectance ``R = s R_s + d R_d``, ``s + d = 1``.
 
     ``"paper"``: ``R_s = (F / pi) D G / ((N.L)(N.V))`` with D as printed (Beckmann without 1/pi).
@@ -378,7 +397,8 @@ def brdf_CookTorrance1982(
     return _out(np.where(_lit_and_seen(NL, NV), R, 0.0))
 
 
-def ambient_reflectance_CookTorrance1982(R_d):
+def ambient_reflectance_CookTorrance1982(R_d: npt.ArrayLike
+                                        ) -> npt.NDArray[np.float64] | np.float64:
     """Ambient reflectance as Cook & Torrance set it for their vases: ``R_a = pi R_d``.
 
     References
@@ -393,7 +413,11 @@ def ambient_reflectance_CookTorrance1982(R_d):
     return _out(np.pi * np.asarray(R_d, dtype=np.float64))  # Cook & Torrance 1982, R_a = pi R_d
 
 
-def intensity_CookTorrance1982(R, NL, I_l, domega_l, I_ia=0.0, R_a=0.0, unblocked_fraction=1.0):
+def intensity_CookTorrance1982(R: npt.ArrayLike, NL: npt.ArrayLike, I_l: npt.ArrayLike,
+                               domega_l: npt.ArrayLike, I_ia: npt.ArrayLike = 0.0,
+                               R_a: npt.ArrayLike = 0.0,
+                               unblocked_fraction: npt.ArrayLike = 1.0
+                              ) -> npt.NDArray[np.float64] | np.float64:
     """Reflected intensity ``I_r = I_ia R_a f + sum_l I_il (N.L_l) d omega_il R_l``.
 
     Parameters
@@ -438,7 +462,10 @@ def intensity_CookTorrance1982(R, NL, I_l, domega_l, I_ia=0.0, R_a=0.0, unblocke
 
 # --- anisotropic models of the article ------------------------------------------------------------
 
-def brdf_Ward1992(NL, NV, NH, HX, HY, rho_s=1.0, alpha_x=0.1, alpha_y=0.1, rho_d=0.0):
+def brdf_Ward1992(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike, HX: npt.ArrayLike,
+                  HY: npt.ArrayLike, rho_s: npt.ArrayLike = 1.0, alpha_x: npt.ArrayLike = 0.1,
+                  alpha_y: npt.ArrayLike = 0.1,
+                  rho_d: npt.ArrayLike = 0.0) -> npt.NDArray[np.float64] | np.float64:
     """Ward's anisotropic Gaussian, as the article writes its specular term.
 
     The article: ``k_spec = rho_s / sqrt((N.L)(N.V)) (N.L) / (4 pi alpha_x alpha_y)
@@ -482,7 +509,11 @@ def brdf_Ward1992(NL, NV, NH, HX, HY, rho_s=1.0, alpha_x=0.1, alpha_y=0.1, rho_d
     return _out(np.where(lit, f, 0.0))
 
 
-def brdf_HeidrichSeidel1998(NL, NV, LT, VT, LV, s=50.0, k_d=0.0, k_s=1.0, form="HeidrichSeidel1998"):
+def brdf_HeidrichSeidel1998(NL: npt.ArrayLike, NV: npt.ArrayLike, LT: npt.ArrayLike,
+                            VT: npt.ArrayLike, LV: npt.ArrayLike, s: npt.ArrayLike = 50.0,
+                            k_d: npt.ArrayLike = 0.0, k_s: npt.ArrayLike = 1.0,
+                            form: str = "HeidrichSeidel1998"
+                           ) -> npt.NDArray[np.float64] | np.float64:
     """Heidrich & Seidel's anisotropic model for fibres of direction T, as a BRDF.
 
     ``k_diff = L.P = sqrt(1 - (L.T)^2)`` (P: the fibre normal in the plane of L and T) and
@@ -544,7 +575,8 @@ def brdf_HeidrichSeidel1998(NL, NV, LT, VT, LV, s=50.0, k_d=0.0, k_s=1.0, form="
     return _out(np.where(valid, f, 0.0))
 
 
-def brdf_LommelSeeliger(NL, NV, albedo=1.0):
+def brdf_LommelSeeliger(NL: npt.ArrayLike, NV: npt.ArrayLike,
+                        albedo: npt.ArrayLike = 1.0) -> npt.NDArray[np.float64] | np.float64:
     """The Lommel-Seeliger law of a dusty, lunar-like surface: ``f = w / (4 pi (N.L + N.V))``.
 
     Single scattering by isotropic particles in a semi-infinite layer of single-scattering albedo
@@ -577,7 +609,10 @@ def brdf_LommelSeeliger(NL, NV, albedo=1.0):
     return _out(np.where(lit, f, 0.0))
 
 
-def brdf_Hapke1981(NL, NV, LV, albedo=1.0, B0=1.0, h=0.06, xi=0.0, multiple_scattering=True):
+def brdf_Hapke1981(NL: npt.ArrayLike, NV: npt.ArrayLike, LV: npt.ArrayLike,
+                   albedo: npt.ArrayLike = 1.0, B0: npt.ArrayLike = 1.0, h: npt.ArrayLike = 0.06,
+                   xi: npt.ArrayLike = 0.0,
+                   multiple_scattering: bool = True) -> npt.NDArray[np.float64] | np.float64:
     """Hapke's bidirectional reflectance of a particulate (lunar) surface, with its opposition effect.
 
     Hapke 1981: ``r(i, e, g) = (w / 4 pi) mu_0 / (mu_0 + mu) {[1 + B(g)] p(g) + H(mu_0) H(mu) - 1}``,
@@ -636,6 +671,7 @@ def brdf_Hapke1981(NL, NV, LV, albedo=1.0, B0=1.0, h=0.06, xi=0.0, multiple_scat
     tan_half = np.sqrt(np.maximum(1.0 - LV, 0.0) / _positive(1.0 + LV))
     B = B0 / (1.0 + tan_half / h)  # Hapke 1986, shadow-hiding opposition effect
     p = (1.0 - xi * xi) / (1.0 + 2.0 * xi * LV + xi * xi) ** 1.5  # Henyey & Greenstein 1941, in g
+    multiple: npt.NDArray[np.float64] | float
     if multiple_scattering:
         gamma = np.sqrt(np.maximum(1.0 - w, 0.0))
         H0 = (1.0 + 2.0 * NL) / (1.0 + 2.0 * gamma * NL)  # Hapke 1981, approximate H function
@@ -650,7 +686,7 @@ def brdf_Hapke1981(NL, NV, LV, albedo=1.0, B0=1.0, h=0.06, xi=0.0, multiple_scat
 
 # --- registry, vector-level dispatcher, albedo ----------------------------------------------------
 
-BRDF_METHODS = {
+BRDF_METHODS: dict[str, Callable[..., Any]] = {
     "Lambert": brdf_Lambert,
     "Phong1975": brdf_Phong1975,
     "BlinnPhong1977": brdf_BlinnPhong1977,
@@ -667,7 +703,7 @@ BRDF_METHODS = {
 _COSINE_NAMES = ("NL", "NV", "NH", "VH", "RV", "HX", "HY", "LT", "VT", "LV")
 
 
-def _unit_vectors(v, name):
+def _unit_vectors(v: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
     v = np.asarray(v, dtype=np.float64)
     if v.shape[-1:] != (3,):
         raise ValueError(f"'{name}' must have shape (..., 3), got {v.shape}.")
@@ -681,8 +717,11 @@ def _dot(a, b):
     return np.sum(a * b, axis=-1)
 
 
-def brdf(L, V, N, method="CookTorrance1982", X=None, Y=None, T=None, n=None, k=None,
-         fresnel_method="exact", **parameters):
+def brdf(L: npt.ArrayLike, V: npt.ArrayLike, N: npt.ArrayLike, method: str = "CookTorrance1982",
+         X: npt.ArrayLike | None = None, Y: npt.ArrayLike | None = None,
+         T: npt.ArrayLike | None = None, n: npt.ArrayLike | None = None,
+         k: npt.ArrayLike | None = None, fresnel_method: str = "exact",
+         **parameters: Any) -> npt.NDArray[np.float64] | np.float64:
     """Evaluate a model of :data:`BRDF_METHODS` on direction vectors.
 
     Parameters
@@ -755,7 +794,7 @@ def brdf(L, V, N, method="CookTorrance1982", X=None, Y=None, T=None, n=None, k=N
     if "F" in accepted and "F" not in parameters and n is not None:
         from reflectance.optics.fresnel import fresnel  # imported here: fresnel is an optional companion
 
-        spectral = np.ndim(n) > 0 or np.ndim(k) > 0
+        spectral = np.ndim(n) > 0 or (k is not None and np.ndim(k) > 0)
         if spectral:
             cosines = {name: c[..., None] for name, c in cosines.items()}
         parameters["F"] = fresnel(cosines["VH"], n, 0.0 if k is None else k, method=fresnel_method)
@@ -775,7 +814,9 @@ def _graded_unit_rule(levels=12, nodes=24):
     return ((b - a) / 2 * x + (a + b) / 2).ravel(), ((b - a) / 2 * w).ravel()
 
 
-def directional_albedo(L, method="CookTorrance1982", N=(0.0, 0.0, 1.0), n_phi=128, **parameters):
+def directional_albedo(L: npt.ArrayLike, method: str = "CookTorrance1982",
+                       N: npt.ArrayLike = (0.0, 0.0, 1.0), n_phi: int = 128,
+                       **parameters: Any) -> npt.NDArray[np.float64] | np.float64:
     """Directional albedo ``integral f(L, V) (N.V) d omega_V`` over the viewing hemisphere.
 
     Integrated over half vectors H (``V = 2 (L.H) H - L``, ``d omega_V = 4 (V.H) d omega_H``): for

@@ -39,6 +39,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "COS_THETA_F82",
@@ -63,7 +64,7 @@ maximum of ``mu (1 - mu)^6``), named "82 degrees" by Hoffman 2019 and Kutz et al
 
 # --- helpers ------------------------------------------------------------------------------------
 
-def _as_float(x):
+def _as_float(x: npt.ArrayLike) -> npt.NDArray[np.float64]:
     return np.asarray(x, dtype=np.float64)
 
 
@@ -72,12 +73,12 @@ def _out(x):
     return x[()] if np.ndim(x) == 0 else x
 
 
-def _cos(cos_theta):
+def _cos(cos_theta: npt.ArrayLike) -> npt.NDArray[np.float64]:
     # Round-off in V.H can leave [0, 1]; the formulas are defined on [0, 1] only.
     return np.clip(_as_float(cos_theta), 0.0, 1.0)
 
 
-def _check_n(n, name="n"):
+def _check_n(n: npt.ArrayLike, name: str = "n") -> npt.NDArray[np.float64]:
     n = _as_float(n)
     # NaN compares False, so NaN inputs pass through (and propagate) instead of raising.
     if np.any(n <= 0):
@@ -87,7 +88,7 @@ def _check_n(n, name="n"):
     return n
 
 
-def _check_k(k):
+def _check_k(k: npt.ArrayLike) -> npt.NDArray[np.float64]:
     k = _as_float(k)
     if np.any(k < 0):
         raise ValueError(
@@ -97,7 +98,7 @@ def _check_k(k):
     return k
 
 
-def _check_unit(x, name, upper_open=False):
+def _check_unit(x: npt.ArrayLike, name: str, upper_open: bool = False) -> npt.NDArray[np.float64]:
     x = _as_float(x)
     if np.any((x < 0) | ((x >= 1) if upper_open else (x > 1))):
         interval = "[0, 1)" if upper_open else "[0, 1]"
@@ -121,7 +122,8 @@ def _safe_ratio(num, den, where_zero):
 
 # --- exact ----------------------------------------------------------------------------------------
 
-def fresnel_conductor(cos_theta, n, k):
+def fresnel_conductor(cos_theta: npt.ArrayLike, n: npt.ArrayLike,
+                      k: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Exact unpolarised reflectance from air into a medium of complex index ``n + i k``.
 
     With ``eta = n + i k``, ``c = cos(theta_i)`` and ``w = eta cos(theta_t) = sqrt(eta^2 - sin^2
@@ -180,7 +182,7 @@ def fresnel_conductor(cos_theta, n, k):
     return _out(np.minimum(np.asarray(F, dtype=np.float64), 1.0))
 
 
-def F0_from_nk(n, k):
+def F0_from_nk(n: npt.ArrayLike, k: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Reflectance at normal incidence, ``((n - 1)^2 + k^2) / ((n + 1)^2 + k^2)``.
 
     Parameters
@@ -225,7 +227,8 @@ def _g_c_terms(c, n):
     return first, second, tir
 
 
-def fresnel_dielectric_CookTorrance1982(cos_theta, n):
+def fresnel_dielectric_CookTorrance1982(cos_theta: npt.ArrayLike,
+                                        n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Cook & Torrance's unpolarised Fresnel equation for ``k = 0``, as printed (with the 1/2).
 
         F = 1/2 (g - c)^2 / (g + c)^2 {1 + [c (g + c) - 1]^2 / [c (g - c) + 1]^2},
@@ -262,7 +265,8 @@ def fresnel_dielectric_CookTorrance1982(cos_theta, n):
     return _out(np.where(tir, 1.0, F))
 
 
-def fresnel_Blinn1977(cos_theta, n):
+def fresnel_Blinn1977(cos_theta: npt.ArrayLike,
+                      n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's g, c form of the Fresnel equation exactly as printed: it lacks the factor 1/2.
 
         F = (g - c)^2 / (g + c)^2 [1 + (c (g + c) - 1)^2 / (c (g - c) + 1)^2],
@@ -306,7 +310,7 @@ def fresnel_Blinn1977(cos_theta, n):
     return _out(np.where(tir, 2.0, F))
 
 
-def n_from_F0_CookTorrance1982(F0):
+def n_from_F0_CookTorrance1982(F0: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Effective index of refraction from the normal-incidence reflectance, with ``k = 0``.
 
         n = (1 + sqrt F0) / (1 - sqrt F0),
@@ -346,7 +350,8 @@ def n_from_F0_CookTorrance1982(F0):
 
 # --- Schlick 1994 and the F82-tint model -----------------------------------------------------
 
-def fresnel_Schlick1994(cos_theta, F0):
+def fresnel_Schlick1994(cos_theta: npt.ArrayLike,
+                        F0: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Schlick's approximation ``F = F0 + (1 - F0) (1 - c)^5``.
 
     Exact at c = 1 (F0) and at c = 0 (1); in between an approximation.
@@ -379,7 +384,8 @@ def fresnel_Schlick1994(cos_theta, F0):
     return _out(F0 + (1.0 - F0) * (1.0 - c) ** 5)
 
 
-def fresnel_F82(cos_theta, F0, F82):
+def fresnel_F82(cos_theta: npt.ArrayLike, F0: npt.ArrayLike,
+                F82: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """The F82-tint model: Schlick plus a correction ``- b c (1 - c)^6`` that pins F at 1/7.
 
         F(c) = F_Schlick(c) - b c (1 - c)^6,
@@ -427,7 +433,7 @@ def fresnel_F82(cos_theta, F0, F82):
     return _out(F0 + (1.0 - F0) * (1.0 - c) ** 5 - b * c * (1.0 - c) ** 6)
 
 
-def F82_from_nk(n, k):
+def F82_from_nk(n: npt.ArrayLike, k: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Exact reflectance at ``cos_theta = 1/7`` (the F82-tint model's "82 degrees").
 
     Parameters
@@ -461,7 +467,9 @@ def _n_min_max_Gulbrandsen2014(r):
     return n_min, n_max
 
 
-def nk_from_reflectivity_Gulbrandsen2014(r, g):
+def nk_from_reflectivity_Gulbrandsen2014(r: npt.ArrayLike,
+                                         g: npt.ArrayLike
+                                        ) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
     """Complex index ``(n, k)`` from reflectivity ``r`` (= F0) and edge tint ``g``::
 
         n = g n_min + (1 - g) n_max,   n_min = (1 - r) / (1 + r),
@@ -507,7 +515,9 @@ def nk_from_reflectivity_Gulbrandsen2014(r, g):
     return _out(n), _out(k)
 
 
-def reflectivity_from_nk_Gulbrandsen2014(n, k):
+def reflectivity_from_nk_Gulbrandsen2014(n: npt.ArrayLike,
+                                         k: npt.ArrayLike
+                                        ) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
     """Reflectivity ``r`` (= F0) and edge tint ``g`` of a complex index ``(n, k)``.
 
     The inverse of :func:`nk_from_reflectivity_Gulbrandsen2014`:
@@ -571,7 +581,8 @@ FRESNEL_METHODS = {
 """Fresnel methods of :func:`fresnel`, each ``f(cos_theta, n, k)``."""
 
 
-def fresnel(cos_theta, n, k, method="exact"):
+def fresnel(cos_theta: npt.ArrayLike, n: npt.ArrayLike, k: npt.ArrayLike,
+            method: str = "exact") -> npt.NDArray[np.float64] | np.float64:
     """Reflectance of a material of index ``n + i k`` by one of :data:`FRESNEL_METHODS`.
 
     Parameters

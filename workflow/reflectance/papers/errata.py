@@ -21,9 +21,15 @@ References
 
 from __future__ import annotations
 
+import os
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
+from typing import Any, TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = ["Consequence", "ERRATA", "KINDS", "TEXT_KEYS", "errata_rows", "errata_table", "ErrataError"]
 
@@ -52,7 +58,7 @@ class Consequence:
 
 
 #: erratum id -> ``function(**settings) -> Consequence``; filled by :func:`_erratum`
-ERRATA = {}
+ERRATA: dict[str, Callable[..., Consequence]] = {}
 
 
 def _erratum(erratum_id):
@@ -393,7 +399,7 @@ def _bad(path, where, message):
     return ErrataError(f"{path}: {where}: {message}")
 
 
-def errata_rows(path):
+def errata_rows(path: str | os.PathLike[str]) -> tuple[dict[str, Any], list[dict[str, Any]]]:
     """The errata file's texts and rows, checked: every row holds only text keys, has a
     registered id, and names one of the file's texts. Raises :class:`ErrataError` naming the file
     and the row otherwise."""
@@ -440,7 +446,7 @@ def errata_rows(path):
     return texts, rows
 
 
-def errata_table(path, settings):
+def errata_table(path: str | os.PathLike[str], settings: Mapping[str, Any]) -> pd.DataFrame:
     """The errata as a DataFrame (columns :data:`COLUMNS`): the text of each row of ``path`` with
     the consequence computed by its registered function from ``settings`` (config.yaml
     ``figures.errata`` without ``rows``)."""

@@ -34,7 +34,10 @@ References
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.brdf import brdf
 
@@ -42,7 +45,7 @@ __all__ = ["direction_from_angles", "plane_of_incidence_vectors", "intensity_in_
            "lobe_peak"]
 
 
-def direction_from_angles(theta, phi):
+def direction_from_angles(theta: npt.ArrayLike, phi: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Unit vectors at angle ``theta`` from N = +z and azimuth ``phi`` from +x (radians).
 
     ``(sin theta cos phi, sin theta sin phi, cos theta)``, shape ``broadcast(theta, phi).shape + (3,)``.
@@ -58,7 +61,9 @@ def direction_from_angles(theta, phi):
     return np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], axis=-1)
 
 
-def plane_of_incidence_vectors(theta_i, theta_r):
+def plane_of_incidence_vectors(theta_i: float,
+                               theta_r: npt.ArrayLike
+                              ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """L, E (shape ``theta_r.shape + (3,)``) and N for light at ``theta_i`` and views ``theta_r``.
 
     ``L = (-sin theta_i, 0, cos theta_i)`` (the light on the -x side), ``E = (sin theta_r, 0,
@@ -89,7 +94,8 @@ def plane_of_incidence_vectors(theta_i, theta_r):
     return L, E, np.array([0.0, 0.0, 1.0])
 
 
-def intensity_in_plane_of_incidence(theta_i, theta_r, method, **parameters):
+def intensity_in_plane_of_incidence(theta_i: float, theta_r: npt.ArrayLike, method: str,
+                                    **parameters: Any) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's printed intensity ``i = (N.L) f(L, E)`` (``p_a = 0``) over the plane of incidence.
 
     Parameters

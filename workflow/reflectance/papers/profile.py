@@ -34,9 +34,11 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "gaussian_profile",
@@ -52,7 +54,8 @@ __all__ = [
 ]
 
 
-def gaussian_profile(n, correlation_length, rms_slope, seed):
+def gaussian_profile(n: int, correlation_length: float, rms_slope: float,
+                     seed: int) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """A periodic random profile: Gaussian heights, autocorrelation ``~ exp(-(dx/l)^2)``.
 
     White noise is filtered by the square root of the power spectrum of ``exp(-(dx/l)^2)``, which is
@@ -95,7 +98,7 @@ def gaussian_profile(n, correlation_length, rms_slope, seed):
     return h * scale, p * scale
 
 
-def projected_length(p, theta):
+def projected_length(p: npt.ArrayLike, theta: float) -> npt.NDArray[np.float64]:
     """Length of each facet of slope ``p`` projected across direction ``theta``, 0 if it faces away.
 
     A facet of slope p has length ``sqrt(1 + p^2)`` and unit normal ``(-p, 1) / sqrt(1 + p^2)``;
@@ -109,7 +112,7 @@ def projected_length(p, theta):
     return np.maximum(np.cos(theta) - np.asarray(p, dtype=np.float64) * np.sin(theta), 0.0)
 
 
-def visible_fraction(h, theta):
+def visible_fraction(h: npt.NDArray[np.float64], theta: float) -> npt.NDArray[np.float64]:
     """Fraction of each segment ``[k, k + 1]`` of the periodic profile ``h`` seen from ``theta``.
 
     A point is hidden iff a node ahead of it (towards the direction) has a larger
@@ -151,7 +154,8 @@ def visible_fraction(h, theta):
     return np.where(drop > 0, np.clip((g0 - ahead) / np.where(drop > 0, drop, 1.0), 0, 1), 0.0)
 
 
-def masking_G1(h, p, theta):
+def masking_G1(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64],
+               theta: float) -> tuple[float, float]:
     """Masking of the whole profile from ``theta``: visible over facing projected length.
 
     Returns
@@ -174,7 +178,9 @@ def masking_G1(h, p, theta):
     return seen / np.sum(proj), seen / (np.size(h) * np.cos(theta))
 
 
-def visible_fraction_by_slope(h, p, theta, edges):
+def visible_fraction_by_slope(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], theta: float,
+                              edges: npt.ArrayLike
+                             ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.intp]]:
     """Projected-length weighted visible fraction of the facing facets in each slope bin.
 
     Parameters
@@ -210,7 +216,8 @@ def visible_fraction_by_slope(h, p, theta, edges):
     return seen / np.where(total > 0, total, np.nan), np.bincount(b[inside], minlength=nb)
 
 
-def crossings(xs, hs, s, s0):
+def crossings(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], s: npt.ArrayLike,
+              s0: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Points where the polyline ``(xs, hs)`` (unit x spacing) crosses each ray ``s = s0``.
 
     ``s`` is the value at the nodes of a quantity that is constant along the rays and linear in
@@ -236,7 +243,8 @@ def crossings(xs, hs, s, s0):
     return np.where(ok, xs[:-1] + t, np.nan), np.where(ok, hs[:-1] + t * (hs[1:] - hs[:-1]), np.nan)
 
 
-def first_hit(xs, hs, x0, theta):
+def first_hit(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.NDArray[np.float64],
+              theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Where rays coming down from direction ``theta`` first meet the polyline ``(xs, hs)``.
 
     Each ray is the line through ``(x0, 0)`` along ``(sin theta, cos theta)``; travelling down it
@@ -260,7 +268,9 @@ def first_hit(xs, hs, x0, theta):
     return hx[np.arange(x0.size), k], hh[np.arange(x0.size), k]
 
 
-def first_blocker(xs, hs, x0, h0, theta):
+def first_blocker(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64],
+                  x0: npt.NDArray[np.float64], h0: npt.NDArray[np.float64],
+                  theta: float) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """First point of the polyline ``(xs, hs)`` on the ray from each ``(x0, h0)`` towards ``theta``.
 
     Returns
@@ -319,12 +329,13 @@ class WindowRays:
     occluder: np.ndarray
 
     @property
-    def escaped(self):
+    def escaped(self) -> npt.NDArray[np.bool_]:
         """(n_rays,) bool: the ray reaches a facet facing the viewer and nothing masks it."""
         return self.faces_view & np.isnan(self.masked_at[:, 0])
 
 
-def trace_window(h, p, window, theta_light, theta_view, n_rays):
+def trace_window(h: npt.NDArray[np.float64], p: npt.NDArray[np.float64], window: Sequence[int],
+                 theta_light: float, theta_view: float, n_rays: int) -> WindowRays:
     """Follow ``n_rays`` light rays, evenly spaced across ``window``, to the profile and on.
 
     The rays enter through ``(x0, 0)`` for ``x0`` evenly spaced over ``window`` and travel away from

@@ -38,9 +38,13 @@ References
 from __future__ import annotations
 
 import copy
+import os
+from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
 from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
@@ -84,7 +88,7 @@ PHONG_SPECULAR_READINGS = {
 """How large Phong's specular proportion is against Blinn's Torrance-Sparrow model."""
 
 
-def display_from_colour(colour, illuminant=True):
+def display_from_colour(colour: Mapping[str, Any], illuminant: bool = True) -> dict[str, Any]:
     """The scene ``display`` of config ``colour`` (space, gamut clip, white, PNG bit depth).
 
     With ``illuminant=False`` the display white is left to the scene's default (the first
@@ -97,8 +101,11 @@ def display_from_colour(colour, illuminant=True):
     return out
 
 
-def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, observer=None,
-                   spectral=None, ambient=None, display=None):
+def scene_document(camera: Mapping[str, Any], objects: Sequence[Mapping[str, Any]],
+                   lights: Sequence[Mapping[str, Any]], wavelengths: Mapping[str, Any],
+                   spectra_dir: str | None = None, observer: str | None = None,
+                   spectral: str | None = None, ambient: Mapping[str, Any] | None = None,
+                   display: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """A scene mapping (reflectance/data/scene.schema.yaml); keys left None take the defaults.
 
     Parameters
@@ -112,7 +119,7 @@ def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, obser
     spectra_dir, observer, spectral : str, optional
     ambient, display : dict, optional
     """
-    doc = {"wavelengths": dict(wavelengths)}
+    doc: dict[str, Any] = {"wavelengths": dict(wavelengths)}
     for key, value in (("observer", observer), ("spectra_dir", spectra_dir),
                        ("spectral", spectral)):
         if value is not None:
@@ -127,13 +134,16 @@ def scene_document(camera, objects, lights, wavelengths, spectra_dir=None, obser
     return doc
 
 
-def panel_material(panel):
+def panel_material(panel: Mapping[str, Any]) -> dict[str, Any]:
     """A config material entry (``material`` names the spectrum of F) as a scene material."""
     return {**{k: v for k, v in panel.items() if k != "material"}, "name": panel["material"]}
 
 
-def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, spectra_dir,
-                                image=None, exposure=None):
+def vase_scene_CookTorrance1982(fig6: Mapping[str, Any], material: Mapping[str, Any],
+                                reference: str, wavelengths: Mapping[str, Any],
+                                colour: Mapping[str, Any], spectra_dir: str | None,
+                                image: Mapping[str, Any] | None = None,
+                                exposure: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """One vase alone as Cook & Torrance 1982 Fig. 6 renders it (Fig. 7: every vase).
 
     Parameters
@@ -165,7 +175,9 @@ def vase_scene_CookTorrance1982(fig6, material, reference, wavelengths, colour, 
         display={**display_from_colour(colour), **(exposure or {})})
 
 
-def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, spectra_dir=None):
+def fig6_scene_CookTorrance1982(panel: str = "b", reading: str = "irradiance",
+                                config: dict[str, Any] | str | os.PathLike[str] | None = None,
+                                spectra_dir: str | None = None) -> dict[str, Any]:
     """The scene of Cook & Torrance 1982 Fig. 6 ``panel`` from config.yaml.
 
     Parameters
@@ -181,7 +193,7 @@ def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, sp
         spectra); for a dict, ``spectra``.
     """
     if not isinstance(config, dict):
-        path = Path(config or CONFIG_PATH)
+        path = Path(config or CONFIG_PATH)  # type: ignore[arg-type]  # the package's file
         from reflectance.io.yamlfile import read_yaml
 
         config, spectra_default = read_yaml(path), path.parent / "spectra"
@@ -199,7 +211,8 @@ def fig6_scene_CookTorrance1982(panel="b", reading="irradiance", config=None, sp
                                        str(spectra_dir or spectra_default))
 
 
-def light_direction(position, look_at, up, angle_deg, azimuth_deg):
+def light_direction(position: npt.ArrayLike, look_at: npt.ArrayLike, up: npt.ArrayLike,
+                    angle_deg: float, azimuth_deg: float) -> npt.NDArray[np.float64]:
     """Unit vector toward a directional light at ``angle_deg`` from the direction to the viewer.
 
     ``L = cos(a) E + sin(a) (cos(b) X + sin(b) Y)`` with E the unit vector from ``look_at`` toward
@@ -234,7 +247,8 @@ def light_direction(position, look_at, up, angle_deg, azimuth_deg):
     return np.cos(a) * E + np.sin(a) * (np.cos(b) * X + np.sin(b) * Y)
 
 
-def materials_Blinn1977(p_s, p_d, c3, n, phong_specular="as_printed"):
+def materials_Blinn1977(p_s: float, p_d: float, c3: float, n: float,
+                        phong_specular: str = "as_printed") -> dict[str, Any]:
     """Scene materials of Blinn's Phong and Torrance-Sparrow models at equal beta.
 
     Both have a flat diffuse albedo 1 (so ``d p_d`` is the diffuse intensity). The
@@ -343,7 +357,10 @@ def highlight_crossover_Blinn1977(first, second, bracket_deg=(90.0, 179.9)):
     return float(brentq(difference, lo, hi, xtol=1e-10))
 
 
-def blinn_scene_Blinn1977(fig7, material, light, wavelengths, camera=None):
+def blinn_scene_Blinn1977(fig7: Mapping[str, Any], material: Mapping[str, Any],
+                          light: dict[str, Any] | list[dict[str, Any]],
+                          wavelengths: Mapping[str, Any],
+                          camera: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """One render of Blinn 1977 Fig. 7's object (also Fig. 8 and the sweep).
 
     Parameters

@@ -38,6 +38,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["VGrooveSimulation", "vgroove_vertices", "simulate_vgroove"]
 
@@ -101,7 +102,7 @@ class VGrooveSimulation:
     reflection_error: float
 
 
-def vgroove_vertices(alpha, half_width=1.0):
+def vgroove_vertices(alpha: float, half_width: float = 1.0) -> npt.NDArray[np.float64]:
     """Vertices A, B, C of a symmetric V-groove whose side AB has normal (sin alpha, cos alpha).
 
     Examples
@@ -158,7 +159,9 @@ def _unit(v, name):
     return v / norm
 
 
-def simulate_vgroove(L, E, N=(0.0, 0.0, 1.0), n_rays=100_000, n_keep=24, half_width=1.0):
+def simulate_vgroove(L: npt.ArrayLike, E: npt.ArrayLike, N: npt.ArrayLike = (0.0, 0.0, 1.0),
+                     n_rays: int = 100_000, n_keep: int = 24,
+                     half_width: float = 1.0) -> VGrooveSimulation:
     """Trace a parallel beam from L through the V-groove whose facet normal is ``H = (L + E)/|L + E|``.
 
     Parameters

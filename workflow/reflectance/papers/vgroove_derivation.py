@@ -33,7 +33,9 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any, TYPE_CHECKING
 
 import numpy as np
 
@@ -41,10 +43,14 @@ from reflectance.papers.polar import direction_from_angles
 from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977, vcavity_terms_Blinn1977
 from reflectance.papers.vgroove import simulate_vgroove
 
+if TYPE_CHECKING:
+    from reflectance.papers.vgroove import VGrooveSimulation
+
 __all__ = ["vgroove_case", "GrooveAngles", "groove_angles_Blinn1977"]
 
 
-def vgroove_case(light, eye, n_rays=100_000, n_keep=24):
+def vgroove_case(light: Mapping[str, Any], eye: Mapping[str, Any], n_rays: int = 100_000,
+                 n_keep: int = 24) -> tuple[VGrooveSimulation, dict[str, Any]]:
     """One case of Blinn's Fig. 1: simulate the groove and evaluate the closed forms.
 
     Parameters
@@ -127,7 +133,8 @@ def _angle(u, v):
     return float(np.arctan2(abs(u[0] * v[1] - u[1] * v[0]), u @ v))
 
 
-def groove_angles_Blinn1977(simulation, blocked="masking"):
+def groove_angles_Blinn1977(simulation: VGrooveSimulation,
+                            blocked: str = "masking") -> GrooveAngles:
     """Measure Blinn's Fig. 4 angles a..f and m/l on a simulated groove.
 
     Parameters

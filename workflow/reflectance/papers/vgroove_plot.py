@@ -12,10 +12,19 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Any, TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 from matplotlib.patches import Arc, Polygon
 
 from reflectance.io.figures import TEXT_SIZE, text_colour
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+    from reflectance.papers.vgroove import VGrooveSimulation
 
 __all__ = ["COLOURS", "draw_groove", "draw_top_view", "draw_arrow", "draw_angle", "draw_dimension"]
 
@@ -24,7 +33,8 @@ COLOURS = {"light": "#e69f00", "eye": "#0072b2", "masked": "#d55e00", "facet": "
            "other": "0.75", "normal": "0.2", "shadowed": "#cc79a7"}
 
 
-def draw_arrow(ax, start, vector, label=None, color="k", label_offset=(0.0, 0.0), **kwargs):
+def draw_arrow(ax: Axes, start: npt.ArrayLike, vector: npt.ArrayLike, label: str | None = None,
+               color: str = "k", label_offset: Sequence[float] = (0.0, 0.0), **kwargs: Any) -> None:
     """An arrow from ``start`` along ``vector`` with an optional label just beyond its tip (moved by
     ``label_offset``, data units, where a line passes there)."""
     start, vector = np.asarray(start, float), np.asarray(vector, float)
@@ -39,8 +49,9 @@ def draw_arrow(ax, start, vector, label=None, color="k", label_offset=(0.0, 0.0)
                           boxstyle="round,pad=0.15"))
 
 
-def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_radius=1.45,
-               label_at=0.5):
+def draw_angle(ax: Axes, vertex: npt.ArrayLike, u: npt.ArrayLike, v: npt.ArrayLike, radius: float,
+               label: str, color: str = "k", fontsize: float | None = None,
+               label_radius: float = 1.45, label_at: float = 0.5) -> None:
     """Arc of the (smaller) angle between directions u and v at ``vertex``, labelled at its bisector
     (or at the fraction ``label_at`` of the angle, where a line runs along the bisector)."""
     a1, a2 = np.degrees(np.arctan2(u[1], u[0])), np.degrees(np.arctan2(v[1], v[0]))
@@ -53,7 +64,8 @@ def draw_angle(ax, vertex, u, v, radius, label, color="k", fontsize=None, label_
             color=text_colour(color))
 
 
-def draw_dimension(ax, P0, P1, offset, label, color="k"):
+def draw_dimension(ax: Axes, P0: npt.ArrayLike, P1: npt.ArrayLike, offset: float, label: str,
+                   color: str = "k") -> None:
     """A dimension line parallel to P0-P1, shifted by ``offset``, with end ticks and a label."""
     P0, P1, offset = (np.asarray(x, float) for x in (P0, P1, offset))
     Q0, Q1 = P0 + offset, P1 + offset
@@ -65,7 +77,8 @@ def draw_dimension(ax, P0, P1, offset, label, color="k"):
             fontsize=TEXT_SIZE["symbol"], color=color, style="italic")
 
 
-def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=True, names=False):
+def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_length: float = 0.6,
+                rays: bool = True, vectors: bool = True, names: bool = False) -> None:
     """Cross-section of the groove in the plane of N and H, with the simulation's ray paths.
 
     Parameters
@@ -123,7 +136,8 @@ def draw_groove(ax, sim, ray_length=1.1, exit_length=0.6, rays=True, vectors=Tru
     ax.axis("off")
 
 
-def draw_top_view(ax, sim, L, E, H):
+def draw_top_view(ax: Axes, sim: VGrooveSimulation, L: npt.NDArray[np.float64],
+                  E: npt.NDArray[np.float64], H: npt.NDArray[np.float64]) -> None:
     """Blinn's Fig. 2: the groove seen along N, with L, E, H and the projections L', E'.
 
     The axes are ``t`` (the direction H tilts to, across the groove) and ``g`` (along it), the first

@@ -36,8 +36,13 @@ refined pixels, not with the number of wavelengths (the shading is the table pat
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from reflectance.render.samples import SurfaceSamples
 
 __all__ = ["Refinement", "pixel_spread", "refine_mask", "refinement_bands",
            "REFINE_BAND_SAMPLES", "REFINE_BAND_ID_PIXELS"]
@@ -105,7 +110,9 @@ def _window_minus_pixel_mean(values, n):
     return window / (n + 2) ** 2 - own
 
 
-def pixel_spread(samples, XYZ):
+def pixel_spread(samples: SurfaceSamples,
+                 XYZ: npt.NDArray[np.float64]
+                ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.bool_]]:
     """Per pixel of a band: the window's mean minus the pixel's own mean, and its silhouettes.
 
     For shading that varies linearly across the window the two means agree (the midpoint rule
@@ -137,7 +144,9 @@ def pixel_spread(samples, XYZ):
 _TOE = (6.0 / 29.0) ** 3
 
 
-def refine_mask(difference, silhouette, XYZ, scale, threshold, white):
+def refine_mask(difference: npt.NDArray[np.floating], silhouette: npt.NDArray[np.bool_],
+                XYZ: npt.NDArray[np.float64], scale: float, threshold: float,
+                white: npt.ArrayLike) -> npt.NDArray[np.bool_]:
     """Pixels to refine: a silhouette, or a window-minus-pixel difference (:func:`pixel_spread`)
     worth more than ``threshold`` CIELAB units on the exposure ``scale`` (a factor on XYZ).
 
@@ -168,7 +177,9 @@ def refine_mask(difference, silhouette, XYZ, scale, threshold, white):
     return mask
 
 
-def refinement_bands(mask, supersample, max_samples=None, max_id_pixels=None):
+def refinement_bands(mask: npt.NDArray[np.bool_], supersample: int, max_samples: int | None = None,
+                     max_id_pixels: int | None = None
+                    ) -> list[tuple[tuple[int, int], npt.NDArray[np.intp], npt.NDArray[np.intp]]]:
     """The refinement's bands: ``[(rows, select, pixels)]`` where ``rows`` (start, stop) is a
     band of rows of the N x N fine grid, ``select`` its refined samples (row-major indices in the
     band; pixel by pixel, N x N each, in the order of ``pixels``) and ``pixels`` the flat indices

@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.geometry.vectors import unit_vector
 
@@ -240,18 +241,18 @@ class Camera:
         self.view()  # validates up against the view direction
 
     @property
-    def shape(self):
+    def shape(self) -> tuple[int, int]:
         """(rows, cols) of the sample grid: (height * supersample, width * supersample)."""
         return self.height * self.supersample, self.width * self.supersample
 
-    def view(self):
+    def view(self) -> View:
         """The view on the fine (supersampled) grid."""
         rows, cols = self.shape
         forward = np.subtract(self.look_at, self.position)
         return View.look(self.position, forward, self.up, cols, rows, True,
                           np.tan(np.radians(self.fov_deg) / 2.0))
 
-    def sample_coordinates(self):
+    def sample_coordinates(self) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """Image coordinates (x, y) of every sample, in pixels of the final image.
 
         Pixel (row, col) covers [col, col + 1) x [row, row + 1); its samples sit at
@@ -263,13 +264,15 @@ class Camera:
                            indexing="ij")
         return x.ravel(), y.ravel()
 
-    def rays(self):
+    def rays(self) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """Camera position (3,) and unit ray directions (N, 3), float64, one per sample."""
         x, y = self.sample_coordinates()
         eye, d = self.view().rays(x * self.supersample, y * self.supersample)
         return eye[:, 0].copy(), np.ascontiguousarray(d.T)
 
-    def project(self, points):
+    def project(self,
+                points: npt.ArrayLike
+               ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64]]:
         """Image coordinates (x, y) in final-image pixels and depth of world points (..., 3).
 
         Points behind the camera have no image: their x, y are NaN.

@@ -18,15 +18,25 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any, TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.colour.display import (XYZ_to_linear_RGB, expose_CookTorrance1982,
                                  gamut_clip, linear_RGB_to_XYZ)
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from reflectance.render.samples import SurfaceSamples
+
 __all__ = ["common_exposure", "covered_rows", "image_grid", "part_pixels", "appearance"]
 
 
-def common_exposure(images, space, illuminant, observer, wavelengths):
+def common_exposure(images: Sequence[npt.NDArray[np.float64]], space: str, illuminant: str,
+                    observer: str, wavelengths: npt.ArrayLike | None) -> float:
     """The Cook & Torrance 1982 exposure scale of several XYZ images taken as one scene."""
     # Cook & Torrance 1982: "all XYZ values in the scene are scaled equally"
     _, scale = expose_CookTorrance1982(np.stack(images), space, illuminant=illuminant,
@@ -34,7 +44,7 @@ def common_exposure(images, space, illuminant, observer, wavelengths):
     return scale
 
 
-def covered_rows(images, margin=4):
+def covered_rows(images: Sequence[npt.NDArray[np.float64]], margin: int = 4) -> slice:
     """A slice of the rows that any image covers (Y > 0), widened by ``margin`` pixels."""
     lit = np.flatnonzero(np.stack(images)[..., 1].max(axis=(0, 2)) > 0)
     if lit.size == 0:
@@ -42,8 +52,10 @@ def covered_rows(images, margin=4):
     return slice(max(lit[0] - margin, 0), lit[-1] + margin + 1)
 
 
-def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head=0.25, foot=0.4,
-               top=0.45, dpi=100, label_size=None):
+def image_grid(cells: Sequence[tuple[int, int, npt.NDArray[Any], str]], n_rows: int, n_cols: int,
+               title: str, headings: Sequence[tuple[int, int, str, dict[str, Any]]] = (),
+               crop: slice = slice(None), head: float = 0.25, foot: float = 0.4, top: float = 0.45,
+               dpi: float = 100, label_size: float | None = None) -> Figure:
     """A figure of display images (encoded RGB) in a grid on a black ground.
 
     Parameters
@@ -90,7 +102,9 @@ def image_grid(cells, n_rows, n_cols, title, headings=(), crop=slice(None), head
     return fig
 
 
-def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, display):
+def part_pixels(samples: SurfaceSamples, part_codes: npt.ArrayLike, XYZ: npt.NDArray[np.float64],
+                scale: float, space: str, gamut_clip_method: str,
+                display: Mapping[str, Any]) -> Callable[[int], dict[str, Any]]:
     """Per named part: the pixels it covers and the colour they show.
 
     Parameters
@@ -138,7 +152,8 @@ def part_pixels(samples, part_codes, XYZ, scale, space, gamut_clip_method, displ
     return stats
 
 
-def appearance(encoded, XYZ, space="sRGB", highlight_percentile=99.5):
+def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], space: str = "sRGB",
+               highlight_percentile: float = 99.5) -> dict[str, float]:
     """How an object reads in its display image: visibility, lightness range, highlight colour.
 
     The object is the pixels with scene ``Y > 0`` less a one-pixel rim (partly covered, antialiased

@@ -9,8 +9,11 @@ read primitive keys and 3 x 3 neighbourhoods out of an ID image.
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 import pyvista as pv
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers VTK's OpenGL backend)
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -21,6 +24,11 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRendere
 from reflectance.render.camera import MAX_BUFFER_SIDE
 from reflectance.render.primitives import Primitives
 
+if TYPE_CHECKING:
+    import pyvista as pv
+
+    from reflectance.render.camera import Camera
+
 __all__ = ["MAX_TRIANGLES", "encode_ids", "decode_ids", "id_buffer",
            "renderer_for"]
 
@@ -28,7 +36,7 @@ MAX_TRIANGLES = 2**24 - 1
 """The ID buffer holds 24 bits per pixel (RGB, 8 bits each); id 0 is the background."""
 
 
-def encode_ids(ids):
+def encode_ids(ids: npt.NDArray[np.integer]) -> npt.NDArray[np.uint8]:
     """24-bit ids (1 .. 2**24 - 1) as RGB uint8 triples, red the most significant byte."""
     ids = np.asarray(ids, np.int64)
     if np.any((ids < 0) | (ids > MAX_TRIANGLES)):
@@ -36,7 +44,7 @@ def encode_ids(ids):
     return np.stack([(ids >> 16) & 255, (ids >> 8) & 255, ids & 255], axis=-1).astype(np.uint8)
 
 
-def decode_ids(rgb):
+def decode_ids(rgb: npt.NDArray[np.uint8]) -> npt.NDArray[np.int32]:
     """Inverse of :func:`encode_ids` for an (..., 3) uint8 image (int32: 24 bits fit)."""
     rgb = np.asarray(rgb)
     if rgb.dtype != np.uint8 or rgb.shape[-1] != 3:
@@ -139,7 +147,8 @@ def renderer_for(scene, renderer=None):
     return IdRenderer(scene)
 
 
-def id_buffer(meshes, camera):
+def id_buffer(meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+              camera: Camera) -> npt.NDArray[np.int32]:
     """The ID buffer of a camera's fine grid: (rows, cols) int32, 0 background, k triangle k - 1.
 
     Parameters

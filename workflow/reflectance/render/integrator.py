@@ -13,12 +13,20 @@ from __future__ import annotations
 
 import dataclasses
 import time
+from collections.abc import Callable
+from typing import Any, TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.render.adaptive import pixel_spread, refine_mask, refinement_bands
 from reflectance.render.shading import shade
 from reflectance.render.tracing import light_map_size
+
+if TYPE_CHECKING:
+    from reflectance.render.samples import SurfaceSamples
+    from reflectance.render.scene import Scene
+    from reflectance.render.session import RenderSession
 
 __all__ = ["COMPONENTS", "shade_samples", "Integrator"]
 
@@ -26,14 +34,15 @@ COMPONENTS = ("ambient", "diffuse", "specular", "emission")
 """Parts of the reflected XYZ a render can return separately (table shading)."""
 
 
-def shade_samples(scene, samples, shadowed, spectral=None, components=False, fresnel_table=None,
-                  threads=1):
+def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
+                  spectral: str | None = None, components: bool = False,
+                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
     """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``);
     ``threads`` as for :func:`reflectance.render.shading.shade`."""
     spectral = scene.spectral if spectral is None else spectral
     N = len(samples.hit)
     XYZ = np.zeros((N, 3))
-    parts = {name: np.zeros((N, 3)) for name in COMPONENTS} if components else None
+    parts: Any = {name: np.zeros((N, 3)) for name in COMPONENTS} if components else None
     part_of_triangle = np.asarray(scene.mesh.cell_data["part"])
     for i, obj in enumerate(scene.objects):
         members = np.nonzero(samples.object_id == i)[0]
@@ -125,12 +134,13 @@ class Integrator:
         The pixels :meth:`refine` sampled again (None before).
     """
 
-    def __init__(self, scene, spectral, components=False, fresnel_table=None, threads=1):
+    def __init__(self, scene: Scene, spectral: str | None, components: bool = False,
+                 fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> None:
         self.scene, self.spectral, self.components = scene, spectral, components
         self.fresnel_table, self.threads = fresnel_table, threads
         camera = scene.camera
         self.image = np.zeros((camera.height, camera.width, 3))
-        self.parts = ({name: np.zeros_like(self.image) for name in COMPONENTS} if components
+        self.parts: Any = ({name: np.zeros_like(self.image) for name in COMPONENTS} if components
                       else None)
         self.timings = {"visibility": 0.0, "shadows": 0.0, "shading": 0.0}
         self._count = _Counts(len(scene.lights), len(scene.objects))
@@ -140,7 +150,8 @@ class Integrator:
         if self.adaptive:  # per pixel of the first pass: its window's difference and silhouettes
             self._difference = np.zeros((camera.height, camera.width, 3), np.float32)
             self._silhouette = np.zeros((camera.height, camera.width), bool)
-        self.refined, self._n_refined = None, 0
+        self.refined: npt.NDArray[np.bool_] | None = None
+        self._n_refined = 0
 
     def _shade(self, samples, shadowed):
         """(XYZ, parts or None) of the samples."""
@@ -154,7 +165,8 @@ class Integrator:
         self.timings["shadows"] += traced["shadows"]
         self.timings["shading"] += time.perf_counter() - since
 
-    def add_band(self, rows, samples, shadowed, traced):
+    def add_band(self, rows: tuple[int, int], samples: SurfaceSamples,
+                 shadowed: npt.NDArray[np.bool_], traced: Any) -> None:
         """Shade the band ``rows`` ``(start, stop)`` of the fine grid (its trace: ``samples``,
         ``shadowed``, ``traced`` its timings) and box-filter it into its pixel rows."""
         t0 = time.perf_counter()
@@ -169,7 +181,8 @@ class Integrator:
         self._count.add(samples, shadowed)
         self._spent(traced, t0)
 
-    def refine(self, session, exposure):
+    def refine(self, session: RenderSession,
+               exposure: Callable[[npt.NDArray[np.float64]], float]) -> None:
         """Replace the pixels the adaptive supersampling picks (:attr:`refined`:
         :func:`reflectance.render.adaptive.refine_mask` of the first pass, differences judged as
         shown at the factor ``exposure(image)`` of the image's display) by the box-filter mean
@@ -181,9 +194,10 @@ class Integrator:
         scene = self.scene
         white = white_XYZ(scene.display.illuminant, scene.observer, scene.wavelengths)
         self.refined = refine_mask(self._difference, self._silhouette, self.image,
-                                   exposure(self.image), scene.refinement.threshold, white)
+                                   exposure(self.image), scene.refinement.threshold,  # type: ignore[union-attr]
+                                   white)
         del self._difference, self._silhouette
-        N = scene.refinement.supersample
+        N = scene.refinement.supersample  # type: ignore[union-attr]  # adaptive: it is set
         fine = dataclasses.replace(scene, camera=dataclasses.replace(scene.camera, supersample=N))
         flat = self.image.reshape(-1, 3)
         map_size = light_map_size(scene.camera)  # the whole first pass's light maps
@@ -204,7 +218,7 @@ class Integrator:
             self._spent(traced, t1)
         self.timings["refinement"] = time.perf_counter() - t0
 
-    def stats(self):
+    def stats(self) -> dict[str, Any]:
         """The render's ``stats`` (:class:`reflectance.render.pipeline.RenderResult`): the first
         pass's visibility and shadow fractions, the fraction of pixels refined and the samples
         spent per pixel."""
@@ -213,5 +227,6 @@ class Integrator:
         n, refined = self.scene.camera.supersample, self._n_refined
         # the sample budget: every pixel's n x n, and N x N more in each refined pixel
         out.update(refined=refined / pixels, samples_per_pixel=n**2 + (
-            refined * self.scene.refinement.supersample**2 / pixels if self.adaptive else 0.0))
+            refined * self.scene.refinement.supersample**2 / pixels  # type: ignore[union-attr]
+            if self.adaptive else 0.0))
         return out

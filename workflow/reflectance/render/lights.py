@@ -6,9 +6,12 @@ The spectra and intensities of lights belong to the scene description
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.geometry.vectors import normalize, unit_vector
 
@@ -39,11 +42,13 @@ class PointLight:
         object.__setattr__(self, "position", tuple(float(x) for x in p))
 
 
-LIGHT_TYPES = {"directional": (DirectionalLight, "direction"), "point": (PointLight, "position")}
+LIGHT_TYPES: dict[str, tuple[type[DirectionalLight] | type[PointLight], str]] = {
+    "directional": (DirectionalLight, "direction"), "point": (PointLight, "position")}
 """Light types of a light mapping ``{type: ..., <key>: [x, y, z]}`` and their vector key."""
 
 
-def as_light(light):
+def as_light(light: DirectionalLight | PointLight | Mapping[str, Any]
+            ) -> DirectionalLight | PointLight:
     """A :class:`DirectionalLight` or :class:`PointLight` from itself or a mapping.
 
     Examples
@@ -64,7 +69,9 @@ def as_light(light):
     return cls(light[key])
 
 
-def light_vectors(light, positions):
+def light_vectors(light: DirectionalLight | PointLight | Mapping[str, Any],
+                  positions: npt.NDArray[np.float64]
+                 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """Unit vectors L from each position toward the light and the distance to it.
 
     Parameters

@@ -33,7 +33,8 @@ ADAPTIVE_PEAK_MEMORY = {512: (1223180 - 835764) * 2**10, 1024: (1455744 - 855748
 MESH_ELEMENTS_PER_VERTEX = 36
 
 
-def render_memory_bytes(width, height, supersample, whole=False, adaptive=False):
+def render_memory_bytes(width: int, height: int, supersample: int, whole: bool = False,
+                        adaptive: bool = False) -> float:
     """Estimated peak memory (bytes) of rendering an image of this size and writing it.
 
     An image of at most :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES` samples is traced
@@ -75,8 +76,8 @@ def render_memory_bytes(width, height, supersample, whole=False, adaptive=False)
     return need
 
 
-def render_size_problem(keys, width, height, supersample, whole=False, adaptive=False,
-                        memory=None):
+def render_size_problem(keys: str, width: int, height: int, supersample: int, whole: bool = False,
+                        adaptive: bool = False, memory: float | None = None) -> str | None:
     """One line naming ``keys`` if the render cannot fit in ``memory`` bytes (default: this
     machine's physical memory) or its ID buffer exceeds
     :data:`~reflectance.render.camera.MAX_BUFFER_SIDE`; else None."""

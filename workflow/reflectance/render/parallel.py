@@ -24,11 +24,11 @@ __all__ = ["THREADS_VARIABLE", "render_threads", "Tasks", "pieces"]
 THREADS_VARIABLE = "REFLECTANCE_RENDER_THREADS"
 """Environment variable overriding the renderer's default thread count (a positive integer)."""
 
-_pools = {}
+_pools: dict[int, ThreadPoolExecutor] = {}
 _pools_lock = threading.Lock()
 
 
-def render_threads(threads=None):
+def render_threads(threads: int | None = None) -> int:
     """The thread count of a render: ``threads`` if given, else :data:`THREADS_VARIABLE`, else
     ``OMP_NUM_THREADS``, else the number of cores this process may run on
     (``os.sched_getaffinity``)."""

@@ -31,10 +31,14 @@ from __future__ import annotations
 import contextlib
 import functools
 import json
+import os
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any, TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.colour.exposure import exposure_scale, image_display_RGB
 from reflectance.io.atomic import atomic_write
@@ -44,6 +48,10 @@ from reflectance.render.parallel import render_threads
 from reflectance.render.session import RenderSession
 from reflectance.render.shading import white_card_luminance
 from reflectance.render.tracing import tiles
+
+if TYPE_CHECKING:
+    from reflectance.optics.spectra import SpectraDirs
+    from reflectance.render.scene import Scene
 
 __all__ = [
     "render_to_files",
@@ -93,13 +101,16 @@ class RenderResult:
     components: dict | None
     timings: dict
     stats: dict
-    scene: object = field(repr=False)
+    scene: Scene = field(repr=False)
     refined: np.ndarray | None = field(default=None, repr=False)
     display: tuple | None = field(default=None, repr=False)
 
 
-def render(scene, spectral=None, components=False, fresnel_table=None, progress=None,
-           keep_trace=False, threads=None, tally=None):
+def render(scene: Scene, spectral: str | None = None, components: bool = False,
+           fresnel_table: Callable[..., Any] | None = None,
+           progress: Callable[[str], None] | None = None, keep_trace: bool = False,
+           threads: int | None = None,
+           tally: Callable[[int, int], None] | None = None) -> RenderResult:
     """Render a :class:`reflectance.render.scene.Scene` into a :class:`RenderResult`.
 
     Parameters
@@ -165,7 +176,7 @@ def render(scene, spectral=None, components=False, fresnel_table=None, progress=
 BACK_FRACTION_WARNING = 0.5
 
 
-def render_warnings(result):
+def render_warnings(result: RenderResult) -> list[str]:
     """Plain-language warnings about a render that worked but is probably not what was meant:
     an empty view (no object in the image) and a camera inside an object (most of the object's
     visible surface seen from its back). Each names the camera (position and look_at)."""
@@ -190,7 +201,8 @@ def _shown(scene):
     return d, scene.observer, scene.wavelengths, white
 
 
-def display_linear_RGB(result, exposure=None, encoded=False):
+def display_linear_RGB(result: RenderResult, exposure: float | None = None,
+                       encoded: bool = False) -> tuple[npt.NDArray[np.float64], float]:
     """(linear display RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display:
     exposed, highlights compressed, gamut clipped; the light the display emits, before the
     transfer function (:func:`reflectance.colour.exposure.image_display_RGB`, in bands of rows).
@@ -199,25 +211,26 @@ def display_linear_RGB(result, exposure=None, encoded=False):
     display settings (Cook & Torrance's, the metered key or the white card); None keeps it.
     ``encoded`` applies the display's transfer function too (:func:`display_image`).
     """
-    return image_display_RGB(result.XYZ, *_shown(result.scene), exposure=exposure,
+    return image_display_RGB(result.XYZ, *_shown(result.scene), exposure=exposure,  # type: ignore[misc]
                              encoded=encoded)
 
 
-def automatic_exposure(result):
+def automatic_exposure(result: RenderResult) -> float:
     """The factor on XYZ the scene's display settings choose for this render (Cook & Torrance's
     exposure, the metered key or the white card; 1 where the display does not expose): what
     ``reflectance render --exposure-stops S`` multiplies by 2**S."""
     return float(exposure_scale(result.XYZ, *_shown(result.scene)))
 
 
-def display_image(result, exposure=None):
+def display_image(result: RenderResult,
+                  exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """(encoded RGB in [0, 1] of shape (H, W, 3), exposure scale) per the scene's display (as
     :func:`reflectance.colour.display.XYZ_to_display`; ``exposure`` as for
     :func:`display_linear_RGB`)."""
     return display_linear_RGB(result, exposure, encoded=True)
 
 
-def software_versions():
+def software_versions() -> dict[str, str]:
     """Versions of the packages an image depends on (for the EXR header)."""
     return dict(_software_versions())  # a copy: the caller may change it
 
@@ -236,7 +249,10 @@ def _software_versions():
     return out
 
 
-def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposure=None):
+def write_render(result: RenderResult, exr_path: str | os.PathLike[str] | None = None,
+                 png_path: str | os.PathLike[str] | None = None,
+                 rgb_exr_path: str | os.PathLike[str] | None = None,
+                 exposure: float | None = None) -> tuple[npt.NDArray[np.float64], float]:
     """Write the linear XYZ image (EXR), the display PNG and the display-referred linear RGB EXR,
     each if its path is given (at least one), atomically: all files or none.
 
@@ -274,13 +290,15 @@ def write_render(result, exr_path=None, png_path=None, rgb_exr_path=None, exposu
         if "exr" in tmp:
             write_exr_XYZ(tmp["exr"], result.XYZ, attributes)
         if "rgb" in tmp:
-            write_exr_RGB(tmp["rgb"], linear, tag, attributes)
+            write_exr_RGB(tmp["rgb"], linear, tag, attributes)  # type: ignore[arg-type]  # with rgb
         if "png" in tmp:
             write_png(tmp["png"], rgb, bit_depth=scene.display.png_bit_depth, tag=tag)
     return rgb, scale
 
 
-def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=None):
+def write_linear_RGB_from_XYZ(exr_path: str | os.PathLike[str], scene_path: str | os.PathLike[str],
+                              rgb_exr_path: str | os.PathLike[str],
+                              spectra_dir: SpectraDirs = None) -> None:
     """Write the display-referred linear RGB EXR of a rendered XYZ EXR (:func:`write_render`'s)
     and its scene file, exposed as the render was (the header's ``display_exposure_scale``).
 
@@ -304,8 +322,11 @@ def write_linear_RGB_from_XYZ(exr_path, scene_path, rgb_exr_path, spectra_dir=No
                  exposure=float(header["display_exposure_scale"]))
 
 
-def render_to_files(scene, scene_path, exr_path, png_path=None, components=False,
-                    rgb_exr_path=None, keep_trace=False):
+def render_to_files(scene: Scene, scene_path: str | os.PathLike[str],
+                    exr_path: str | os.PathLike[str],
+                    png_path: str | os.PathLike[str] | None = None, components: bool = False,
+                    rgb_exr_path: str | os.PathLike[str] | None = None,
+                    keep_trace: bool = False) -> RenderResult:
     """Write the scene file, render it and write its EXR (and PNG, and linear RGB EXR); return
     the result.
 

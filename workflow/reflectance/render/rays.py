@@ -10,6 +10,7 @@ arrays and broadcast them. The kernels are public for the scene's primitives
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.geometry.vectors import dot, normalize, unit_vector
 
@@ -62,8 +63,11 @@ def components_first(*arrays):
     return [np.moveaxis(x, -1, 0) for x in arrays]
 
 
-def ray_triangle_MollerTrumbore1997(origins, directions, v0, v1, v2, t_min=0.0, t_max=np.inf,
-                                    tolerance=0.0):
+def ray_triangle_MollerTrumbore1997(origins: npt.ArrayLike, directions: npt.ArrayLike,
+                                    v0: npt.ArrayLike, v1: npt.ArrayLike, v2: npt.ArrayLike,
+                                    t_min: npt.ArrayLike = 0.0, t_max: npt.ArrayLike = np.inf,
+                                    tolerance: float = 0.0
+                                   ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.bool_]]:
     """Ray-triangle intersection, two-sided, vectorised, float64.
 
     Parameters
@@ -100,7 +104,10 @@ def ray_triangle_MollerTrumbore1997(origins, directions, v0, v1, v2, t_min=0.0, 
     return np.where(hit, t, np.inf), np.where(hit, b1, 0.0), np.where(hit, b2, 0.0), hit
 
 
-def ray_sphere(origins, directions, centers, radii, t_min=0.0, t_max=np.inf):
+def ray_sphere(origins: npt.ArrayLike, directions: npt.ArrayLike, centers: npt.ArrayLike,
+               radii: npt.ArrayLike, t_min: npt.ArrayLike = 0.0,
+               t_max: npt.ArrayLike = np.inf
+              ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.bool_]]:
     """Nearest intersection of rays with spheres in (t_min, t_max), vectorised, float64.
 
     The discriminant is formed from the ray's closest approach to the centre and the roots

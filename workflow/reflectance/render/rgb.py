@@ -18,11 +18,20 @@ References
 from __future__ import annotations
 
 import functools
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from reflectance.render.pipeline import RenderResult
+    from reflectance.render.scene import Scene
 
 __all__ = ["render_spectral_and_rgb", "display_exposure"]
 
 
-def render_spectral_and_rgb(scene, space="sRGB", keep_trace=False):
+def render_spectral_and_rgb(scene: Scene, space: str = "sRGB",
+                            keep_trace: bool = False) -> tuple[RenderResult, RenderResult]:
     """(spectral XYZ image, RGB-renderer XYZ image) of ``scene``, one visibility pass for both.
 
     Parameters
@@ -47,7 +56,7 @@ def render_spectral_and_rgb(scene, space="sRGB", keep_trace=False):
     return images[0], images[1]
 
 
-def display_exposure(XYZ, scene):
+def display_exposure(XYZ: npt.NDArray[np.float64], scene: Scene) -> float:
     """The exposure scale the scene's display applies to the image ``XYZ`` (its PNG's scale)."""
     from reflectance.render.pipeline import RenderResult, display_image
 

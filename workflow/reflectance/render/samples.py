@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.render.parallel import Tasks, pieces
+
+if TYPE_CHECKING:
+    from reflectance.render.primitives import Primitives
 
 __all__ = ["SurfaceSamples"]
 
@@ -69,14 +74,16 @@ class SurfaceSamples:
     depth: np.ndarray
     pixel: np.ndarray
     stats: dict = field(default_factory=dict)
-    scene: object = field(default=None, repr=False, compare=False)  # the flat scene, reused
+    # the flat scene, reused
+    scene: Primitives | None = field(default=None, repr=False, compare=False)
 
-    def image(self, values):
+    def image(self, values: npt.NDArray[Any]) -> npt.NDArray[Any]:
         """Reshape per-sample values (N, ...) to the fine grid (rows, cols, ...)."""
         values = np.asarray(values)
         return values.reshape(tuple(self.shape) + values.shape[1:])
 
-    def to_pixels(self, values, threads=1):
+    def to_pixels(self, values: npt.NDArray[Any],
+                  threads: int | None = 1) -> npt.NDArray[np.float64]:
         """Average per-sample values over each pixel's samples (box filter): (H, W, ...); with
         several ``threads`` (:mod:`reflectance.render.parallel`), bands of pixel rows at once
         (each pixel's mean as in one call)."""

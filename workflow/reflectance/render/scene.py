@@ -19,10 +19,14 @@ from __future__ import annotations
 import copy
 import functools
 import json
+import os
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
 import yaml
 
 from reflectance.colour.colorimetry import cmfs, illuminant_sd
@@ -44,6 +48,12 @@ from reflectance.io.paths import file_inside, package_data
 from reflectance.io.yamlfile import MAX_BYTES, YAMLFileError, load_yaml_text
 from reflectance.io.limits import grid_points, size_problem
 from reflectance.render.memory import MESH_ELEMENTS_PER_VERTEX, render_size_problem
+
+if TYPE_CHECKING:
+    import pyvista as pv
+
+if TYPE_CHECKING:
+    from reflectance.optics.spectra import SpectraDirs
 
 __all__ = [
     "SceneError",
@@ -112,7 +122,7 @@ def _validator():
     return _with_defaults(jsonschema.Draft202012Validator)(schema)
 
 
-def validate_scene(document, source="<scene>"):
+def validate_scene(document: Any, source: str = "<scene>") -> dict[str, Any]:
     """A copy of ``document`` with the schema's defaults filled in; SceneError listing every
     violation by key."""
     if not isinstance(document, dict):
@@ -157,7 +167,7 @@ class SceneObject:
     """
 
     name: str
-    mesh: object  # pyvista.PolyData, placed
+    mesh: pv.PolyData  # placed
     material: ShadingMaterial
     part_materials: dict = field(default_factory=dict)
 
@@ -182,12 +192,12 @@ class Scene:
     spectral: str
     table_size: int
     shadows: bool
-    mesh: object
+    mesh: pv.PolyData
     source: str = "<scene>"
     document: dict = field(default_factory=dict)
-    refinement: object = None
+    refinement: Refinement | None = None
 
-    def to_json(self):
+    def to_json(self) -> str:
         """The validated document as canonical JSON (sorted keys)."""
         return json.dumps(self.document, sort_keys=True, separators=(",", ":"))
 
@@ -276,7 +286,7 @@ def index_label(index):
     return f"n = {index['n']:g}, k = {index['k']:g}"
 
 
-def constant_index_material(n, k, grid):
+def constant_index_material(n: float, k: float, grid: npt.ArrayLike) -> Material:
     """A :class:`reflectance.optics.spectra.Material` of wavelength-independent index ``n + i k``.
 
     What a material CSV with the same ``n, k`` at every wavelength gives (scene key ``index``:
@@ -531,7 +541,9 @@ def size_problems(doc, memory=None):
     return [p for p in problems if p is not None]
 
 
-def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
+def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>",
+                    base_dir: str | os.PathLike[str] = ".",
+                    spectra_dir: SpectraDirs = None) -> Scene:
     """A :class:`Scene` from a scene mapping (as a scene file holds it).
 
     Parameters
@@ -609,7 +621,8 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
                       d["png_bit_depth"], key, d.get("highlight_knee"), white, d["transfer"])
 
-    cache, objects = {}, []
+    cache: dict[str, Any] = {}
+    objects: list[SceneObject] = []
     for i, obj in enumerate(doc["objects"]):
         path = ["objects", i]
         material = _material(check, path + ["material"], obj["material"], grid, spectra_dirs,
@@ -639,13 +652,17 @@ def scene_from_dict(document, source="<scene>", base_dir=".", spectra_dir=None):
     composed = check.run(["objects"], _compose, objects, doc["objects"])
     check.raise_if_any()
     return Scene(camera=camera, objects=tuple(objects), lights=tuple(lights), ambient=ambient,
-                 display=display, wavelengths=grid, observer=observer, spectral=doc["spectral"],
+                 display=display, wavelengths=grid,
+                 observer=observer,  # type: ignore[arg-type]  # checked above
+                 spectral=doc["spectral"],
                  table_size=doc["fresnel_table_size"], shadows=doc["shadows"], mesh=composed,
                  source=source, document=doc, refinement=refinement)
 
 
-def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None,
-               spectral=None, wavelengths=None):
+def load_scene(path: str | os.PathLike[str], spectra_dir: SpectraDirs = None,
+               width: int | None = None, height: int | None = None, supersample: int | None = None,
+               spectral: str | None = None,
+               wavelengths: Mapping[str, float] | None = None) -> Scene:
     """Read a scene file, validate it and resolve it (see :func:`scene_from_dict`).
 
     Parameters
@@ -682,8 +699,11 @@ def load_scene(path, spectra_dir=None, width=None, height=None, supersample=None
                            wavelengths=wavelengths)
 
 
-def scene_from_text(text, source, base_dir, spectra_dir=None, width=None, height=None,
-                    supersample=None, spectral=None, wavelengths=None):
+def scene_from_text(text: str | bytes, source: str, base_dir: str | os.PathLike[str],
+                    spectra_dir: SpectraDirs = None, width: int | None = None,
+                    height: int | None = None, supersample: int | None = None,
+                    spectral: str | None = None,
+                    wavelengths: Mapping[str, float] | None = None) -> Scene:
     """A scene from the bytes of a scene file (``reflectance render -`` reads them from standard
     input), named ``source`` in messages, its relative paths taken from ``base_dir``; the other
     parameters as for :func:`load_scene`."""
@@ -709,7 +729,7 @@ def scene_from_text(text, source, base_dir, spectra_dir=None, width=None, height
                            spectra_dir=spectra_dir)
 
 
-def write_scene_file(scene, path):
+def write_scene_file(scene: Scene, path: str | os.PathLike[str]) -> None:
     """Write the validated scene (defaults filled in) as YAML, atomically; ``reflectance render``
     re-renders it."""
     from reflectance.io.atomic import atomic_write

@@ -9,11 +9,21 @@ when it closes, whatever happened in between.
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Callable
+from typing import Any, TYPE_CHECKING
 
 from reflectance.render.idbuffer import IdRenderer
 from reflectance.render.parallel import Tasks
 from reflectance.render.primitives import Primitives
 from reflectance.render.tracing import trace, trace_once
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from reflectance.render.idbuffer import IdRenderer
+    from reflectance.render.samples import SurfaceSamples
+    from reflectance.render.scene import Scene
 
 __all__ = ["RenderSession"]
 
@@ -44,12 +54,14 @@ class RenderSession:
     and awaited (its error raised) when the session closes, after the window.
     """
 
-    def __init__(self, scene, threads=1, progress=None, keep_trace=False, tally=None):
+    def __init__(self, scene: Scene, threads: int = 1,
+                 progress: Callable[[str], None] | None = None, keep_trace: bool = False,
+                 tally: Callable[[int, int], None] | None = None) -> None:
         self.scene, self.threads, self.keep_trace = scene, threads, keep_trace
         self._progress, self._tally = progress, tally
         self.done = self.total = 0  # samples traced and shaded, and planned
         self._stack = contextlib.ExitStack()
-        self._tools = None
+        self._tools: tuple[Any, IdRenderer] | None = None
 
     def __enter__(self):
         self._stack.__enter__()
@@ -58,7 +70,7 @@ class RenderSession:
     def __exit__(self, *exc):
         return self._stack.__exit__(*exc)
 
-    def tools(self):
+    def tools(self) -> tuple[Any, IdRenderer]:
         """``(primitives, renderer)`` of the scene, made on the first call."""
         if self._tools is None:
             primitives = Primitives(self.scene.mesh)
@@ -69,17 +81,17 @@ class RenderSession:
             self._tools = primitives, self._stack.enter_context(IdRenderer(primitives))
         return self._tools
 
-    def tell(self, phase):
+    def tell(self, phase: str) -> None:
         """Tell the progress callback, if any, that ``phase`` starts."""
         if self._progress is not None:
             self._progress(phase)
 
-    def plan(self, samples):
+    def plan(self, samples: int) -> None:
         """``samples`` more are to be traced and shaded (the first pass's, the refinement's)."""
         self.total += int(samples)
         self._count()
 
-    def finished(self, samples):
+    def finished(self, samples: int) -> None:
         """``samples`` of the planned ones are traced and shaded."""
         self.done += int(samples)
         self._count()
@@ -93,13 +105,15 @@ class RenderSession:
         progress = self._progress
         return None if progress is None else (lambda phase: progress(where + phase))
 
-    def trace(self, rows, where=""):
+    def trace(self, rows: tuple[int, int], where: str = "") -> tuple[Any, ...]:
         """``(samples, shadowed, timings)`` of the band ``rows`` of the scene's first pass
         (:func:`reflectance.render.tracing.trace_once`, kept with ``keep_trace``)."""
         return trace_once(self.scene, self.keep_trace, rows, self.tools, self._at(where),
                           self.threads)
 
-    def trace_selected(self, scene, rows, select, map_size, where=""):
+    def trace_selected(self, scene: Scene, rows: tuple[int, int], select: Any, map_size: int | None,
+                       where: str = ""
+                      ) -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
         """``(samples, shadowed, timings)`` of the samples ``select`` of the band ``rows`` of
         ``scene`` (the session's scene on a finer grid: the adaptive refinement's), with the
         light maps' side ``map_size`` (:func:`reflectance.render.tracing.trace`)."""

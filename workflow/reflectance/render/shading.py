@@ -39,9 +39,12 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.optics.brdf import (brdf_BlinnPhong1977, brdf_CookTorrance1982, brdf_Lambert,
                               brdf_Phong1975, brdf_TorranceSparrow_Blinn1977)
@@ -113,7 +116,7 @@ class RoughnessTexture:
     high: float = 1.0
     parameters: dict = field(default_factory=dict)
 
-    def values(self, uv):
+    def values(self, uv: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
         """t(u, v) at texture coordinates ``uv`` (n, 2)."""
         uv = np.asarray(uv, dtype=np.float64)
         return np.asarray(texture(uv[..., 0], uv[..., 1], self.method, **self.parameters),
@@ -208,7 +211,7 @@ class Light:
         if not self.intensity >= 0:
             raise ValueError(f"light intensity must be >= 0, got {self.intensity!r}")
 
-    def solid_angles(self, distance):
+    def solid_angles(self, distance: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
         """d omega at samples at ``distance`` from the light."""
         if self.area is not None:
             return self.area / np.maximum(distance, 1e-300) ** 2
@@ -231,7 +234,7 @@ class Ambient:
             raise ValueError(f"ambient fraction must be >= 0, got {self.fraction!r}")
 
 
-def ambient_intensity(ambient, lights):
+def ambient_intensity(ambient: Ambient | None, lights: Sequence[Light]) -> float:
     """``I_ia`` (in units of the ambient spectrum with Y = 1) for the scene's lights.
 
     ``"intensity"``: Cook & Torrance 1982, Figs. 6 and 7, "I_ia = 0.01 I_i", with I_i the lights'
@@ -261,7 +264,7 @@ def ambient_intensity(ambient, lights):
     return weighted if ambient.reference == "weighted" else weighted / np.pi
 
 
-def white_card_luminance(lights):
+def white_card_luminance(lights: Iterable[Light]) -> float:
     """Luminance Y of a white Lambertian card (albedo 1) turned to face each light in turn, summed.
 
     A light of intensity I and solid angle d omega with a spectrum of Y = 1 gives a surface facing
@@ -282,8 +285,8 @@ def white_card_luminance(lights):
     return float(sum(light.intensity * light.solid_angle for light in lights)) / np.pi
 
 
-def emission_XYZ(dominant_wavelength_nm, luminance, purity=1.0, white="D65",
-                 observer=OBSERVER_DEFAULT):
+def emission_XYZ(dominant_wavelength_nm: float, luminance: float, purity: float = 1.0,
+                 white: str = "D65", observer: str = OBSERVER_DEFAULT) -> npt.NDArray[np.float64]:
     """XYZ of luminance Y on the line from a white to the spectral locus at a dominant wavelength.
 
     The chromaticity is ``xy_w + purity (xy_lambda - xy_w)`` with ``xy_lambda`` the spectral locus
@@ -410,7 +413,8 @@ def _cosines(N, V, L):
 # The per-angle table of the integrated Fresnel term
 # --------------------------------------------------------------------------------------------
 
-def fresnel_XYZ_table(material, W, size=1025):
+def fresnel_XYZ_table(material: ShadingMaterial, W: npt.NDArray[np.float64],
+                      size: int = 1025) -> npt.NDArray[np.float64]:
     """``XYZ_F(c) = sum_lambda F(lambda, c) W(lambda)`` on ``size`` equally spaced c in [0, 1].
 
     Parameters
@@ -436,7 +440,8 @@ def fresnel_XYZ_table(material, W, size=1025):
     return np.concatenate(rows)
 
 
-def fresnel_XYZ_table_rgb(material, W, size=1025, space="sRGB"):
+def fresnel_XYZ_table_rgb(material: ShadingMaterial, W: npt.NDArray[np.float64], size: int = 1025,
+                          space: str = "sRGB") -> npt.NDArray[np.float64]:
     """:func:`fresnel_XYZ_table` as a three-channel RGB renderer makes it: F0 per display channel
     and Schlick 1994 per channel (:func:`reflectance.colour.display.fresnel_XYZ_rgb`) from the
     material's exact F0 under the light ``W``; same arguments and result."""
@@ -450,7 +455,7 @@ def fresnel_XYZ_table_rgb(material, W, size=1025, space="sRGB"):
     return fresnel_XYZ_rgb(F0_XYZ, c, white, space, fresnel=fresnel_Schlick1994)
 
 
-def lookup_table(table, c):
+def lookup_table(table: npt.NDArray[np.float64], c: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Linear interpolation of a table over equally spaced c in [0, 1] at cosines ``c`` (n,)."""
     last = len(table) - 1
     x = np.clip(np.asarray(c, dtype=np.float64), 0.0, 1.0) * last
@@ -472,9 +477,12 @@ def _light_terms(light, position, shadowed):
     return L, energy
 
 
-def shade(position, normal, view, uv, material, lights=(), shadowed=None, ambient=None,
-          wavelengths=None, observer=OBSERVER_DEFAULT, spectral="table", table_size=1025,
-          components=False, fresnel_table=None, threads=1):
+def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
+          material: ShadingMaterial, lights: Sequence[Light] = (),
+          shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
+          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
+          spectral: str = "table", table_size: int = 1025, components: bool = False,
+          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
     """XYZ reflected (and emitted) toward the viewer by surface samples of one material.
 
     ``I_r = I_ia R_a + sum_l I_il (N.L_l) d omega_il R_l(lambda)`` (Cook & Torrance 1982) with

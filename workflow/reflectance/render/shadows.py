@@ -15,7 +15,11 @@ than the walk reaches).
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
+from typing import Any, TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.render.camera import View
 from reflectance.render.primitives import Primitives
@@ -24,6 +28,12 @@ from reflectance.render.lights import DirectionalLight, as_light, light_vectors
 from reflectance.render.parallel import Tasks, pieces
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.samples import SurfaceSamples
+
+if TYPE_CHECKING:
+    from reflectance.render.lights import PointLight
+    import pyvista as pv
+
+    from reflectance.render.idbuffer import IdRenderer
 
 __all__ = ["shadow_mask", "shadow_masks"]
 
@@ -156,7 +166,10 @@ def _block(scene, r, k, lifted, L, t_max, eps, planes, own, blocked):
         blocked[r[hit]] = True
 
 
-def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=1):
+def shadow_masks(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+                 lights: Sequence[DirectionalLight | PointLight | Mapping[str, Any]],
+                 map_size: int | None = None, renderer: IdRenderer | None = None,
+                 threads: int | None = 1) -> npt.NDArray[np.bool_]:
     """True where a surface sample does not see a light (cast shadow or facing away).
 
     Samples whose shading normal faces away from the light (N.L <= 0) are in shadow without a
@@ -256,7 +269,7 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
                     lifted = np.concatenate(lifting.results(), axis=1)
                     lifted += eps * normal.T
                     [plane_sets] = planning.results()
-                planes = plane_sets[i]
+                planes = plane_sets[i]  # type: ignore[index]  # set with lifted
                 # a sample is blocked if any of its tests hits: the pieces' order does not
                 # change the mask (a piece only skips walks of samples already blocked)
                 for chunk in pieces(len(ray), testing.threads, _CHUNK):
@@ -269,6 +282,8 @@ def shadow_masks(samples, meshes, lights, map_size=None, renderer=None, threads=
     return shadow
 
 
-def shadow_mask(samples, meshes, light, map_size=None):
+def shadow_mask(samples: SurfaceSamples, meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]],
+                light: DirectionalLight | PointLight | Mapping[str, Any],
+                map_size: int | None = None) -> npt.NDArray[np.bool_]:
     """:func:`shadow_masks` for one light: (N,) bool, True where the light is not seen."""
     return shadow_masks(samples, meshes, [light], map_size)[0]

@@ -13,13 +13,22 @@ from __future__ import annotations
 
 import hashlib
 import time
+from collections.abc import Callable
+from typing import Any, TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.io.cache import TRACES
 from reflectance.render.camera import SINGLE_TILE_SAMPLES, TILE_SAMPLES
 from reflectance.render.shadows import shadow_masks
 from reflectance.render.visibility import visibility
+
+if TYPE_CHECKING:
+    from reflectance.render.camera import Camera
+    from reflectance.render.idbuffer import IdRenderer
+    from reflectance.render.samples import SurfaceSamples
+    from reflectance.render.scene import Scene
 
 __all__ = ["tiles", "light_map_size", "trace", "trace_key", "trace_once"]
 
@@ -27,7 +36,8 @@ __all__ = ["tiles", "light_map_size", "trace", "trace_key", "trace_once"]
 # as this module's names (which tests patch)
 
 
-def tiles(camera, single=None, tile=None):
+def tiles(camera: Camera, single: int | None = None,
+          tile: int | None = None) -> list[tuple[int, int]]:
     """Bands ``(start, stop)`` of rows of the camera's fine grid that
     :func:`reflectance.render.pipeline.render` traces one at a time: the whole grid if it has at
     most ``single`` samples (default :data:`~reflectance.render.camera.SINGLE_TILE_SAMPLES`), else
@@ -43,7 +53,7 @@ def tiles(camera, single=None, tile=None):
     return [(start, min(start + step, rows)) for start in range(0, rows, step)]
 
 
-def light_map_size(camera, rows=None):
+def light_map_size(camera: Camera, rows: tuple[int, int] | None = None) -> int:
     """Light-map side: what :func:`shadow_masks` picks for the whole grid, and for a band of
     ``rows`` that side scaled by twice the square root of the band's share of the samples (the
     band's samples cover about that share of the whole map; twice as fine again, as a margin),
@@ -59,8 +69,11 @@ def _silent(phase):
     pass
 
 
-def trace(scene, rows=None, primitives=None, progress=None, select=None, map_size=None,
-          renderer=None, threads=1):
+def trace(scene: Scene, rows: tuple[int, int] | None = None, primitives: Any = None,
+          progress: Callable[[str], None] | None = None, select: Any = None,
+          map_size: int | None = None, renderer: IdRenderer | None = None,
+          threads: int | None = 1
+         ) -> tuple[SurfaceSamples, npt.NDArray[np.bool_], dict[str, float]]:
     """(samples, shadowed, timings): camera visibility and each light's shadow mask, of the
     whole image or of the band ``rows`` of the fine grid (:func:`tiles`); ``primitives``
     (:class:`reflectance.render.primitives.Primitives` of ``scene.mesh``) are reused if given.
@@ -88,7 +101,7 @@ def trace(scene, rows=None, primitives=None, progress=None, select=None, map_siz
     return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
 
 
-def trace_key(scene, rows=None):
+def trace_key(scene: Scene, rows: tuple[int, int] | None = None) -> str:
     """What :func:`trace` depends on, as a SHA-256 hex digest: the composed mesh (points, faces,
     every point and cell array), the camera, the lights' directions or positions, whether shadows
     are cast, and the band of rows (None: the whole grid, the same trace as its one band). Two
@@ -109,7 +122,10 @@ def trace_key(scene, rows=None):
     return digest.hexdigest()
 
 
-def trace_once(scene, keep=True, rows=None, tools=None, progress=None, threads=1):
+def trace_once(scene: Scene, keep: bool = True, rows: tuple[int, int] | None = None,
+               tools: Callable[[], tuple[Any, IdRenderer]] | None = None,
+               progress: Callable[[str], None] | None = None,
+               threads: int | None = 1) -> tuple[Any, ...]:
     """:func:`trace` of ``scene`` (the band ``rows``; None: the whole grid), or, with ``keep``,
     the one the process's trace memo (:data:`reflectance.io.cache.TRACES`) keeps under its
     :func:`trace_key`, for scenes that differ only in what the trace does not look at (a new
