@@ -30,8 +30,8 @@ from reflectance.scripting import params_dict, script_log
 TITLES = {"a": "(a) copper-coloured plastic vase", "b": "(b) copper vase"}
 #: a display variant's title: how its linear RGB became the PNG's codes (scene display.transfer)
 DISPLAYS = {"display": "the linear RGB encoded by the display's transfer function",
-            "none": "the linear RGB written as the codes, without gamma correction\n(as a 1982 frame "
-                    "buffer drove its monitor)"}
+            "none": "the linear RGB written as the codes, without gamma correction\n(not the "
+                    "paper's pipeline, which corrected for the monitor: a contrast)"}
 READINGS = {"intensity": "ambient as printed: I_ia = {f} I_i",
             "irradiance": "ambient = {f} of the lights' irradiance: I_ia = {f} \u03a3 I_i d\u03c9_i / \u03c0",
             "weighted": "ambient = {f} of the lights as they enter the model: I_ia = {f} \u03a3 I_i d\u03c9_i"}

@@ -601,9 +601,9 @@ def gamut_clip(RGB_linear: npt.ArrayLike, method: str = "dominant-wavelength",
 
 TRANSFERS = {
     "display": "the display space's transfer function (DISPLAY_SPACES)",
-    "none": "none: the linear RGB written as the signal, as a frame buffer of Cook & Torrance's "
-            "time wrote intensities to a monitor without gamma correction (the monitor's power "
-            "law then darkens the colours and raises their channel ratios to its power)",
+    "none": "none: the linear RGB written as the signal, without gamma correction (the "
+            "monitor's power law then darkens the colours and raises their channel ratios to "
+            "its power)",
 }
 """What :func:`encode` applies: the space's transfer function, or none (a choice of a scene's
 ``display.transfer``)."""
