@@ -13,7 +13,7 @@ from matplotlib.ticker import MaxNLocator
 from reflectance.optics.brdf import brdf
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.brdf_geometry import draw_brdf_angles
-from reflectance.papers.polar import lobe_peak, plane_of_incidence_vectors
+from reflectance.papers.polar import lobe_peak, plane_angles, plane_of_incidence_vectors
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -48,7 +48,7 @@ def wrap_items(text, width=30):
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     theta_i = np.radians(cfg["incidence_deg"])
-    theta_o = np.radians(np.arange(-90.0, 90.0 + 1e-9, cfg["polar_step_deg"]))
+    theta_o = plane_angles(cfg["polar_step_deg"])
     L, V, N = plane_of_incidence_vectors(theta_i, theta_o)  # light on the -x side (on the left)
 
     table = {"theta_o_deg": np.degrees(theta_o)}

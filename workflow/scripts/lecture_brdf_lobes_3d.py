@@ -13,7 +13,8 @@ import pyvista as pv
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import font_file, off_screen_plotter, save_plotter
 from reflectance.optics.brdf import brdf
-from reflectance.papers.polar import direction_from_angles, lobe_peak, plane_of_incidence_vectors
+from reflectance.papers.polar import (direction_from_angles, lobe_peak, plane_angles,
+                                      plane_of_incidence_vectors)
 from reflectance.scripting import script_log
 
 # config key -> (reflectance.optics.brdf method, panel title): the 2-D figure's models
@@ -38,7 +39,7 @@ with script_log(snakemake) as log:
     V = direction_from_angles(theta, phi)
     # f in the plane of incidence at the 2-D figure's steps (as its table, computed here so that
     # this figure reads only its own keys)
-    theta_plane = np.radians(np.arange(-90.0, 90.0 + 1e-9, cfg["polar_step_deg"]))
+    theta_plane = plane_angles(cfg["polar_step_deg"])
     L_plane, V_plane, _ = plane_of_incidence_vectors(theta_i, theta_plane)
 
     rows = -(-len(MODELS) // COLUMNS)

@@ -42,7 +42,7 @@ import numpy.typing as npt
 from reflectance.optics.brdf import brdf
 
 __all__ = ["direction_from_angles", "plane_of_incidence_vectors", "intensity_in_plane_of_incidence",
-           "lobe_peak"]
+           "plane_angles", "lobe_peak"]
 
 
 def direction_from_angles(theta: npt.ArrayLike, phi: npt.ArrayLike) -> npt.NDArray[np.float64]:
@@ -136,7 +136,19 @@ def intensity_in_plane_of_incidence(theta_i: float, theta_r: npt.ArrayLike, meth
     return i[()] if i.ndim == 0 else i
 
 
-def lobe_peak(f, theta, limit_deg):
+def plane_angles(step_deg: float) -> npt.NDArray[np.float64]:
+    """Signed angles from N (radians) across the plane of incidence, -90 to 90 degrees inclusive
+    every ``step_deg``: the lecture's 2-D lobes, and the 3-D figure's in-plane check of them.
+
+    Examples
+    --------
+    >>> np.degrees(plane_angles(45.0)).tolist()
+    [-90.0, -45.0, 0.0, 45.0, 90.0]
+    """
+    return np.radians(np.arange(-90.0, 90.0 + 1e-9, step_deg))
+
+
+def lobe_peak(f: npt.ArrayLike, theta: npt.ArrayLike, limit_deg: float) -> tuple[float, int]:
     """The largest ``f`` over the directions at most ``limit_deg`` from N, and its flat index.
 
     ``theta`` holds the (signed, or polar) angles from N in radians, broadcasting against ``f``.
