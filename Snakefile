@@ -61,3 +61,5 @@ rule all:
     default_target: True
     input:
         TARGETS,
+    message:
+        "every figure, table, audit and spectrum, and their provenance"

@@ -2,6 +2,7 @@
 
 import hashlib
 import shutil
+import subprocess
 import sys
 from pathlib import Path
 
@@ -350,7 +351,46 @@ def after_build(runs, built, tmp_path_factory, items):
         starts.append((10, "report", _report, (runs, built, tmp_path_factory.mktemp("report"))))
     if "test_nothing_left_to_do" in names:
         starts.append((5, ("dry run", "built"), _dry_run, (runs, built)))
+    if "test_a_deleted_output_reruns_its_job_and_the_manifest" in names:
+        cwd = tmp_path_factory.mktemp("deleted") / "copy"
+        shutil.copytree(built, cwd, symlinks=True, ignore=shutil.ignore_patterns("locks"))
+        for path in DELETED:
+            (cwd / path).unlink()
+        starts.append((5, ("dry run", "deleted"), _dry_run, (runs, cwd)))
     return starts
+
+
+#: outputs that are not the first of their job's (so not among the manifest's declared inputs,
+#: workflow/rules/common.smk's one_output_per_job), deleted from a copy of the build
+DELETED = ["results/cook_torrance_1982/fig4.pdf", "results/lecture/fresnel.csv"]
+
+
+def test_a_deleted_output_reruns_its_job_and_the_manifest(after_build):
+    """A file deleted by hand: rule all asks for it, its job runs again and so does the
+    provenance manifest, though the manifest's rule names one output per job only."""
+    proc = after_build(("dry run", "deleted"))
+    text = proc.stdout + proc.stderr
+    assert set(_planned_jobs(text)) == {"ct82_fig4", "lecture_fresnel", "provenance", "all"}, text
+
+
+def test_the_log_names_each_target_once(root):
+    """issue 27: the build's log listed the ~300 targets in the manifest's inputs and again in
+    rule all's. A forced dry run names an output once, in its own job's outputs."""
+    proc = subprocess.run(SNAKEMAKE + ["-n", "--forceall", "--cores", "2"], cwd=root,
+                          capture_output=True, text=True, check=False)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode == 0, text
+    for path in DELETED + ["results/cook_torrance_1982/fig4.png"]:
+        assert text.count(path) == 1, (path, text.count(path))
+
+
+def test_the_build_log_names_an_output_in_its_job_and_rule_all_only(built):
+    """The session's build from nothing: an output is named by its job (outputs, and the reason
+    "Missing output files") and by rule all's reason, not also twice by the manifest's job."""
+    log = min((built / ".snakemake" / "log").glob("*.snakemake.log")).read_text()
+    assert "Job stats:" in log and "provenance.yaml: the SHA-256" in log
+    for path in DELETED:
+        assert log.count(path) == 3, (path, log.count(path))
 
 
 def _dry_run(runs, cwd):

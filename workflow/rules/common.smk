@@ -150,3 +150,23 @@ def ct82_reported(definition, params, outputs, fig, subcategory):
                 },
             )
     return marked
+
+
+def one_output_per_job(targets):
+    """``targets`` less every file whose job already has one listed: the provenance manifest's
+    declared inputs (provenance.smk). A job writes all its outputs or fails, and a job that runs
+    again rewrites them all, so waiting for one output of each job is waiting for all; the log then
+    names each job once instead of every file twice. A target that no rule, or more than one rule,
+    claims is kept as it is."""
+    seen, kept = set(), []
+    for target in targets:
+        producers = [r for r in workflow.rules if r.is_producer(target)]
+        if len(producers) != 1:
+            kept.append(target)
+            continue
+        producer = producers[0]
+        job = (producer.name, tuple(sorted(producer.get_wildcards(target).items())))
+        if job not in seen:
+            seen.add(job)
+            kept.append(target)
+    return kept

@@ -5,9 +5,9 @@ from reflectance.io.provenance import provenance, write_provenance
 from reflectance.scripting import script_log
 
 with script_log(snakemake) as log:
-    inputs = snakemake.input
-    manifest = provenance(inputs.outputs, inputs.spectra, dict(snakemake.params.config),
-                          config_file=inputs.config_file, git=snakemake.params.git)
+    params = snakemake.params  # every file; the rule's inputs name one output per job
+    manifest = provenance(params.outputs, params.spectra, dict(params.config),
+                          config_file=snakemake.input.config_file, git=params.git)
     write_provenance(snakemake.output[0], manifest)
     log.info("%d outputs, %d spectra, commit %s", len(manifest["outputs"]),
              len(manifest["spectra"]), manifest["git"]["commit"])
