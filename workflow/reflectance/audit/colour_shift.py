@@ -105,7 +105,8 @@ def reflected_XYZ_approximation_CookTorrance1982(material: Material, cos_theta: 
     return colour_interpolation_CookTorrance1982(XYZ_0, XYZ_90, F_theta, F0_average)
 
 
-def approximation_onset_CookTorrance1982(material, average_range_nm, fractions=(0.5,)):
+def approximation_onset_CookTorrance1982(material: Material, average_range_nm: Sequence[float],
+                                         fractions: Sequence[float] = (0.5,)) -> dict[str, float]:
     """Why Fig. 5c's approximation keeps the normal-incidence colour until close to grazing.
 
     The approximation's weight is ``t = max(0, F_theta - F_0) / (1 - F_0)`` with F of the

@@ -30,7 +30,7 @@ import numpy.typing as npt
 __all__ = ["GAMUT_TOLERANCE", "exr_colorimetry", "exr_display_RGB", "out_of_gamut", "hue_difference_deg", "clip_differences"]
 
 
-def exr_colorimetry(header):
+def exr_colorimetry(header: Mapping[str, Any]) -> dict[str, Any]:  # names (str), a grid (dict)
     """``{"illuminant", "observer", "wavelengths"}`` an EXR of the render pipeline was computed
     with, from the scene in its header: the display white (display.illuminant, else the first
     light's spectrum, as :func:`reflectance.render.scene.load_scene` reads it), the observer and

@@ -402,7 +402,8 @@ def shortcuts_XYZ(material: Material, cos_theta: npt.ArrayLike, W: npt.NDArray[n
 
 # --- the table ------------------------------------------------------------------------------------
 
-def check_finite_colours(material, XYZ, methods, angles_deg):
+def check_finite_colours(material: Material, XYZ: npt.NDArray[np.float64], methods: Sequence[str],
+                         angles_deg: npt.NDArray[np.float64]) -> None:
     """Refuse colours that are not finite (an n or k so large that the Fresnel equations
     overflow: k = 1e300 squared), naming the material, the method and the angle (issue 25).
 

@@ -56,7 +56,7 @@ import os
 import shutil
 import tempfile
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from importlib.util import find_spec
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -85,7 +85,7 @@ def mitsuba_available() -> bool:
     return find_spec("mitsuba") is not None
 
 
-def mitsuba_variant(prefer=VARIANTS):
+def mitsuba_variant(prefer: Sequence[str] = VARIANTS) -> str:
     """The first variant of ``prefer`` that works here (an LLVM variant needs the LLVM library,
     found by Dr.Jit or named by ``DRJIT_LIBLLVM_PATH``), set as Mitsuba's variant."""
     import mitsuba as mi
@@ -339,7 +339,8 @@ GOAL_SPEEDUP = 10.0
 RETIME_S = 5.0
 
 
-def equal_error_seconds(error, ladder, extrapolate=False):
+def equal_error_seconds(error: float, ladder: Sequence[tuple[float, float, float]],
+                        extrapolate: bool = False) -> float | None:
     """Mitsuba's seconds at ``error`` from the ladder's rungs ``[(spp, seconds, error), ...]``.
 
     Interpolated linearly in log(error), log(seconds) between rungs; below the smallest error,
@@ -371,7 +372,8 @@ def meets_goal(errors, goal=GOAL_DE):
     return all(e <= g for e, g in zip(errors, goal))
 
 
-def fastest_at_goal(our_ladder, goal=GOAL_DE):
+def fastest_at_goal(our_ladder: Iterable[dict[str, Any]],  # a rung: numbers and lists
+                    goal: Sequence[float] = GOAL_DE) -> dict[str, Any] | None:
     """Of our rungs ``[{"supersample", "seconds", "vs_ours", ...}, ...]``, the fastest whose
     error against our converged reference (O) meets ``goal`` in mean and p95; None if none."""
     meeting = [rung for rung in our_ladder if meets_goal(rung["vs_ours"], goal)]
@@ -386,7 +388,9 @@ def _at_goal(ladder, key, goal):
                                 extrapolate=True) for j, g in enumerate(goal)]
 
 
-def goal_comparison(ladder, our_ladder, goal=GOAL_DE):
+def goal_comparison(ladder: Sequence[Mapping[str, Any]], our_ladder: Iterable[dict[str, Any]],
+                    goal: Sequence[float] = GOAL_DE
+                    ) -> dict[str, Any]:  # numbers, a list, None where a time cannot be had
     """Mitsuba's and our times at the accuracy ``goal`` against O, and their ratio.
 
     Mitsuba's seconds at the goal's mean and at its p95 come from its ``ladder`` (rungs
@@ -405,7 +409,7 @@ def goal_comparison(ladder, our_ladder, goal=GOAL_DE):
             "ratio": None if ours is None or mitsuba_s is None else mitsuba_s / ours["seconds"]}
 
 
-def spp_at_goal(ladder, goal=GOAL_DE):
+def spp_at_goal(ladder: Sequence[Mapping[str, Any]], goal: Sequence[float] = GOAL_DE) -> int | None:
     """Mitsuba's samples per pixel at the accuracy ``goal`` against O, from its ``ladder``
     (rungs ``{"spp", "vs_ours"}``): for the mean and for the p95, log-log interpolation of
     error against spp between rungs (past the slowest two, extrapolated along them:
@@ -434,8 +438,11 @@ COMMAND_TIMEOUT_S = 900
 FLOOR_COMMAND = "import numpy, vtkmodules.vtkRenderingCore, vtkmodules.vtkRenderingOpenGL2"
 
 
-def whole_commands(document, scene, size, supersample, spp, variant, reference, runs=3,
-                   spectra_dir=None, base_dir=None, progress=None):
+def whole_commands(document: dict[str, Any], scene: Scene, size: int, supersample: int, spp: int,
+                   variant: str, reference: npt.NDArray[np.float64], runs: int = 3,
+                   spectra_dir: SpectraDirs = None, base_dir: str | os.PathLike[str] | None = None,
+                   progress: Callable[[str], None] | None = None
+                   ) -> dict[str, Any]:  # seconds and (mean, p95) pairs, or {"error": str}
     """The two renderers' whole commands, each in a fresh process (Python's start-up, imports,
     the scene's loading, the render, the EXR written): wall seconds (median of ``runs``, the
     two run alternately) and the CIEDE2000 (mean, p95) of each image against ``reference``
@@ -495,7 +502,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
                         str(folder / "scene.json"), variant, str(int(spp)),
                         str(folder / "mitsuba.exr")],
             "floor": [sys.executable, "-c", FLOOR_COMMAND]}
-        times = {key: [] for key in commands}
+        times: dict[str, list[float]] = {key: [] for key in commands}
         for run in range(runs):
             for key, command in commands.items():
                 progress(f"cross-check: whole command, {key} {run + 1}/{runs}")
@@ -515,7 +522,7 @@ def whole_commands(document, scene, size, supersample, spp, variant, reference, 
         XYZ = {"ours": read_exr(folder / "ours.exr")[0].astype(np.float64),
                "mitsuba": np.array(mi.Bitmap(str(folder / "mitsuba.exr")),
                                    dtype=np.float64)[..., :3]}
-    out = {f"{key}_s": statistics.median(value) for key, value in times.items()}
+    out: dict[str, Any] = {f"{key}_s": statistics.median(value) for key, value in times.items()}
     out.update({f"{key}_vs_ours": list(errors(image, reference, scene))
                 for key, image in XYZ.items()})
     return out
@@ -727,9 +734,12 @@ def format_crosscheck(result: Mapping[str, Any]) -> list[str]:
     return lines
 
 
-def run_crosscheck(scene, size, supersample=2, runs=3, reference_supersample=8,
-                   reference_spp=CROSSCHECK_SPP, ladder_spp=LADDER_SPP, spectra_dir=None,
-                   progress=None, our_supersamples=CROSSCHECK_SUPERSAMPLES):
+def run_crosscheck(scene: str | os.PathLike[str] | dict[str, Any], size: int, supersample: int = 2,
+                   runs: int = 3, reference_supersample: int = 8,
+                   reference_spp: int = CROSSCHECK_SPP, ladder_spp: Sequence[int] = LADDER_SPP,
+                   spectra_dir: SpectraDirs = None, progress: Callable[[str], None] | None = None,
+                   our_supersamples: Sequence[int] = CROSSCHECK_SUPERSAMPLES
+                   ) -> dict[str, Any]:  # bench_crosscheck's result, read back from JSON
     """:func:`bench_crosscheck` in a fresh Python process (Mitsuba's threads and memory stay
     there); ``progress``, if given, is called with each phase. Raises RuntimeError with the
     worker's standard error if it fails."""

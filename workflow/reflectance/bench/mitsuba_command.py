@@ -20,12 +20,19 @@ saved by :func:`save_scene` with its camera's transform as the look-at triple it
 from __future__ import annotations
 
 import json
+import os
 import sys
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from reflectance.render.camera import Camera
 
 __all__ = ["save_scene", "main"]
 
 
-def save_scene(doc, camera, path):
+def save_scene(doc: dict[str, Any],  # Mitsuba's nested dictionary of a scene: values of all kinds
+               camera: Camera, path: str | os.PathLike[str]) -> None:
     """Write the ``mitsuba.load_dict`` dictionary ``doc`` as JSON to ``path``, its sensor's
     ``to_world`` replaced by the look-at triple of ``camera`` (a
     :class:`reflectance.render.camera.Camera`), which :func:`main` turns back into it."""
@@ -37,7 +44,7 @@ def save_scene(doc, camera, path):
         json.dump({**doc, "sensor": sensor}, file)
 
 
-def main(argv=None):
+def main(argv: Sequence[str] | None = None) -> None:
     """Render ``SCENE.json`` with Mitsuba's ``VARIANT`` at ``SPP`` samples per pixel into
     ``OUT.exr`` (the film's channels, as Mitsuba writes them)."""
     scene_path, variant, spp, out = sys.argv[1:] if argv is None else argv

@@ -27,8 +27,11 @@ from __future__ import annotations
 import functools
 import io
 import json
+from collections.abc import Iterable
+from pathlib import Path
 
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.io.cache import (CACHE_ENVIRONMENT_VARIABLE, cache_root, distribution_version,
                                   file_name)
@@ -66,7 +69,7 @@ def _colour_science_version():
     return distribution_version("colour", "colour_science")
 
 
-def cache_directory():
+def cache_directory() -> Path:
     """The folder of the cached tables for the installed colour-science (may not exist yet)."""
     return cache_root() / f"colour-science-{_colour_science_version()}"
 
@@ -142,22 +145,22 @@ def _resolve(kind, name):
     return None
 
 
-def observer_names():
+def observer_names() -> tuple[str, ...]:
     """Names of ``colour.colorimetry.MSDS_CMFS_STANDARD_OBSERVER``, in colour-science's order."""
     return tuple(_names("observers")["keys"])
 
 
-def illuminant_names():
+def illuminant_names() -> tuple[str, ...]:
     """Names of ``colour.SDS_ILLUMINANTS``, in colour-science's order."""
     return tuple(_names("illuminants")["keys"])
 
 
-def resolve_observer(name):
+def resolve_observer(name: object) -> str | None:
     """The key of standard observer ``name`` as colour-science would find it, or None."""
     return _resolve("observers", name)
 
 
-def resolve_illuminant(name):
+def resolve_illuminant(name: object) -> str | None:
     """The key of illuminant ``name`` as colour-science would find it, or None."""
     return _resolve("illuminants", name)
 
@@ -230,7 +233,7 @@ def _tabulated(kind, key):
 
 
 @functools.lru_cache(maxsize=None)
-def cmfs_tabulated(observer_key):
+def cmfs_tabulated(observer_key: str) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """colour-science's own tabulation of a standard observer: ``(wavelengths, xyz_bar (n, 3))``.
 
     ``observer_key`` is a key of :func:`observer_names` (see :func:`resolve_observer`).
@@ -246,21 +249,22 @@ def _aligned(kind, key, grid, what, ndim):
                   lambda: _align(_mapping(kind)[key], grid, what), ndim)
 
 
-def cmfs_aligned(observer_key, grid):
+def cmfs_aligned(observer_key: str, grid: Iterable[float]) -> npt.NDArray[np.float64]:
     """A standard observer's CMFs aligned to the uniform ``grid`` (a tuple of nm) by colour-science:
     ``MSDS_CMFS_STANDARD_OBSERVER[key].copy().align(SpectralShape(...)).values``, shape (n, 3)."""
     return _aligned("observers", observer_key, grid, f"the {observer_key} CMFs", 2)
 
 
 @functools.lru_cache(maxsize=None)
-def illuminant_tabulated(illuminant_key):
+def illuminant_tabulated(illuminant_key: str
+                         ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """colour-science's own tabulation of an illuminant: ``(wavelengths, SPD (n,))``."""
     table = _array("illuminant", [illuminant_key],
                    lambda: _tabulated("illuminants", illuminant_key), 2)
     return table[:, 0], table[:, 1]
 
 
-def illuminant_aligned(illuminant_key, grid):
+def illuminant_aligned(illuminant_key: str, grid: Iterable[float]) -> npt.NDArray[np.float64]:
     """An illuminant's SPD aligned to the uniform ``grid`` by colour-science, shape (n,)."""
     return _aligned("illuminants", illuminant_key, grid, f"illuminant {illuminant_key}", 1)
 
@@ -268,7 +272,8 @@ def illuminant_aligned(illuminant_key, grid):
 # -- display constants ---------------------------------------------------------------------------
 
 @functools.lru_cache(maxsize=None)
-def rgb_colourspace_matrix(colourspace):
+def rgb_colourspace_matrix(colourspace: str
+                           ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """``(normalised primary matrix (3, 3), whitepoint XYZ (3,))`` of an RGB colourspace.
 
     Both by colour-science: ``colour.normalised_primary_matrix(cs.primaries, cs.whitepoint)``
@@ -286,7 +291,7 @@ def rgb_colourspace_matrix(colourspace):
 
 
 @functools.lru_cache(maxsize=None)
-def chromatic_adaptation_matrix(transform):
+def chromatic_adaptation_matrix(transform: str) -> npt.NDArray[np.float64]:
     """colour-science's ``CHROMATIC_ADAPTATION_TRANSFORMS[transform]`` (XYZ -> sharpened RGB)."""
     return _array(
         "chromatic-adaptation", [transform],
@@ -295,7 +300,7 @@ def chromatic_adaptation_matrix(transform):
 
 
 @functools.lru_cache(maxsize=None)
-def transfer_decoding_8bit(function):
+def transfer_decoding_8bit(function: str) -> npt.NDArray[np.float64]:
     """The 256 linear values of the 8-bit codes ``0..255`` decoded by colour-science:
     ``colour.cctf_decoding(codes / 255, function="sRGB")`` for ``"sRGB"`` (IEC 61966-2-1 EOTF),
     ``colour.models.eotf_BT1886(codes / 255, L_B=0, L_W=1)`` for ``"BT.1886"``. Indexing it
@@ -315,7 +320,7 @@ def transfer_decoding_8bit(function):
 # -- Munsell notations ---------------------------------------------------------------------------
 
 @functools.lru_cache(maxsize=None)
-def munsell_value_and_Y(notation):
+def munsell_value_and_Y(notation: str) -> tuple[float, float | None]:
     """``(V, Y)`` of a Munsell notation by colour-science, cached like the tables.
 
     ``V = munsell_colour_to_munsell_specification(notation)[1]`` (the Munsell value) and, if
@@ -344,7 +349,7 @@ def munsell_value_and_Y(notation):
     return V, Y
 
 
-def forget():
+def forget() -> None:
     """Forget the tables held in this process's memory (the cache files stay); for tests."""
     for function in (_colour_science_version, _names, cmfs_tabulated, illuminant_tabulated,
                      rgb_colourspace_matrix, chromatic_adaptation_matrix, munsell_value_and_Y,

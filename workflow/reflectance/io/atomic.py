@@ -27,7 +27,7 @@ def _host():
     return re.sub(r"[^A-Za-z0-9-]", "-", socket.gethostname())
 
 
-def process_start_time(pid):
+def process_start_time(pid: int) -> int | None:
     """A process's start time in clock ticks since boot (Linux /proc), or None where unknown."""
     try:
         stat = Path(f"/proc/{pid}/stat").read_text()
@@ -37,7 +37,7 @@ def process_start_time(pid):
     return int(stat.rsplit(")", 1)[1].split()[19])
 
 
-def process_alive(pid, start_time=None):
+def process_alive(pid: int, start_time: int | None = None) -> bool:
     """Whether process ``pid`` exists on this host (and, if given, started at ``start_time``).
 
     >>> process_alive(os.getpid(), process_start_time(os.getpid()))
@@ -164,7 +164,7 @@ def write_text(path: str | os.PathLike[str], text: str) -> None:
 
 
 @contextlib.contextmanager
-def staged_folder(folder):
+def staged_folder(folder: str | os.PathLike[str]) -> Iterator[Path]:
     """Yield a hidden folder beside ``folder`` to write several files into; only if the block
     succeeds are they moved into ``folder`` (all of them, or none: issue 25).
 

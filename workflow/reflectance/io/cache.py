@@ -30,11 +30,15 @@ import hashlib
 import importlib.util
 import os
 import tempfile
+from collections.abc import Callable, Hashable
 from pathlib import Path
+from typing import IO, Any, TypeVar
 
 __all__ = ["Memo", "MEMOS", "BUILT_MESHES", "COMPOSED_MESHES", "TRACES", "clear",
            "CACHE_ENVIRONMENT_VARIABLE", "DISK_FOLDERS", "cache_root", "file_name", "store", "load",
            "distribution_version", "source_digest", "prune"]
+
+_Value = TypeVar("_Value")
 
 MEMOS: dict[str, Memo] = {}
 """Every :class:`Memo` of this process, by name."""
@@ -59,16 +63,17 @@ class Memo:
     >>> del MEMOS[squares.name]
     """
 
-    def __init__(self, name, limit):
+    def __init__(self, name: str, limit: int) -> None:
         if name in MEMOS:
             raise ValueError(f"a memo named {name!r} exists already")
         if int(limit) < 1:
             raise ValueError(f"memo {name!r}: limit must be at least 1, got {limit!r}")
         self.name, self.limit = name, int(limit)
-        self._values = collections.OrderedDict()  # oldest use first
+        # oldest use first; a memo keeps whatever its user makes (meshes, traces): any value
+        self._values: collections.OrderedDict[Hashable, Any] = collections.OrderedDict()
         MEMOS[name] = self
 
-    def get(self, key, make):
+    def get(self, key: Hashable, make: Callable[[], _Value]) -> _Value:
         """The value kept under ``key``; the first time, ``make()``'s, kept."""
         if key in self._values:
             self._values.move_to_end(key)
@@ -79,17 +84,17 @@ class Memo:
             self._values.popitem(last=False)
         return value
 
-    def __contains__(self, key):
+    def __contains__(self, key: object) -> bool:
         return key in self._values
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self._values)
 
-    def clear(self):
+    def clear(self) -> None:
         """Forget every value."""
         self._values.clear()
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"Memo({self.name!r}, {self.limit}: {len(self)} kept)"
 
 
@@ -106,7 +111,7 @@ at most 4 of at most :data:`reflectance.render.camera.SINGLE_TILE_SAMPLES` camer
 (the most any figure asks for, three: Blinn's Fig. 7, one per camera and light)."""
 
 
-def clear(disk=False):
+def clear(disk: bool = False) -> None:
     """Empty every memo of this process (:data:`MEMOS`); with ``disk``, remove the cache's
     folders on disk too (those named as :data:`DISK_FOLDERS` name them, nothing else of the
     cache's folder), so that every value is computed again. Best effort on disk."""
@@ -137,7 +142,7 @@ tables (:func:`reflectance.colour.tables.cache_directory`) and the built meshes
 (:mod:`reflectance.geometry.shapes`), pruned by them and removed by :func:`clear`."""
 
 
-def cache_root():
+def cache_root() -> Path:
     """The cache's folder (may not exist yet)."""
     root = os.environ.get(CACHE_ENVIRONMENT_VARIABLE)
     if not root:
@@ -145,7 +150,8 @@ def cache_root():
     return Path(root)
 
 
-def file_name(layout, kind, parts, suffix, default=None):
+def file_name(layout: int, kind: str, parts: object, suffix: str,
+              default: Callable[[Any], Any] | None = None) -> str:
     """``KIND-HASH.SUFFIX``: the name of a cached value of ``kind``, HASH a digest of the JSON of
     ``[layout, kind, parts]`` (``layout``: the user's file-layout version; ``default`` as
     :func:`json.dumps` takes it, for values JSON does not know)."""
@@ -159,7 +165,7 @@ _CHECKSUM_MARK = b"\nreflectance-sha256:"
 """What precedes the SHA-256 (32 bytes) that ends every cached file."""
 
 
-def store(path, write):
+def store(path: Path, write: Callable[[IO[bytes]], object]) -> None:
     """Write ``path`` atomically with ``write(file)``, followed by the SHA-256 of what it wrote
     (:func:`load` checks it); give up silently if the cache is unwritable.
 
@@ -196,7 +202,7 @@ def store(path, write):
                 pass
 
 
-def load(path):
+def load(path: str | os.PathLike[str]) -> bytes:
     """The bytes :func:`store` wrote to ``path``, once their SHA-256 matches the one stored
     after them.
 
@@ -216,7 +222,7 @@ def load(path):
     return payload
 
 
-def distribution_version(module, distribution):
+def distribution_version(module: str, distribution: str) -> str:
     """The installed version of ``distribution`` (whose top-level package is ``module``), read from
     its dist-info folder: no import of the package and no importlib.metadata (which alone takes
     ~0.1 s); else a tag of the package's location and time; "missing" if it is not installed."""
@@ -232,7 +238,7 @@ def distribution_version(module, distribution):
     return "unknown-" + hashlib.sha256(stamp.encode()).hexdigest()[:12]
 
 
-def source_digest(*paths):
+def source_digest(*paths: str | os.PathLike[str]) -> str:
     """SHA-256 (hex, 16 digits) of these source files' bytes: a cached value keyed by it is
     computed again after any change of the code that computes it."""
     digest = hashlib.sha256()
@@ -241,7 +247,7 @@ def source_digest(*paths):
     return digest.hexdigest()[:16]
 
 
-def prune(current, pattern, days):
+def prune(current: Path, pattern: str, days: float) -> None:
     """Remove the folders beside ``current`` whose whole names match ``pattern`` (a regular
     expression), other than ``current``, that have gone ``days`` days without a change: values
     of the same kind, cached for a code or library version no longer in use. Best effort."""

@@ -18,7 +18,7 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import matplotlib
 
@@ -28,10 +28,15 @@ import matplotlib.pyplot as plt  # noqa: E402
 from reflectance.io.atomic import atomic_write  # noqa: E402
 
 if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
     import pyvista as pv
     from matplotlib.figure import Figure
+    from vtkmodules.vtkRenderingCore import vtkTextProperty
 
     from reflectance.io.images import ColourTag
+
+_Scalar = TypeVar("_Scalar", bound="np.generic")
 
 __all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter", "trim_to_content",
            "save_plotter", "font_file", "set_vtk_font"]
@@ -52,7 +57,7 @@ Lines and fills keep the palette's orange; text drawn in a line's colour goes th
 :func:`text_colour`."""
 
 
-def text_colour(colour):
+def text_colour(colour: str) -> str:
     """The colour to write text in beside a line of ``colour``, on white: Okabe & Ito's orange and
     yellow give their darkened variants (:data:`DARK_ORANGE`, :data:`DARK_YELLOW`), others are kept.
 
@@ -121,7 +126,7 @@ TEXT_SIZE = {
 axis, tick, legend and title sizes; every figure script takes them from here, never a literal."""
 
 
-def paper_name(name):
+def paper_name(name: str) -> str:
     """A material's name as the papers print it: ``"LunarDust"`` -> ``"Lunar dust"``.
 
     CamelCase words after the first are lower-cased; a name of capitals and digits (a chemical
@@ -140,7 +145,7 @@ def paper_name(name):
     return " ".join([words[0]] + [w.lower() for w in words[1:]])
 
 
-def apply_style():
+def apply_style() -> None:
     """Make :data:`STYLE` matplotlib's defaults (each figure script is its own process)."""
     matplotlib.rcParams.update(STYLE)
 
@@ -209,7 +214,7 @@ def off_screen_plotter(width: int, height: int, shape: Sequence[int] = (1, 1)) -
                       shape=tuple(int(n) for n in shape), border=False)
 
 
-def font_file():
+def font_file() -> str:
     """The file of the figures' typeface (:data:`STYLE`'s DejaVu Sans, the copy matplotlib ships), so
     that VTK text (pyvista's ``font_file``, :func:`set_vtk_font`) is set in the same face."""
     from matplotlib import font_manager
@@ -217,7 +222,7 @@ def font_file():
     return font_manager.findfont(STYLE["font.sans-serif"][0], fallback_to_default=False)
 
 
-def set_vtk_font(*text_properties):
+def set_vtk_font(*text_properties: vtkTextProperty) -> None:
     """Set VTK text properties (a scalar bar's title and labels, ...) in :func:`font_file`."""
     # the constant from the module pyvista has loaded already: ``import vtk`` loads every VTK
     # module (about 0.5 s of CPU per process)
@@ -228,7 +233,7 @@ def set_vtk_font(*text_properties):
         prop.SetFontFile(font_file())
 
 
-def trim_to_content(img, margin):
+def trim_to_content(img: npt.NDArray[_Scalar], margin: int) -> npt.NDArray[_Scalar]:
     """``img`` (H, W, C) cropped to the pixels that differ from its top-left pixel (the
     background), then padded with that background by ``margin`` pixels on every side: no empty
     canvas, nothing touching the frame. An image of background only is returned as it is.

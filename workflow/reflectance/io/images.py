@@ -429,7 +429,7 @@ def _write_error(path, err):
     return OSError(errno.EIO, f"the writer failed ({first[:200]})", str(path))
 
 
-def tag_chromaticities(tag):
+def tag_chromaticities(tag: ColourTag) -> tuple[float, ...]:
     """OpenEXR ``chromaticities`` of a :class:`ColourTag`: red, green, blue and white (x, y)."""
     return (*np.asarray(tag.primaries, np.float64).reshape(6).tolist(),
             *np.asarray(tag.whitepoint, np.float64).reshape(2).tolist())

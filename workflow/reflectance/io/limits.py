@@ -52,12 +52,12 @@ def grid_points(span: float, step: float, ends: int = 1) -> int:
     return math.floor(span / step + 1e-9) + ends
 
 
-def describe_bytes(n):
+def describe_bytes(n: float) -> str:
     """'74.5 GiB', '12 MiB'."""
     return f"{n / 2**30:.1f} GiB" if n >= 2**30 else f"{n / 2**20:.0f} MiB"
 
 
-def describe_seconds(t):
+def describe_seconds(t: float) -> str:
     """'13 h', '25 min', '4 s'."""
     return (f"{t / 3600:.0f} h" if t >= 3600 else f"{t / 60:.0f} min" if t >= 60
             else f"{t:.0f} s")

@@ -12,7 +12,7 @@ carries the commands' CSV and JSON.
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from types import TracebackType
 from typing import Any, TextIO
 
@@ -121,12 +121,13 @@ class Progress:
 WORKER_PROGRESS = "@progress "
 
 
-def worker_progress(phase):
+def worker_progress(phase: str) -> None:
     """In a worker of :func:`run_worker`: tell the parent that ``phase`` starts."""
     print(WORKER_PROGRESS + phase, flush=True)
 
 
-def run_worker(module, job, progress=None, failure="worker failed"):
+def run_worker(module: str, job: Mapping[str, Any], progress: Callable[[str], object] | None = None,
+               failure: str = "worker failed") -> Any:  # the worker's JSON: any JSON value
     """Run ``python -m module --worker JSON(job)`` in a fresh process and return the JSON value of
     its last line on standard output.
 
@@ -141,6 +142,7 @@ def run_worker(module, job, progress=None, failure="worker failed"):
         proc = subprocess.Popen([sys.executable, "-m", module, "--worker", json.dumps(job)],
                                 stdout=subprocess.PIPE, stderr=errors, text=True)
         lines = []
+        assert proc.stdout is not None  # stdout=PIPE
         for line in proc.stdout:
             if line.startswith(WORKER_PROGRESS):
                 if progress is not None:

@@ -57,12 +57,12 @@ def sha256_file(path: str | os.PathLike[str]) -> str:
     return digest.hexdigest()
 
 
-def git_state(root="."):
+def git_state(root: str | os.PathLike[str] = ".") -> dict[str, str | bool | None]:
     """``{"commit": sha or None, "dirty": bool or None}`` of the checkout whose top folder is
     ``root``: None where there is no git or no repository of its own (an unpacked archive, a
     copy); dirty when tracked files differ from the commit (results/ and logs/ are ignored by
     git)."""
-    def git(*args):
+    def git(*args: str) -> str | None:
         try:
             proc = subprocess.run(["git", *args], cwd=root, capture_output=True, text=True,
                                   timeout=60)
@@ -81,7 +81,7 @@ def git_state(root="."):
     return {"commit": commit, "dirty": None if status is None else bool(status)}
 
 
-def package_versions():
+def package_versions() -> dict[str, str]:
     """``{name: version}`` of every distribution installed in this Python (names lower case)."""
     from importlib.metadata import distributions
 
@@ -98,7 +98,10 @@ def _canonical_sha256(value):
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def provenance(outputs, spectra, config, config_file="config.yaml", git=None, root="."):
+def provenance(outputs: Iterable[str | os.PathLike[str]], spectra: Iterable[str | os.PathLike[str]],
+               config: Mapping[str, Any], config_file: str | None = "config.yaml",
+               git: Mapping[str, str | bool | None] | None = None,
+               root: str | os.PathLike[str] = ".") -> dict[str, Any]:  # JSON: values of all kinds
     """The manifest as a dict (see the module's description).
 
     Parameters

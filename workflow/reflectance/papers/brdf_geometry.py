@@ -12,10 +12,17 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.io.figures import TEXT_SIZE, text_colour
 from reflectance.papers.polar import direction_from_angles
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["draw_brdf_angles"]
 
@@ -37,7 +44,9 @@ def _arc(u, v, radius, n=60):
     return radius * (np.cos(t) * u + np.sin(t) * w)
 
 
-def draw_brdf_angles(ax, theta_i_deg, phi_i_deg, theta_v_deg, phi_v_deg, colours=None):
+def draw_brdf_angles(ax: Axes, theta_i_deg: float, phi_i_deg: float, theta_v_deg: float,
+                     phi_v_deg: float, colours: Mapping[str, str] | None = None
+                     ) -> dict[str, npt.NDArray[np.float64]]:
     """Draw N, L, V, the surface with its x axis, and theta_i, phi_i, theta_v, phi_v as arcs.
 
     Angles in degrees; phi from the surface's x axis, counter-clockwise seen from above. Labels sit

@@ -304,7 +304,8 @@ def materials_Blinn1977(p_s: float, p_d: float, c3: float, n: float,
     }
 
 
-def mirror_highlight_Blinn1977(p_s, n, angle_deg):
+def mirror_highlight_Blinn1977(p_s: float, n: float,
+                               angle_deg: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Blinn's Torrance-Sparrow specular intensity ``p_s s`` where the surface normal is H.
 
     For a light at ``angle_deg`` from the direction to the eye, a facet with N = H has
@@ -330,7 +331,8 @@ def mirror_highlight_Blinn1977(p_s, n, angle_deg):
     return float(p_s) * fresnel_dielectric_CookTorrance1982(c, float(n)) / c
 
 
-def highlight_crossover_Blinn1977(first, second, bracket_deg=(90.0, 179.9)):
+def highlight_crossover_Blinn1977(first: Mapping[str, float], second: Mapping[str, float],
+                                  bracket_deg: Sequence[float] = (90.0, 179.9)) -> float | None:
     """The light angle at which two of Blinn's materials have equal mirror highlights.
 
     ``first`` and ``second`` are ``{p_s, n}`` mappings (config ``fig7.panels``); the result is the
@@ -388,7 +390,7 @@ def blinn_scene_Blinn1977(fig7: Mapping[str, Any], material: Mapping[str, Any],
                           display={"expose": False})
 
 
-def rim_camera_Blinn1977(fig7, light):
+def rim_camera_Blinn1977(fig7: Mapping[str, Any], light: Mapping[str, float]) -> dict[str, Any]:
     """A close-up of Blinn 1977 Fig. 7's edge-lit highlight: fig7's camera position, aimed at the
     point of the torus whose normal is ``H = (L + E) / |L + E|`` (where Blinn's D3 peaks), with
     ``fig7.rim_closeup``'s field of view and size.
@@ -418,8 +420,9 @@ def rim_camera_Blinn1977(fig7, light):
 # --------------------------------------------------------------------------------------------
 # The pieces of the rendered figures' scenes (reflectance.papers.figures assembles them)
 # --------------------------------------------------------------------------------------------
+# (config sections and scene documents are YAML mappings of mixed values: Mapping[str, Any])
 
-def table1_material(row, material=None):
+def table1_material(row: Mapping[str, Any], material: str | None = None) -> dict[str, Any]:
     """A Cook & Torrance 1982 Table I row as a scene material of ``material``'s spectrum (default
     the row's own; R_d = F0/pi of it: the scene default); Table I's m "Not used" (s = 0) leaves the
     key out."""
@@ -427,7 +430,9 @@ def table1_material(row, material=None):
             **({} if row["m"] is None else {"m": row["m"]})}
 
 
-def fig7_vases_CookTorrance1982(fig7, fig6, table1):
+def fig7_vases_CookTorrance1982(fig7: Mapping[str, Any], fig6: Mapping[str, Any],
+                                table1: Sequence[Mapping[str, Any]]
+                                ) -> list[tuple[str, str, dict[str, Any]]]:
     """(id, group, scene material) of every vase of Cook & Torrance 1982 Fig. 7: the metals with
     Fig. 6b's s, d and lobes ("the same parameters used for Figure 6b"), Table I's nonmetals (with
     the reflectance of ``fig7.table1_spectra`` where a row's n, k do not give its colour), then the
@@ -449,7 +454,8 @@ def fig7_vases_CookTorrance1982(fig7, fig6, table1):
     return out
 
 
-def fig7_exposure_CookTorrance1982(fig7, vase, group):
+def fig7_exposure_CookTorrance1982(fig7: Mapping[str, Any], vase: str,
+                                   group: str) -> dict[str, Any]:
     """The default Fig. 7's scene display keys of one vase: its row's exposure (config
     ``fig7.exposure[group]``) with the metered luminance (white card or key) times the vase's
     ``fig7.vase_exposure`` factor (default 1), a labelled departure from one exposure per row."""
@@ -461,7 +467,8 @@ def fig7_exposure_CookTorrance1982(fig7, vase, group):
     return exposure
 
 
-def watch_part_material(name, spec, fig6, table1):
+def watch_part_material(name: str, spec: Mapping[str, Any], fig6: Mapping[str, Any],
+                        table1: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
     """A part of config ``fig8.parts`` as a scene material; ``table1: X`` takes Table I's row X."""
     if "table1" in spec:
         rows = {row["material"]: row for row in table1}
@@ -475,7 +482,10 @@ def watch_part_material(name, spec, fig6, table1):
             "shadowing": fig6["shadowing"]}
 
 
-def watch_scene_CookTorrance1982(fig8, fig6, table1, wavelengths, colour, spectra_dir):
+def watch_scene_CookTorrance1982(fig8: Mapping[str, Any], fig6: Mapping[str, Any],
+                                 table1: Sequence[Mapping[str, Any]],
+                                 wavelengths: Mapping[str, Any], colour: Mapping[str, Any],
+                                 spectra_dir: str | None) -> dict[str, Any]:
     """The watch of Cook & Torrance 1982 Fig. 8 as a scene (config ``fig8``, with fig6's
     renderer settings and ambient fraction)."""
     light, led = fig8["light"], fig8["led"]
@@ -505,7 +515,8 @@ def watch_ambient_reference(fig8, fig6):
     return fig6["ambient_readings"][fig8["ambient_reading"]]
 
 
-def texture_material_Blinn1977(fig8, pattern, n):
+def texture_material_Blinn1977(fig8: Mapping[str, Any], pattern: Mapping[str, Any],
+                               n: float) -> dict[str, Any]:
     """Blinn 1977 Fig. 8's material: Torrance-Sparrow with D3 whose C3 = C_min + (1 - C_min) t
     follows a texture ``pattern`` (config ``fig8.patterns.*``), F from the index ``n``."""
     return {"index": {"n": float(n), "k": 0.0}, "model": "TorranceSparrow_Blinn1977",
@@ -516,7 +527,7 @@ def texture_material_Blinn1977(fig8, pattern, n):
                                   "min": fig8["c_min"], "max": 1.0}}
 
 
-def sweep_camera_Blinn1977(fig7, sweep):
+def sweep_camera_Blinn1977(fig7: Mapping[str, Any], sweep: Mapping[str, Any]) -> dict[str, Any]:
     """The camera of Blinn 1977 Fig. 7's light sweep: fig7's, ``size`` wide, same aspect."""
     cam = dict(fig7["camera"])
     cam.update(width=sweep["size"], height=round(sweep["size"] * cam["height"] / cam["width"]),
@@ -524,7 +535,9 @@ def sweep_camera_Blinn1977(fig7, sweep):
     return cam
 
 
-def spheres_scene_article(spheres, wavelengths, colour, spectra_dir, panel="pair"):
+def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, Any],
+                          colour: Mapping[str, Any], spectra_dir: str | None,
+                          panel: str = "pair") -> dict[str, Any]:
     """One panel of the article's spheres (config ``figures.article.spheres``) on a grey floor:
     ``panel`` "pair" is the article's pair of plastic spheres, "metal" the gold sphere alone
     (camera ``metal_sphere.image`` over the figure's, so both panels share one scale). Each panel

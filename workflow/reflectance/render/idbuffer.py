@@ -138,7 +138,8 @@ class IdRenderer:
         self.close()
 
 
-def renderer_for(scene, renderer=None):
+def renderer_for(scene: Primitives, renderer: IdRenderer | None = None
+                 ) -> contextlib.AbstractContextManager[IdRenderer]:
     """A context giving an :class:`IdRenderer` of ``scene``: ``renderer`` itself (left open) if
     it draws that very scene, else a new one closed on exit. One window then serves the camera
     and every light map of a render (the scene is uploaded to it once)."""

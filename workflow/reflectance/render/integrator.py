@@ -14,7 +14,7 @@ from __future__ import annotations
 import dataclasses
 import time
 from collections.abc import Callable
-from typing import Any, TYPE_CHECKING
+from typing import Any, Literal, TYPE_CHECKING, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -34,9 +34,27 @@ COMPONENTS = ("ambient", "diffuse", "specular", "emission")
 """Parts of the reflected XYZ a render can return separately (table shading)."""
 
 
+@overload
+def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
+                  spectral: str | None = None, components: Literal[False] = False,
+                  fresnel_table: Callable[..., Any] | None = None,
+                  threads: int | None = 1) -> npt.NDArray[np.float64]: ...
+@overload
+def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
+                  spectral: str | None = None, *, components: Literal[True],
+                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+                  ) -> tuple[npt.NDArray[np.float64], dict[str, npt.NDArray[np.float64]]]: ...
+@overload
 def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
                   spectral: str | None = None, components: bool = False,
-                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
+                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+                  ) -> npt.NDArray[np.float64] | tuple[npt.NDArray[np.float64],
+                                                       dict[str, npt.NDArray[np.float64]]]: ...
+def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[np.bool_],
+                  spectral: str | None = None, components: bool = False,
+                  fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+                  ) -> npt.NDArray[np.float64] | tuple[npt.NDArray[np.float64],
+                                                       dict[str, npt.NDArray[np.float64]]]:
     """Per-sample XYZ (N, 3) of every object (and the parts, with ``components=True``);
     ``threads`` as for :func:`reflectance.render.shading.shade`."""
     spectral = scene.spectral if spectral is None else spectral
@@ -60,7 +78,7 @@ def shade_samples(scene: Scene, samples: SurfaceSamples, shadowed: npt.NDArray[n
                         scene.ambient, scene.wavelengths, scene.observer, spectral,
                         scene.table_size, components=components,
                         fresnel_table=fresnel_table, threads=threads)
-            if components:
+            if isinstance(out, tuple):  # components=True
                 out, got = out
                 for name in COMPONENTS:
                     if name in got:

@@ -17,7 +17,12 @@ from __future__ import annotations
 
 import os
 import threading
+from collections.abc import Callable, Iterable
 from concurrent.futures import Future, ThreadPoolExecutor
+from typing import Any, TypeVar
+
+_Item = TypeVar("_Item")
+_Result = TypeVar("_Result")
 
 __all__ = ["THREADS_VARIABLE", "render_threads", "Tasks", "pieces"]
 
@@ -80,32 +85,32 @@ class Tasks:
     thread that made the object may submit (pieces never submit pieces: no pool waits on itself).
     """
 
-    def __init__(self, threads=1):
+    def __init__(self, threads: int | None = 1) -> None:
         self.threads = render_threads(threads)
-        self._futures = []
+        self._futures: list[Future[Any]] = []  # calls of any kind: each its own result
 
-    def submit(self, fn, *args):
+    def submit(self, fn: Callable[..., object], *args: Any) -> None:
         if self.threads == 1:
-            done = Future()  # the call made at once, as a finished future
+            done: Future[object] = Future()  # the call made at once, as a finished future
             done.set_result(fn(*args))
             self._futures.append(done)
         else:
             self._futures.append(_pool(self.threads).submit(fn, *args))
 
-    def results(self):
+    def results(self) -> list[Any]:  # what the calls queued return, each of its own type
         futures, self._futures = self._futures, []
         for future in futures:  # every piece ends (or fails) before the caller goes on
             future.exception()
         return [future.result() for future in futures]
 
-    def map(self, fn, items):
+    def map(self, fn: Callable[[_Item], _Result], items: Iterable[_Item]) -> list[_Result]:
         """``[fn(item) for item in items]``, the calls on the workers."""
         for item in items:
             self.submit(fn, item)
         return self.results()
 
 
-def pieces(n, threads, most, least=1 << 12):
+def pieces(n: int, threads: int, most: int, least: int = 1 << 12) -> list[slice]:
     """Slices of ``range(n)`` in order: chunks of ``most`` items for one thread (the serial
     path's), else equal pieces of at most ``most``, at least two per thread (so that uneven
     pieces balance) unless that makes pieces of fewer than ``least`` items."""

@@ -502,7 +502,7 @@ GEOMETRY_VERTICES = {
 }
 
 
-def size_problems(doc, memory=None):
+def size_problems(doc: Mapping[str, Any], memory: float | None = None) -> list[str]:
     """One line (key: what it makes, the estimate) per size of a validated scene mapping that
     cannot fit in ``memory`` bytes (default: this machine's) or would take more than an hour
     (:func:`reflectance.io.limits.size_problem`): the wavelength grid with the Fresnel table

@@ -41,7 +41,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Literal, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -477,12 +477,39 @@ def _light_terms(light, position, shadowed):
     return L, energy
 
 
+@overload
+def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
+          material: ShadingMaterial, lights: Sequence[Light] = (),
+          shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
+          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
+          spectral: str = "table", table_size: int = 1025, components: Literal[False] = False,
+          fresnel_table: Callable[..., Any] | None = None,
+          threads: int | None = 1) -> npt.NDArray[np.float64]: ...
+@overload
+def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
+          material: ShadingMaterial, lights: Sequence[Light] = (),
+          shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
+          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
+          spectral: str = "table", table_size: int = 1025, *, components: Literal[True],
+          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+          ) -> tuple[npt.NDArray[np.float64], dict[str, npt.NDArray[np.float64]]]: ...
+@overload
 def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
           material: ShadingMaterial, lights: Sequence[Light] = (),
           shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
           wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
           spectral: str = "table", table_size: int = 1025, components: bool = False,
-          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1) -> Any:
+          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+          ) -> npt.NDArray[np.float64] | tuple[npt.NDArray[np.float64],
+                                               dict[str, npt.NDArray[np.float64]]]: ...
+def shade(position: npt.ArrayLike, normal: npt.ArrayLike, view: npt.ArrayLike, uv: npt.ArrayLike,
+          material: ShadingMaterial, lights: Sequence[Light] = (),
+          shadowed: npt.ArrayLike | None = None, ambient: Ambient | None = None,
+          wavelengths: npt.ArrayLike | None = None, observer: str = OBSERVER_DEFAULT,
+          spectral: str = "table", table_size: int = 1025, components: bool = False,
+          fresnel_table: Callable[..., Any] | None = None, threads: int | None = 1
+          ) -> npt.NDArray[np.float64] | tuple[npt.NDArray[np.float64],
+                                               dict[str, npt.NDArray[np.float64]]]:
     """XYZ reflected (and emitted) toward the viewer by surface samples of one material.
 
     ``I_r = I_ia R_a + sum_l I_il (N.L_l) d omega_il R_l(lambda)`` (Cook & Torrance 1982) with

@@ -15,20 +15,30 @@ none of them is background. :attr:`SurfaceSamples.stats` reports how often this 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from reflectance.geometry.vectors import dot, normalize
 from reflectance.render.camera import Camera
-from reflectance.render.idbuffer import (dilate, distinct_keys, key_image, neighbour_keys,
-                                         renderer_for)
+from reflectance.render.idbuffer import (IdRenderer, dilate, distinct_keys, key_image,
+                                         neighbour_keys, renderer_for)
 from reflectance.render.parallel import Tasks, pieces
 from reflectance.render.primitives import Primitives
 from reflectance.render.samples import SurfaceSamples
 
+if TYPE_CHECKING:
+    import pyvista as pv
+
 __all__ = ["visibility"]
 
 
-def visibility(meshes, camera, rows=None, select=None, renderer=None, threads=1):
+def visibility(meshes: pv.PolyData | Sequence[tuple[pv.PolyData, int]] | Primitives,
+               camera: Camera, rows: tuple[int, int] | None = None,
+               select: npt.ArrayLike | None = None, renderer: IdRenderer | None = None,
+               threads: int | None = 1) -> SurfaceSamples:
     """Which surface each camera sample sees, with exact float64 position, normal and (u, v).
 
     Parameters

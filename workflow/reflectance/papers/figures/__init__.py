@@ -28,6 +28,11 @@ Module 3B), the Wikipedia article "Specular highlight".
 
 from __future__ import annotations
 
+import os
+from collections.abc import Iterator, Mapping
+from types import ModuleType
+from typing import Any
+
 from reflectance.papers.figures import article, blinn_1977, cook_torrance_1982, lecture
 from reflectance.papers.figures.declaration import (Figure, FigureScene, config_value, param_keys,
                                                     params_of, select)
@@ -50,7 +55,7 @@ ANALYTIC = tuple(_ANALYTIC)
 READERS = {"audit_rgb_rendering": ("ct82_fig7", "RGB_AUDIT_PARAMS")}
 
 
-def figure(name):
+def figure(name: str) -> ModuleType | Figure:
     """The definition of the figure ``name``: a rendered figure's module (one of
     :data:`FIGURES`) or an analytic figure's :class:`Figure` (one of :data:`ANALYTIC`)."""
     if name in _ANALYTIC:
@@ -72,13 +77,13 @@ def figure(name):
     return modules[name]
 
 
-def reader_params(rule, config):
+def reader_params(rule: str, config: Mapping[str, Any]) -> dict[str, Any]:  # YAML values
     """The params of a rule of :data:`READERS`, selected as a figure's are."""
     name, attribute = READERS[rule]
     return select(getattr(figure(name), attribute), config)
 
 
-def rule_keys(rule, config):
+def rule_keys(rule: str, config: Mapping[str, Any]) -> list[str]:
     """Every dotted config key the rule ``rule`` (a figure of :data:`FIGURES` or
     :data:`ANALYTIC`, or a rule of :data:`READERS`) declares it reads from ``config``."""
     if rule in READERS:
@@ -90,7 +95,8 @@ def rule_keys(rule, config):
             for key in ([value] if isinstance(value, str) else value)]
 
 
-def figure_scenes(config, spectra_dir="spectra"):
+def figure_scenes(config: Mapping[str, Any], spectra_dir: str | os.PathLike[str] = "spectra"
+                  ) -> Iterator[tuple[str, str, dict[str, Any]]]:
     """Every scene the rendered figures of ``config`` render, without rendering anything.
 
     Yields ``(key, label, document)``: the config key the scene comes from, the render's name
@@ -103,7 +109,7 @@ def figure_scenes(config, spectra_dir="spectra"):
             yield scene.source, scene.name, scene.document
 
 
-def declared_key_problems(config):
+def declared_key_problems(config: Mapping[str, Any]) -> list[str]:
     """One line per figure whose declared keys are not all in ``config`` (naming the key and the
     figure): the config check's, before any rule takes its params."""
     problems = []

@@ -7,7 +7,9 @@ modules share, so that they need not import the package that lists them.
 from __future__ import annotations
 
 import copy
-from typing import NamedTuple
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from types import ModuleType
+from typing import Any, NamedTuple
 
 __all__ = ["Figure", "FigureScene", "config_value", "param_keys", "params_of", "select"]
 
@@ -29,12 +31,12 @@ class FigureScene(NamedTuple):
     tags: dict = {}
 
     @property
-    def written(self):
+    def written(self) -> bool:
         """Whether the job writes this scene (and its images) to files."""
         return self.file is not None
 
 
-def config_value(config, key):
+def config_value(config: Mapping[str, Any], key: str) -> Any:  # any value YAML holds
     """The value at a dotted ``key`` of ``config``; KeyError naming the key if it is absent."""
     node = config
     for part in key.split("."):
@@ -55,18 +57,21 @@ def _parent(keys):
     return common
 
 
-def param_keys(module, config):
+def param_keys(module: ModuleType | Figure,
+               config: Mapping[str, Any]) -> dict[str, str | tuple[str, ...]]:
     """``{param name: dotted key or tuple of keys}`` of a figure module for ``config``."""
     return module.PARAMS(config) if callable(module.PARAMS) else module.PARAMS
 
 
-def params_of(module, config):
+def params_of(module: ModuleType | Figure,
+              config: Mapping[str, Any]) -> dict[str, Any]:  # config values: any YAML value
     """The rule params of a figure module: each ``PARAMS`` entry's value from ``config``, copied
     (a tuple of keys: their common parent holding only those keys)."""
     return select(param_keys(module, config), config)
 
 
-def select(declared, config):
+def select(declared: Mapping[str, str | Sequence[str]],
+           config: Mapping[str, Any]) -> dict[str, Any]:  # config values: any YAML value
     """``{name: value}`` of a ``{name: dotted key or tuple of keys}`` declaration (a rule that is
     not a figure module, such as an audit, declares its keys so too).
 
@@ -82,7 +87,7 @@ def select(declared, config):
             params[name] = copy.deepcopy(config_value(config, keys))
             continue
         parent = _parent(keys)
-        value = {}
+        value: dict[str, Any] = {}
         for key in keys:
             node = value
             rest = key.split(".")[len(parent):]
@@ -108,24 +113,24 @@ class Figure(NamedTuple):
     folder: str
     PARAMS: dict
     OUTPUTS: dict
-    SPECTRA: object = None
+    SPECTRA: Callable[[Mapping[str, Any]], Iterable[str]] | None = None
     WILDCARDS: dict = {}
 
-    def spectra(self, params):
+    def spectra(self, params: Mapping[str, Any]) -> list[str]:
         """The materials whose ``spectra/<name>.csv`` the job reads."""
         return list(self.SPECTRA(params)) if self.SPECTRA else []
 
-    def outputs(self, params):
+    def outputs(self, params: Mapping[str, Any]) -> dict[str, str]:
         """``{name: path}``, what the rule writes (wildcards left in)."""
         return {name: f"{self.folder}/{file}" for name, file in self.OUTPUTS.items()}
 
-    def targets(self, params):
+    def targets(self, params: Mapping[str, Any]) -> list[str]:
         """Every file the rule writes, each wildcard filled with each of its values."""
         paths = list(self.outputs(params).values())
         for wildcard, values in self.WILDCARDS.items():
             paths = [p.replace(f"{{{wildcard}}}", v) for v in values for p in paths]
         return paths
 
-    def scenes(self, params, spectra_dir="spectra"):
+    def scenes(self, params: Mapping[str, Any], spectra_dir: str = "spectra") -> list[FigureScene]:
         """An analytic figure renders no scene."""
         return []
