@@ -11,11 +11,8 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import MaxNLocator
 
 from reflectance.io.captions import write_caption_values
-from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
-from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.optics.shadowing import vcavity_terms_Blinn1977
-from reflectance.papers.polar import intensity_in_plane_of_incidence, plane_of_incidence_vectors
+from reflectance.papers.blinn_comparison import compare_in_plane_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -24,48 +21,6 @@ CURVES = {  # key: (legend, colour, line style)
     "phong_as_printed": ("Phong, p_s as printed", OKABE_ITO[5], (0, (4, 2))),
     "torrance_sparrow": ("Torrance-Sparrow, p_s D\u2083 G F / (N\u00b7E)", OKABE_ITO[1], "-"),
 }
-
-def evaluate(s, theta_i, theta_r):
-    """One parameter set's three curves over ``theta_r`` and its summary row."""
-    beta = c3_to_beta_Blinn1977(s["c3"])
-    c1 = beta_to_c1_Blinn1977(beta)  # Blinn's equal-beta rule: D1 and D3 halve at the same angle
-    F0 = float(fresnel_dielectric_CookTorrance1982(1.0, s["n"]))
-    models = {  # Blinn 1977, i = p_d (N.L) + p_s s; "matched": Phong's p_s times F at E.H = 1
-        "phong_as_printed": ("BlinnPhong1977", dict(c1=c1, p_s=s["p_s"])),
-        "phong_matched": ("BlinnPhong1977", dict(c1=c1, p_s=s["p_s"] * F0)),
-        "torrance_sparrow": ("TorranceSparrow_Blinn1977", dict(
-            F=lambda c, n=s["n"]: fresnel_dielectric_CookTorrance1982(c, n),
-            distribution="TrowbridgeReitz1975", c3=s["c3"], p_s=s["p_s"])),
-    }
-    values, row = {}, {"parameter_set": s["label"], **{k: s[k] for k in ("p_s", "p_d", "n", "c3")},
-                       "beta_deg": np.degrees(beta), "c1": c1, "F0": F0,
-                       "theta_i_deg": np.degrees(theta_i)}
-    for key, (method, extra) in models.items():
-        kwargs = dict(p_d=s["p_d"], **extra)
-        values[key] = intensity_in_plane_of_incidence(theta_i, theta_r, method, **kwargs)
-        peak = int(np.argmax(values[key]))
-        row.update({f"{key}_max": values[key][peak], f"{key}_max_deg": np.degrees(theta_r[peak]),
-                    f"{key}_mirror": float(intensity_in_plane_of_incidence(
-                        theta_i, theta_i, method, **kwargs))})
-    hemisphere = s["p_d"] * np.cos(theta_i)  # the diffuse part: the same in every direction
-    bump = {k: row[f"{k}_max"] - hemisphere for k in values}
-    row["peak_ratio_ts_to_matched"] = row["torrance_sparrow_max"] / row["phong_matched_max"]
-    row["peak_ratio_ts_to_as_printed"] = row["torrance_sparrow_max"] / row["phong_as_printed_max"]
-    row["bump_ratio_ts_to_matched"] = bump["torrance_sparrow"] / bump["phong_matched"]
-    # how alike the two pictures are: the curves' largest difference against the Phong peak, and
-    # each bump's height against the hemisphere's radius
-    row["max_difference_ts_matched"] = (np.abs(values["torrance_sparrow"] - values["phong_matched"]).max()
-                                        / row["phong_matched_max"])
-    row["bump_to_hemisphere_matched"] = bump["phong_matched"] / hemisphere
-    row["bump_to_hemisphere_ts"] = bump["torrance_sparrow"] / hemisphere
-    # Blinn 1977, G = min(1, G_b, G_c): where the term in force changes, the Torrance-Sparrow
-    # curve has a corner (marked, so that it does not read as an artefact)
-    L, E, N = plane_of_incidence_vectors(theta_i, theta_r)
-    H = (L + E) / np.linalg.norm(L + E, axis=-1, keepdims=True)
-    G_b, G_c = vcavity_terms_Blinn1977(L @ N, E @ N, H @ N, np.sum(E * H, axis=-1))
-    term = np.argmin(np.stack([np.ones_like(G_b), G_b, G_c]), axis=0)
-    row["G_corners"] = np.flatnonzero(np.diff(term)) + 1
-    return values, row
 
 
 def draw(sets, results, theta_i, theta_r, title):
@@ -158,7 +113,7 @@ with script_log(snakemake) as log:
     # n_directions from -90 to 90 degrees inclusive; the two horizon samples (i = 0) are dropped
     theta_r = np.radians(np.linspace(-90.0, 90.0, cfg["n_directions"])[1:-1])
     chosen, variants = [cfg["chosen"]], cfg["parameter_sets"]
-    results = {s["label"]: evaluate(s, theta_i, theta_r) for s in chosen + variants}
+    results = {s["label"]: compare_in_plane_Blinn1977(s, theta_i, theta_r) for s in chosen + variants}
     incidence = f"light at {np.degrees(theta_i):g}\u00b0 from the normal, from the right"
     for sets, title, png, pdf in (
             (chosen, f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\n"
@@ -191,6 +146,7 @@ with script_log(snakemake) as log:
         "chosen_ratio": f"{default.peak_ratio_ts_to_matched:.2f}",
         "chosen_bump_ratio": f"{default.bump_ratio_ts_to_matched:.2f}",
         "chosen_beta": f"{default.beta_deg:.1f}", "chosen_c1": f"{default.c1:.0f}",
+        "chosen_F0": f"{default.F0:.2f}",
         "chosen_phong_matched_peak": f"{default.phong_matched_max:.3f}",
         "chosen_phong_matched_deg": f"{default.phong_matched_max_deg:.1f}",
         "chosen_torrance_sparrow_peak": f"{default.torrance_sparrow_max:.3f}",
