@@ -102,7 +102,9 @@ def draw(sets, results, theta_i, theta_r, title):
     labels.append("where G = min(1, G_b, G_c) changes term")
     fig.legend(handles, labels, loc="upper center", ncol=2,
                bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
-    fig.subplots_adjust(left=0.01, right=0.99, top=1 - 1.55 / fig.get_figheight(),
+    # one row: its polar axes, wider than high, shrink about their centres (aspect 1): start higher
+    title_in = 1.3 if len(sets) == 1 else 1.55
+    fig.subplots_adjust(left=0.01, right=0.99, top=1 - title_in / fig.get_figheight(),
                         bottom=0.5 / fig.get_figheight(), wspace=0.3, hspace=0.95)
     return fig
 
