@@ -77,6 +77,13 @@ rule blinn77_fig5_6:
             subcategory="Figs. 5-6",
         ),
         pdf=B77_FIG5_6.outputs["pdf"],
+        variant_png=report(
+            B77_FIG5_6.outputs["variant_png"],
+            caption="../report/blinn77_fig5_6_fig7_materials.rst",
+            category="Blinn 1977",
+            subcategory="Figs. 5-6",
+        ),
+        variant_pdf=B77_FIG5_6.outputs["variant_pdf"],
         csv=B77_FIG5_6.outputs["csv"],
         summary=report(
             B77_FIG5_6.outputs["summary"],

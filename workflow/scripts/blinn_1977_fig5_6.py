@@ -1,7 +1,9 @@
 """Blinn 1977, Figs. 5 and 6: Phong vs Torrance-Sparrow reflection in the plane of incidence as
 polar plots (distance from the centre = intensity reflected in that direction), light from the
 right at the configured angle; one row per parameter set: Phong (matched p_s F(0), and p_s as
-printed), Torrance-Sparrow on the same scale, and the three as Cartesian curves i(theta)."""
+printed), Torrance-Sparrow on the same scale, and the three as Cartesian curves i(theta).
+Blinn prints no parameters for these figures: the default figure draws the ``chosen`` set (a
+narrow bump on the hemisphere, as his text describes), a variant figure Fig. 7's measured sets."""
 
 import numpy as np
 import pandas as pd
@@ -9,11 +11,8 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import MaxNLocator
 
 from reflectance.io.captions import write_caption_values
-from reflectance.optics.fresnel import fresnel_dielectric_CookTorrance1982
-from reflectance.optics.microfacet import beta_to_c1_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.optics.shadowing import vcavity_terms_Blinn1977
-from reflectance.papers.polar import intensity_in_plane_of_incidence, plane_of_incidence_vectors
+from reflectance.papers.blinn_comparison import compare_in_plane_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -23,44 +22,14 @@ CURVES = {  # key: (legend, colour, line style)
     "torrance_sparrow": ("Torrance-Sparrow, p_s D\u2083 G F / (N\u00b7E)", OKABE_ITO[1], "-"),
 }
 
-with script_log(snakemake) as log:
-    cfg, number = snakemake.params.fig, snakemake.params.figure_number
-    theta_i = np.radians(float(snakemake.params.incidence_deg))
-    # n_directions from -90 to 90 degrees inclusive; the two horizon samples (i = 0) are dropped
-    theta_r = np.radians(np.linspace(-90.0, 90.0, cfg["n_directions"])[1:-1])
-    sets = cfg["parameter_sets"]
+
+def draw(sets, results, theta_i, theta_r, title):
+    """One row per parameter set: the two polar plots on one scale, and i(theta)."""
     # drawn at the print width (its text prints at the figures' sizes); each row's parameters over it
-    fig = new_figure(PRINT_WIDTH_IN, 1.15 + 2.35 * len(sets))
+    fig = new_figure(PRINT_WIDTH_IN, 1.2 + 2.7 * len(sets))
     axes = np.atleast_2d(fig.subplots(len(sets), 3, gridspec_kw={"width_ratios": [1, 1, 0.82]}))
-    curves, summary = [], []
-    for row_axes, s in zip(axes, sets):
-        beta = c3_to_beta_Blinn1977(s["c3"])
-        c1 = beta_to_c1_Blinn1977(beta)  # Blinn's equal-beta rule: D1 and D3 halve at the same angle
-        F0 = float(fresnel_dielectric_CookTorrance1982(1.0, s["n"]))
-        models = {  # Blinn 1977, i = p_d (N.L) + p_s s; "matched": Phong's p_s times F at E.H = 1
-            "phong_as_printed": ("BlinnPhong1977", dict(c1=c1, p_s=s["p_s"])),
-            "phong_matched": ("BlinnPhong1977", dict(c1=c1, p_s=s["p_s"] * F0)),
-            "torrance_sparrow": ("TorranceSparrow_Blinn1977", dict(
-                F=lambda c, n=s["n"]: fresnel_dielectric_CookTorrance1982(c, n),
-                distribution="TrowbridgeReitz1975", c3=s["c3"], p_s=s["p_s"])),
-        }
-        values, row = {}, {"parameter_set": s["label"], **{k: s[k] for k in ("p_s", "p_d", "n", "c3")},
-                           "beta_deg": np.degrees(beta), "c1": c1, "F0": F0,
-                           "theta_i_deg": np.degrees(theta_i)}
-        for key, (method, extra) in models.items():
-            kwargs = dict(p_d=s["p_d"], **extra)
-            values[key] = intensity_in_plane_of_incidence(theta_i, theta_r, method, **kwargs)
-            peak = int(np.argmax(values[key]))
-            row.update({f"{key}_max": values[key][peak], f"{key}_max_deg": np.degrees(theta_r[peak]),
-                        f"{key}_mirror": float(intensity_in_plane_of_incidence(
-                            theta_i, theta_i, method, **kwargs))})
-        bump = {k: row[f"{k}_max"] - s["p_d"] * np.cos(theta_i) for k in values}
-        row["peak_ratio_ts_to_matched"] = row["torrance_sparrow_max"] / row["phong_matched_max"]
-        row["peak_ratio_ts_to_as_printed"] = row["torrance_sparrow_max"] / row["phong_as_printed_max"]
-        row["bump_ratio_ts_to_matched"] = bump["torrance_sparrow"] / bump["phong_matched"]
-        summary.append(row)
-        curves.append(pd.DataFrame({"parameter_set": s["label"], "theta_r_deg": np.degrees(theta_r),
-                                    **values}))
+    for row_axes, s, (values, row) in zip(axes, sets, results):
+        beta, c1, F0 = np.radians(row["beta_deg"]), row["c1"], row["F0"]
         R = 1.08 * max(v.max() for v in values.values())  # the same scale for both polar plots
         ticks = [t for t in MaxNLocator(3).tick_values(0, R) if 0 < t < R]
         light = R * np.array([np.sin(theta_i), np.cos(theta_i)])
@@ -100,16 +69,9 @@ with script_log(snakemake) as log:
             label, colour, style = CURVES[key]
             cart.plot(tr_deg, values[key], color=colour, ls=style, lw=1.6 if style == "-" else 1.2,
                       label=label)
-        # Blinn 1977, G = min(1, G_b, G_c): where the term in force changes, the Torrance-Sparrow
-        # curve has a corner (marked, so that it does not read as an artefact)
-        L, E, N = plane_of_incidence_vectors(theta_i, theta_r)
-        H = (L + E) / np.linalg.norm(L + E, axis=-1, keepdims=True)
-        G_b, G_c = vcavity_terms_Blinn1977(L @ N, E @ N, H @ N, np.sum(E * H, axis=-1))
-        term = np.argmin(np.stack([np.ones_like(G_b), G_b, G_c]), axis=0)
-        corners = np.flatnonzero(np.diff(term)) + 1
+        corners = row["G_corners"]
         cart.plot(tr_deg[corners], values["torrance_sparrow"][corners], "v", color="0.2", ms=4,
                   zorder=4)
-        row["G_corners_deg"] = " ".join(f"{a:.1f}" for a in tr_deg[corners])
         cart.axvline(np.degrees(theta_i), color="0.5", lw=0.8, ls=(0, (3, 2)))
         # the word beside the line, inside the axes (the axis runs from +90 on the left)
         cart.text(np.degrees(theta_i), 1.0, " mirror", transform=cart.get_xaxis_transform(),
@@ -119,36 +81,82 @@ with script_log(snakemake) as log:
                  xlabel="\u03b8 from N (\u00b0; mirror side +, left)", ylabel="intensity i")
         cart.grid(True)
         cart.set_title("the same, i(\u03b8)", pad=2)
-        row_axes[0].text(0.0, 1.36, f"{s['label']}: p_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
+        # how alike the two pictures are, under both polar plots
+        row_axes[0].text(1.08, -0.2, f"largest difference {row['max_difference_ts_matched']:.0%} of the "
+                         f"Phong peak; ratio of peaks {row['peak_ratio_ts_to_matched']:.2f}, of bumps "
+                         f"{row['bump_ratio_ts_to_matched']:.2f}".replace("%", " %"),
+                         transform=row_axes[0].transAxes, ha="center", va="top",
+                         fontsize=TEXT_SIZE["annotation"], color="0.2")
+        row_axes[0].text(0.0, 1.3, f"{s['label']}:\np_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
                          f"n = {s['n']:g}, F(0) = {F0:.3g}, c\u2083 = {s['c3']:g}, "
                          f"\u03b2 = {np.degrees(beta):.1f}\u00b0, c\u2081 = {c1:.2f}",
                          transform=row_axes[0].transAxes, ha="left", va="bottom",
-                         fontsize=TEXT_SIZE["annotation"] + 0.5)
+                         fontsize=TEXT_SIZE["annotation"] + 0.5, linespacing=1.3)
         for ax, key in ((row_axes[0], "phong_matched"), (row_axes[1], "torrance_sparrow")):
             ax.text(0.5, -0.04, f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
                     transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"],
                     color=CURVES[key][1])
-        log.info("%s: %s", s["label"], ", ".join(f"{k} = {v:.6g}" for k, v in row.items()
-                                                   if not isinstance(v, str)))
-    fig.suptitle(f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\nlight at "
-                 f"{np.degrees(theta_i):g}\u00b0 from the normal, from the right", y=0.998, va="top",
-                 linespacing=1.3)
+    fig.suptitle(title, y=0.998, va="top", linespacing=1.3)
     handles, labels = axes[0, 2].get_legend_handles_labels()
     handles.append(Line2D([], [], marker="v", ls="none", color="0.2", ms=4))
     labels.append("where G = min(1, G_b, G_c) changes term")
     fig.legend(handles, labels, loc="upper center", ncol=2,
                bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
-    fig.subplots_adjust(left=0.01, right=0.99, top=1 - 1.5 / fig.get_figheight(), bottom=0.08,
-                        wspace=0.3, hspace=0.75)
-    savefig(fig, snakemake.output.png, snakemake.output.pdf)
+    # one row: its polar axes, wider than high, shrink about their centres (aspect 1): start higher
+    title_in = 1.3 if len(sets) == 1 else 1.55
+    fig.subplots_adjust(left=0.01, right=0.99, top=1 - title_in / fig.get_figheight(),
+                        bottom=0.5 / fig.get_figheight(), wspace=0.3, hspace=0.95)
+    return fig
+
+
+with script_log(snakemake) as log:
+    cfg, number = snakemake.params.fig, snakemake.params.figure_number
+    theta_i = np.radians(float(snakemake.params.incidence_deg))
+    # n_directions from -90 to 90 degrees inclusive; the two horizon samples (i = 0) are dropped
+    theta_r = np.radians(np.linspace(-90.0, 90.0, cfg["n_directions"])[1:-1])
+    chosen, variants = [cfg["chosen"]], cfg["parameter_sets"]
+    results = {s["label"]: compare_in_plane_Blinn1977(s, theta_i, theta_r) for s in chosen + variants}
+    incidence = f"light at {np.degrees(theta_i):g}\u00b0 from the normal, from the right"
+    for sets, title, png, pdf in (
+            (chosen, f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\n"
+             f"{incidence}", snakemake.output.png, snakemake.output.pdf),
+            (variants, f"Blinn 1977, Fig. {number}, variant: Fig. 7's measured materials,\n{incidence}",
+             snakemake.output.variant_png, snakemake.output.variant_pdf)):
+        fig = draw(sets, [results[s["label"]] for s in sets], theta_i, theta_r, title)
+        savefig(fig, png, pdf)
+    curves, summary = [], []
+    for role, s in [("default", s) for s in chosen] + [("variant", s) for s in variants]:
+        values, row = results[s["label"]]
+        corners = " ".join(f"{a:.1f}" for a in np.degrees(theta_r[row["G_corners"]]))
+        row = {"role": role, **{k: v for k, v in row.items() if k != "G_corners"},
+               "G_corners_deg": corners}
+        log.info("%s: %s", s["label"], ", ".join(f"{k} = {v:.6g}" for k, v in row.items()
+                                                   if not isinstance(v, str)))
+        summary.append(row)
+        curves.append(pd.DataFrame({"parameter_set": s["label"], "theta_r_deg": np.degrees(theta_r),
+                                    **values}))
     pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")
 
-    # the caption's numbers (workflow/report/blinn77_fig5_6.rst), per parameter set (in config
-    # order), from the summary as written
-    first, second = pd.read_csv(snakemake.output.summary).itertuples()
+    # the caption's numbers (workflow/report/blinn77_fig5_6*.rst): the default set, then the
+    # variants in config order, from the summary as written
+    default, first, second = pd.read_csv(snakemake.output.summary).itertuples()
     write_caption_values(snakemake.output.values, {
+        "chosen_difference": f"{default.max_difference_ts_matched:.0%}".replace("%", " %"),
+        "chosen_bump_matched": f"{default.bump_to_hemisphere_matched:.2f}",
+        "chosen_bump_ts": f"{default.bump_to_hemisphere_ts:.2f}",
+        "chosen_ratio": f"{default.peak_ratio_ts_to_matched:.2f}",
+        "chosen_bump_ratio": f"{default.bump_ratio_ts_to_matched:.2f}",
+        "chosen_beta": f"{default.beta_deg:.1f}", "chosen_c1": f"{default.c1:.0f}",
+        "chosen_F0": f"{default.F0:.2f}",
+        "chosen_phong_matched_peak": f"{default.phong_matched_max:.3f}",
+        "chosen_phong_matched_deg": f"{default.phong_matched_max_deg:.1f}",
+        "chosen_torrance_sparrow_peak": f"{default.torrance_sparrow_max:.3f}",
+        "chosen_torrance_sparrow_deg": f"{default.torrance_sparrow_max_deg:.1f}",
+        "set1_difference": f"{first.max_difference_ts_matched:.0%}".replace("%", " %"),
+        "set2_difference": f"{second.max_difference_ts_matched:.0%}".replace("%", " %"),
         "set1_F0": f"{first.F0:.2f}", "set2_F0": f"{second.F0:.3f}",
+        "set2_bump_matched": f"{second.bump_to_hemisphere_matched:.2f}",
         "set1_ratio": f"{first.peak_ratio_ts_to_matched:.2f}",
         "set2_ratio": f"{second.peak_ratio_ts_to_matched:.2f}",
         "set1_ratio_printed": f"{first.peak_ratio_ts_to_as_printed:.2f}",

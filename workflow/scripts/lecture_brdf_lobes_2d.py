@@ -2,9 +2,11 @@
 "Figure 9.18 (7.17 3rd edition) shows sample BRDFs" - diffuse, Phong, the lecture's normalised
 Blinn-Phong, Cook-Torrance, an anisotropic Ward lobe and a lunar lobe (Hapke's, back-scattering
 towards the light; dashed, its Lommel-Seeliger variant without back-scatter), as polar plots in the
-plane of incidence. Each panel is scaled by its largest f up to ``scale_to_deg`` from N
-(``lobe_peak``, the 3-D figure's scale). The radius is the BRDF f(L, V) itself along each outgoing direction V (not
-f cos theta_o): a Lambertian surface is then "a simple hemisphere", as the slide says."""
+plane of incidence. One radial scale for every panel, ``scale_margin`` times the largest f up to ``scale_to_deg``
+from N (``lobe_peak``, as in the 3-D figure), so that Phong's protrusion stands on the diffuse
+panel's hemisphere. Ward's panel adds the lobe of its light turned by ``ward_turned_deg`` about N
+(dashed: across the grain). The radius is the BRDF f(L, V) itself along each outgoing direction V
+(not f cos theta_o): a Lambertian surface is then "a simple hemisphere", as the slide says."""
 
 import numpy as np
 import pandas as pd
@@ -13,7 +15,8 @@ from matplotlib.ticker import MaxNLocator
 from reflectance.optics.brdf import brdf
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.brdf_geometry import draw_brdf_angles
-from reflectance.papers.polar import lobe_peak, plane_angles, plane_of_incidence_vectors
+from reflectance.papers.polar import (lobe_peak, plane_angles, plane_of_incidence_vectors,
+                                      turned_about_normal)
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
@@ -27,6 +30,7 @@ MODELS = {
     "lunar": ("Hapke1981", "lunar: Hapke 1981, opposition effect"),
 }
 VARIANT = "lunar_lommel_seeliger"  # the lunar lobe's Lommel-Seeliger variant (same albedo), dashed
+TURNED = "ward_turned"  # Ward's lobe with the light turned about N (across the grain), dashed
 
 
 def parameters_text(params):
@@ -55,6 +59,14 @@ with script_log(snakemake) as log:
     for key, (method, _) in MODELS.items():
         table[key] = brdf(L, V, N, method, **cfg["models"][key])
     table[VARIANT] = brdf(L, V, N, "LommelSeeliger", albedo=cfg["models"]["lunar"]["albedo"])
+    turn = np.radians(cfg["ward_turned_deg"])  # the same plane of incidence, turned about N
+    table[TURNED] = brdf(turned_about_normal(L, turn), turned_about_normal(V, turn), N, "Ward1992",
+                         **cfg["models"]["ward"])
+    # one radial scale for every panel: scale_margin times the largest of their maxima (Ward's f grows
+    # without bound at the horizon: each maximum is taken up to scale_to_deg, lobe_peak)
+    peaks = {key: lobe_peak(table[key], theta_o, cfg["scale_to_deg"]) for key in MODELS}
+    top = cfg["scale_margin"] * max(peak for peak, _ in peaks.values())
+    rings = [t for t in MaxNLocator(3).tick_values(0, top) if 0 < t < top]
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     # drawn at the print width (its text prints at the figures' sizes): the angle diagram and the
@@ -73,14 +85,18 @@ with script_log(snakemake) as log:
         ax.set_theta_zero_location("N")
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
-        f = table[key]
-        peak, at = lobe_peak(f, theta_o, cfg["scale_to_deg"])  # Ward's f grows without bound
-        top = 1.15 * peak
+        # drawn short of the horizon, where Ward's 1/sqrt(N.V) has no value (clipped at the rim)
+        seen = np.abs(theta_o) < np.pi / 2 - 1e-9
+        f = np.where(seen, table[key], 0.0)
+        peak, at = peaks[key]
         ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6)
         ax.fill(theta_o, np.minimum(f, top), color=OKABE_ITO[0], alpha=0.15)
         if key == "lunar":
             ax.plot(theta_o, np.minimum(table[VARIANT], top), color=OKABE_ITO[3], lw=1.2, ls=(0, (4, 2)),
                     label="lunar variant: Lommel-Seeliger\n(same w, no back-scatter)")
+        if key == "ward":
+            ax.plot(theta_o, np.minimum(np.where(seen, table[TURNED], 0.0), top), color=OKABE_ITO[2], lw=1.2, ls=(0, (4, 2)),
+                    label=f"Ward, light turned {cfg['ward_turned_deg']:g}\u00b0 about N\n(across the grain)")
         ax.plot([-theta_i, -theta_i], [0, top], color=OKABE_ITO[4], lw=1.5, label="towards the light L")
         ax.plot([theta_i, theta_i], [0, top], color="0.4", lw=1, ls="--", label="mirror direction")
         ax.set_ylim(0, top)
@@ -88,16 +104,18 @@ with script_log(snakemake) as log:
                      fontsize=TEXT_SIZE["annotation"], pad=0, linespacing=1.25)
         ax.tick_params(pad=1)
         ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
-        ax.yaxis.set_major_locator(MaxNLocator(2))
+        ax.set_yticks(rings, [f"{t:g}" for t in rings], fontsize=TEXT_SIZE["table"])  # the one scale
         flat = np.ptp(f[np.abs(theta_o) < np.pi / 2]) <= 1e-9 * peak  # Lambert's: no one direction
         where = "" if flat else f" at \u03b8 = {np.degrees(theta_o[at]):.0f}\u00b0"
         ax.text(0.5, 0.02, f"max f = {peak:.3g} sr$^{{-1}}${where}",
                 transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
         log.info("%s: max f %.6g at theta_o = %.2f deg (up to %g deg from N)", key, peak,
                  np.degrees(theta_o[at]), cfg["scale_to_deg"])
-    fig.legend(*fig.axes[-1].get_legend_handles_labels(), loc="center left",
-               bbox_to_anchor=(0.7, 0.8), title=f"incidence {cfg['incidence_deg']:g}\u00b0,\n"
-               "light on the left;\nradius f(L, V) in sr$^{-1}$;\n"
+    handles, labels = fig.axes[-1].get_legend_handles_labels()
+    extra = fig.axes[-2].get_legend_handles_labels()  # Ward's turned lobe
+    fig.legend(extra[0][:1] + handles, extra[1][:1] + labels, loc="center left",
+               bbox_to_anchor=(0.67, 0.8), title=f"incidence {cfg['incidence_deg']:g}\u00b0,\n"
+               "light on the left;\nradius f(L, V) in sr$^{-1}$,\none scale for all panels;\n"
                f"max f: largest up to {cfg['scale_to_deg']:g}\u00b0 from N", alignment="left")
     fig.suptitle("Lecture (Russin, Module 3B), the BRDF's angles\nand sample BRDFs in the plane of "
                  "incidence", y=0.995, va="top", linespacing=1.3)

@@ -1,11 +1,12 @@
 """Lecture (Russin, Module 3B), "BRDF" slide: the sample BRDFs of brdf_lobes_2d as 3-D lobe surfaces
 (pyvista, off-screen), in the 2-D figure's grid of two rows of three. Each surface point is
-V f(L, V) / max f over the outgoing hemisphere: the radius along every outgoing direction V is the
-BRDF itself (not f cos theta_o), scaled per lobe by its largest value up to ``scale_to_deg`` from the
-normal (``lobe_peak``, the 2-D figure's scale). A lobe that rises past that value nearer the horizon
-(Ward's 1/sqrt(N.L N.V)) ends at ``scale_to_deg``; the others reach the surface. The job checks each
-maximum against the plane of incidence at the 2-D figure's steps (``polar_step_deg``) and writes
-both to the caption's values."""
+V f(L, V) / top over the outgoing hemisphere: the radius along every outgoing direction V is the
+BRDF itself (not f cos theta_o), on the 2-D figure's one scale for every panel, top = ``scale_margin`` times the
+largest of the lobes' maxima up to ``scale_to_deg`` from N (``lobe_peak``); the grey disc's rim is
+that scale, and the colour is f in sr^-1 with its key. A lobe that passes the rim nearer the horizon
+(Ward's 1/sqrt(N.L N.V)) ends where it would. Ward's panel adds the lobe of its light turned by
+``ward_turned_deg`` about N (across the grain). The job checks each maximum against the plane of
+incidence at the 2-D figure's steps (``polar_step_deg``) and writes both to the caption's values."""
 
 import numpy as np
 import pyvista as pv
@@ -14,7 +15,7 @@ from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import font_file, off_screen_plotter, save_plotter
 from reflectance.optics.brdf import brdf
 from reflectance.papers.polar import (direction_from_angles, lobe_peak, plane_angles,
-                                      plane_of_incidence_vectors)
+                                      plane_of_incidence_vectors, turned_about_normal)
 from reflectance.scripting import script_log
 
 # config key -> (reflectance.optics.brdf method, panel title): the 2-D figure's models
@@ -42,40 +43,58 @@ with script_log(snakemake) as log:
     theta_plane = plane_angles(cfg["polar_step_deg"])
     L_plane, V_plane, _ = plane_of_incidence_vectors(theta_i, theta_plane)
 
+    turn = np.radians(cfg["ward_turned_deg"])
+    L_turned = turned_about_normal(L, turn)  # Ward's second light, across the grain
+    f_all = {key: brdf(L, V, N, method, **cfg["models"][key]) for key, (method, _) in MODELS.items()}
+    f_turned = brdf(L_turned, V, N, "Ward1992", **cfg["models"]["ward"])
+    peaks = {key: lobe_peak(f, theta, limit) for key, f in f_all.items()}
+    top = cfg["scale_margin"] * max(peak for peak, _ in peaks.values())  # the 2-D figure's one scale: the disc's rim
+
     rows = -(-len(MODELS) // COLUMNS)
     pl = off_screen_plotter(*cfg["render_3d"]["size"], shape=(rows, COLUMNS))
     pl.set_background("white")
     found = {}  # per model: its maximum over the hemisphere and in the 2-D table, where, how far drawn
     for i, (key, (method, title)) in enumerate(MODELS.items()):
-        f = brdf(L, V, N, method, **cfg["models"][key])
-        peak, at = lobe_peak(f, theta, limit)
+        peak, at = peaks[key]
         in_plane, _ = lobe_peak(brdf(L_plane, V_plane, N, method, **cfg["models"][key]), theta_plane, limit)
-        r = f / peak
-        # rings of theta past the limit are drawn while the lobe stays within its scale (Ward's does not)
-        beyond = (theta[:, 0] > np.radians(limit)) & (r.max(axis=1) > 1.0)
-        last = int(np.argmax(beyond)) if beyond.any() else n_theta
-        r, Vd = r[:last], V[:last]
-        lobe = pv.StructuredGrid(*(r * Vd[..., j] for j in range(3)))
-        lobe["f / max f"] = r.ravel(order="F")
         pl.subplot(i // COLUMNS, i % COLUMNS)
-        pl.add_mesh(lobe, scalars="f / max f", cmap="viridis", clim=(0, 1), smooth_shading=True,
-                    show_scalar_bar=False)
-        pl.add_mesh(pv.Disc(inner=0.0, outer=1.1, normal=(0, 0, 1), c_res=96), color="#d9d9d9",
+        lights = [(L, f_all[key])] + ([(L_turned, f_turned)] if key == "ward" else [])
+        for light, f in lights:
+            r = f / top
+            # rings of theta are drawn while the lobe stays inside the rim (Ward's rises past it
+            # towards the horizon; the lobes' maxima up to scale_to_deg are within it by design)
+            beyond = r.max(axis=1) > 1.0
+            last = int(np.argmax(beyond)) if beyond.any() else n_theta
+            lobe = pv.StructuredGrid(*(r[:last] * V[:last, :, j] for j in range(3)))
+            lobe["f (1/sr)"] = f[:last].ravel(order="F")
+            actor = pl.add_mesh(lobe, scalars="f (1/sr)", cmap="viridis", clim=(0, top),
+                                smooth_shading=True, show_scalar_bar=False)
+            pl.add_mesh(pv.Arrow(start=1.35 * light, direction=-light, scale=1.25, tip_length=0.12,
+                                 tip_radius=0.035, shaft_radius=0.012), color="#d98c00")
+            if light is L:
+                drawn_to = np.degrees(theta[last - 1, 0])
+        pl.add_mesh(pv.Disc(inner=0.0, outer=1.0, normal=(0, 0, 1), c_res=96), color="#d9d9d9",
                     opacity=0.5)
-        pl.add_mesh(pv.Arrow(start=1.35 * L, direction=-L, scale=1.25, tip_length=0.12,
-                             tip_radius=0.035, shaft_radius=0.012), color="#d98c00")
         pl.add_mesh(pv.Line((0, 0, 0), 1.25 * mirror), color="#595959", line_width=2)
-        pl.add_text(f"{title}\nmax f = {peak:.3g} /sr", font_size=11, color="black",
+        turned = f"\n(2nd light turned {cfg['ward_turned_deg']:g} deg)" if key == "ward" else ""
+        pl.add_text(f"{title}\nmax f = {peak:.3g} /sr{turned}", font_size=11, color="black",
                     position="upper_edge", font_file=font_file())  # the figures' typeface
-        pl.view_vector((0.3, -1.0, 0.75), viewup=(0, 0, 1))  # from above the front: Ward's width across the plane shows
+        # from above the front; Ward's panel from higher up, where each lobe's width across its
+        # plane of incidence (alpha_y for the first light, alpha_x for the turned one) shows
+        pl.view_vector(cfg["render_3d"]["ward_view" if key == "ward" else "view"], viewup=(0, 0, 1))
         pl.reset_camera(bounds=(-1.1, 1.1, -1.1, 1.1, -0.3, 1.0))  # lobes up under their titles
         pl.camera.zoom(cfg["render_3d"]["zoom"])
+        if i == len(MODELS) - 1:  # the key: f in sr^-1, the colour and the radius of every panel
+            pl.add_scalar_bar(title=f"f (1/sr)\nrim {top:.2g}", mapper=actor.mapper, n_labels=4,
+                              fmt="%.2f", vertical=True, position_x=0.86, position_y=0.03,
+                              width=0.05, height=0.5, color="black", title_font_size=15,
+                              label_font_size=14, font_family="arial")
         t_deg, p_deg = np.degrees(theta.flat[at]), np.degrees(phi.flat[at])
         found[key] = {"max": f"{peak:.3g}", "plane": f"{in_plane:.3g}",
                       "at": f"theta_o = {t_deg:.1f} deg, phi_o = {p_deg:.0f} deg",
-                      "drawn_to": f"{np.degrees(theta[last - 1, 0]):.1f}"}
+                      "drawn_to": f"{drawn_to:.1f}"}
         log.info("%s: max f %.6g sr^-1 at (theta_o, phi_o) = (%.2f, %.1f) deg; in the plane %.6g; "
-                 "drawn to %.2f deg", key, peak, t_deg, p_deg, in_plane, np.degrees(theta[last - 1, 0]))
+                 "drawn to %.2f deg", key, peak, t_deg, p_deg, in_plane, drawn_to)
     write_caption_values(snakemake.output.values, {
         "diffuse_max": found["diffuse"]["max"], "diffuse_max_plane": found["diffuse"]["plane"],
         "phong_max": found["phong"]["max"], "phong_max_plane": found["phong"]["plane"],
@@ -86,6 +105,6 @@ with script_log(snakemake) as log:
         "ward_max": found["ward"]["max"], "ward_max_plane": found["ward"]["plane"],
         "ward_drawn_to": found["ward"]["drawn_to"],
         "lunar_max": found["lunar"]["max"], "lunar_max_plane": found["lunar"]["plane"],
-        "lunar_max_at": found["lunar"]["at"],
+        "lunar_max_at": found["lunar"]["at"], "scale": f"{top:.2g}",
     })
     save_plotter(pl, snakemake.output.png, margin=cfg["render_3d"]["margin"])

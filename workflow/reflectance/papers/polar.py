@@ -8,6 +8,8 @@
 - :func:`intensity_in_plane_of_incidence`: the polar plots of Blinn 1977, Figs. 5 and 6.
 - :func:`lobe_peak`: a lobe's largest value up to an angle from N, the one scale of the lecture's
   2-D and 3-D lobes (so the two figures print the same maximum).
+- :func:`turned_about_normal`: directions turned about N = +z (the lecture's anisotropic lobe
+  with its light turned across the grain).
 
 Blinn draws "the amount of light reflected from a surface as a result of an incident ray at 30
 [70] degrees from the surface normal" as a curve whose distance from the centre, in each direction
@@ -42,7 +44,7 @@ import numpy.typing as npt
 from reflectance.optics.brdf import brdf
 
 __all__ = ["direction_from_angles", "plane_of_incidence_vectors", "intensity_in_plane_of_incidence",
-           "plane_angles", "lobe_peak"]
+           "plane_angles", "lobe_peak", "turned_about_normal"]
 
 
 def direction_from_angles(theta: npt.ArrayLike, phi: npt.ArrayLike) -> npt.NDArray[np.float64]:
@@ -169,3 +171,16 @@ def lobe_peak(f: npt.ArrayLike, theta: npt.ArrayLike, limit_deg: float) -> tuple
         raise ValueError(f"no direction within {limit_deg!r} degrees of N")
     index = int(np.argmax(np.where(inside, f, -np.inf)))
     return float(f.flat[index]), index
+
+
+def turned_about_normal(vectors: npt.ArrayLike, phi: float) -> npt.NDArray[np.float64]:
+    """``vectors`` (shape ``(..., 3)``) turned by the azimuth ``phi`` (radians) about N = +z.
+
+    Examples
+    --------
+    >>> np.round(turned_about_normal([1.0, 0.0, 0.5], np.pi / 2), 12).tolist()
+    [0.0, 1.0, 0.5]
+    """
+    v = np.asarray(vectors, dtype=np.float64)
+    c, s = np.cos(phi), np.sin(phi)
+    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1], v[..., 2]], axis=-1)

@@ -20,9 +20,11 @@ DEFINITIONS = {figure.RULE: figure for figure in (
                                                  "construction_case")},
            {"png": "fig2_4.png", "pdf": "fig2_4.pdf", "csv": "fig2_4.csv"}),
     # one rule, one job per figure ({fig}); the rule hands each job its own incidence angle
-    Figure("blinn77_fig5_6", _OUT, {"fig": _keys("fig5_6", "n_directions", "parameter_sets"),
+    # the default figure draws the chosen set; {fig}_fig7_materials, Fig. 7's measured sets
+    Figure("blinn77_fig5_6", _OUT, {"fig": _keys("fig5_6", "n_directions", "chosen", "parameter_sets"),
                                     "incidence_deg": f"{_B77}.fig5_6.incidence_deg"},
-           {"png": "{fig}.png", "pdf": "{fig}.pdf", "csv": "{fig}.csv",
+           {"png": "{fig}.png", "pdf": "{fig}.pdf", "variant_png": "{fig}_fig7_materials.png",
+            "variant_pdf": "{fig}_fig7_materials.pdf", "csv": "{fig}.csv",
             "summary": "{fig}_summary.csv", "values": "{fig}.values.rst"},
            WILDCARDS={"fig": ("fig5", "fig6")}),
     Figure("blinn77_distributions", _OUT, {"fig": f"{_B77}.distributions"},

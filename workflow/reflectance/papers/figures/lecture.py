@@ -10,7 +10,8 @@ _LECTURE, _OUT = "figures.lecture", "results/lecture"
 
 def _lobes(*keys):
     return tuple(f"{_LECTURE}.brdf_lobes.{key}" for key in ("incidence_deg", "models",
-                                                            "scale_to_deg", *keys))
+                                                            "scale_to_deg", "scale_margin",
+                                                            "ward_turned_deg", *keys))
 
 
 DEFINITIONS = {figure.RULE: figure for figure in (
