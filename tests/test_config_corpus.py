@@ -177,6 +177,8 @@ CORPUS = [
     ("munsell-garbage", set_("materials.Obsidian.notation", "black"), r"materials\.Obsidian\.notation: 'black'"),
     ("texture-value", set_(f"{B77}.fig8.patterns.a.parameters.radius", 0.7),
      r"figures\.blinn_1977\.fig8\.patterns\.a\.parameters: radius must lie in"),
+    ("copper-band", set_(f"{CT}.fig4_copper.red_nm", [700, 600]), r"fig4_copper\.red_nm: \[700, 600\] must run from short to long"),
+    ("copper-report", set_(f"{CT}.fig4_copper.report_nm", [401]), r"fig4_copper\.report_nm: 401 nm not on the wavelength grid"),
     ("unknown-material", set_(f"{CT}.fig4.material", "Copper"), r"figures\.cook_torrance_1982\.fig4\.material: unknown material 'Copper'"),
     ("unknown-table1-row", set_(f"{CT}.fig8.parts.face.table1", "Cheese"), r"fig8\.parts\.face\.table1: 'Cheese' is not a row"),
     ("unknown-reading", set_(f"{CT}.fig8.ambient_reading", "nope"), r"fig8\.ambient_reading: 'nope'"),

@@ -21,10 +21,16 @@ def config():
 def test_fig4_axes_span_the_visible(config, tmp_path):
     fig = config["figures"]["cook_torrance_1982"]["fig4"]
     spectrum = ROOT / "spectra" / f"{fig['material']}.csv"
+    # the copper datasets' table, which Fig. 4's caption reads (rule ct82_fig4_copper)
+    run_script("cook_torrance_1982_fig4_copper", tmp_path,
+               {"png": "c.png", "pdf": "c.pdf", "csv": "c.csv"},
+               fig=config["figures"]["cook_torrance_1982"]["fig4_copper"], material=fig["material"],
+               dataset=config["materials"][fig["material"]], wavelengths=config["wavelengths"],
+               colour=config["colour"])
     names = run_script("cook_torrance_1982_fig4", tmp_path,
                        {"png": "f.png", "pdf": "f.pdf", "csv": "f.csv", "values": "f.values.rst"},
-                       inputs={"spectrum": str(spectrum)}, fig=fig, wavelengths=config["wavelengths"],
-                       colour=config["colour"])
+                       inputs={"spectrum": str(spectrum), "copper": str(tmp_path / "c.csv")},
+                       fig=fig, wavelengths=config["wavelengths"], colour=config["colour"])
     scale = 1e-3 if fig["wavelength_unit"] == "um" else 1.0
     start, end = fig["axis_nm"]
     assert config["wavelengths"]["start_nm"] < start and end < config["wavelengths"]["end_nm"]

@@ -149,7 +149,9 @@ READ_BY = {"ct82_fig6": {"audit_gamut_mapping", "readme_strip"},
            "blinn77_fig8": {"audit_gamut_mapping"}, "article_spheres": {"audit_gamut_mapping"},
            "blinn77_fig7_sweep": set(), "audit_rgb_rendering": set(),
            # of the figures that render nothing, README's strip reads Fig. 5c's colours
-           **{rule: set() for rule in ANALYTIC}, "ct82_fig5bc": {"readme_strip"}}
+           **{rule: set() for rule in ANALYTIC}, "ct82_fig5bc": {"readme_strip"},
+           # Fig. 4's caption states the copper datasets' comparison (its job reads the table)
+           "ct82_fig4_copper": {"ct82_fig4"}}
 #: provenance hashes every output: it runs again after any job
 AGGREGATING = {"provenance"}
 
@@ -172,6 +174,8 @@ EDITS = [
 #: another in one copy of the build (each edit undone before the next)
 ANALYTIC_EDITS = [
     ("figures.cook_torrance_1982.fig3.alpha_step_deg", 0.5),
+    ("figures.cook_torrance_1982.fig4_copper.red_nm", [610, 700]),  # the comparison, Fig. 4's caption
+    ("figures.cook_torrance_1982.fig4.axis_nm", [400, 700]),  # Fig. 4 alone, not the comparison
     ("figures.cook_torrance_1982.fig5.surface_angle_step_deg", 2),  # Fig. 5a only
     ("figures.cook_torrance_1982.fig5.average_F0_range_nm", [400, 700]),  # Fig. 5c only
     ("figures.cook_torrance_1982.table1.average_F0_range_nm", [400, 700]),

