@@ -98,13 +98,17 @@ def _canonical_sha256(value):
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def provenance(outputs, spectra, config, config_file="config.yaml", git=None, root="."):
+def provenance(outputs, spectra, config, config_file="config.yaml", git=None, root=".",
+               measurements=()):
     """The manifest as a dict (see the module's description).
 
     Parameters
     ----------
     outputs, spectra : iterable of str
         Files (relative to ``root``) hashed under ``outputs`` and ``spectra``.
+    measurements : iterable of str
+        Outputs that differ from run to run (timings): listed by path under ``measurements``,
+        not hashed, so that the manifest of a rerun stays the same bytes.
     config : mapping
         The configuration the workflow ran with (Snakemake's ``config``: config.yaml, defaults
         and any ``--config``); hashed as canonical JSON.
@@ -129,6 +133,7 @@ def provenance(outputs, spectra, config, config_file="config.yaml", git=None, ro
         "packages": package_versions(),
         "spectra": files(spectra),
         "outputs": files(outputs),
+        "measurements": sorted(set(map(str, measurements))),
     }
 
 
