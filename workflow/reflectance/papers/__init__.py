@@ -1,7 +1,8 @@
 """Papers: what only one text needs: its simulations, plots and scenes from config.yaml.
 
 Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn's V-groove), profile (random-surface
-shadowing), polar (plane-of-incidence curves), scenes (the rendered figures" scenes), errata (the
+shadowing), polar (plane-of-incidence curves), highlight_cost (Blinn's cost claim: each term's
+operations and time), scenes (the rendered figures" scenes), errata (the
 computed consequence of each erratum of the four texts, by id).
 
 Public names are loaded on first use (``from reflectance.papers import name``), so importing
@@ -11,13 +12,18 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("errata", "polar", "profile", "scenes", "vgroove", "vgroove_derivation", "vgroove_plot")
+_MODULES = ("errata", "highlight_cost", "polar", "profile", "scenes", "vgroove", "vgroove_derivation",
+            "vgroove_plot")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
     "ERRATA": "errata",
     "errata_rows": "errata",
     "errata_table": "errata",
+    "count_table": "highlight_cost",
+    "frame_constants": "highlight_cost",
+    "time_per_evaluation": "highlight_cost",
+    "timing_verdict": "highlight_cost",
     "direction_from_angles": "polar",
     "plane_of_incidence_vectors": "polar",
     "intensity_in_plane_of_incidence": "polar",
