@@ -3,7 +3,7 @@
 ``results/provenance.yaml`` (rule ``provenance``) records the git commit of the checkout (and
 whether tracked files differed from it), the SHA-256 of config.yaml and of the configuration the
 workflow ran with, of every spectrum, the Python and package versions of the environment, and the
-SHA-256 of every output. Someone holding an archive of the results can check each file against it,
+SHA-256 of every output but a measurement (a timing, which differs from run to run: listed by path). Someone holding an archive of the results can check each file against it,
 and rebuild in the environment it names (``workflow/envs/constraints.txt`` pins the same versions).
 
 Beside each audit table, a smaller file of the same kind (:func:`write_metadata`) says what that
