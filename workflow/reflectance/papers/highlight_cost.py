@@ -29,6 +29,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from collections.abc import Callable, Mapping
@@ -283,12 +284,12 @@ def count_term(key: str, k: FrameConstants) -> tuple[dict[str, int], list[str]]:
     >>> counts["multiplies"], counts["adds"], counts["divides"], calls
     (2, 1, 1, [])
     """
-    worst = None
+    tallies = []
     for point in _BRANCH_POINTS:
         tally = Tally()
         TERMS[key].formula(*(Counted(x, tally) for x in point), k, COUNTING)
-        if worst is None or sum(tally.counts.values()) > sum(worst.counts.values()):
-            worst = tally
+        tallies.append(tally)
+    worst = max(tallies, key=lambda t: sum(t.counts.values()))  # the first of the costliest
     return worst.counts, worst.calls
 
 
@@ -327,8 +328,8 @@ def sample_dot_products(n: int, seed: int) -> dict[str, np.ndarray]:
 def formula_terms(samples: Mapping[str, np.ndarray],
                   k: FrameConstants) -> dict[str, Callable[[], Any]]:
     """Each term of :data:`TERMS` as counted, on numpy arrays: ``{key: function of nothing}``."""
-    args = (samples["NH"], samples["NL"], samples["NE"], samples["EH"])
-    return {key: (lambda f=term.formula: f(*args, k, NUMPY)) for key, term in TERMS.items()}
+    args = (samples["NH"], samples["NL"], samples["NE"], samples["EH"], k, NUMPY)
+    return {key: functools.partial(term.formula, *args) for key, term in TERMS.items()}
 
 
 def project_terms(samples: Mapping[str, np.ndarray], c1: float, c2: float, c3: float, n: float,
