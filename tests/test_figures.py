@@ -151,7 +151,8 @@ READ_BY = {"ct82_fig6": {"audit_gamut_mapping", "readme_strip"},
            # of the figures that render nothing, README's strip reads Fig. 5c's colours
            **{rule: set() for rule in ANALYTIC}, "ct82_fig5bc": {"readme_strip"},
            # Fig. 4's caption states the copper datasets' comparison (its job reads the table)
-           "ct82_fig4_copper": {"ct82_fig4"}}
+           "ct82_fig4_copper": {"ct82_fig4"},
+           "blinn77_cost_counts": {"blinn77_cost_timing"}}
 #: provenance hashes every output: it runs again after any job
 AGGREGATING = {"provenance"}
 
@@ -184,6 +185,8 @@ ANALYTIC_EDITS = [
     ("figures.blinn_1977.fig1_4.n_rays", 50000),  # Figs. 1 and 2-4
     ("figures.blinn_1977.fig5_6.incidence_deg.fig5", 35),
     ("figures.blinn_1977.distributions.alpha_step_deg", 0.1),
+    ("figures.blinn_1977.cost.panel", "a"),  # the counts and the timing
+    ("figures.blinn_1977.cost.n_samples", 500000),  # the timing only
     ("figures.lecture.brdf_lobes.polar_step_deg", 0.5),  # the 2-D lobes, not the 3-D
     ("figures.lecture.brdf_lobes.hemisphere_samples", [91, 181]),  # the 3-D lobes only
     ("figures.lecture.shadowing_masking.view_deg", 70),

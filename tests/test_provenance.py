@@ -65,6 +65,18 @@ def test_written_manifest_is_deterministic_yaml(project):
     assert (project / "results" / "p2.yaml").read_bytes() != one
 
 
+def test_a_measurement_is_listed_not_hashed(project):
+    """A timing (the workflow's MEASUREMENTS) differs from run to run: the manifest names it
+    without its SHA-256, so a rerun that measures again writes the same manifest."""
+    (project / "results" / "timing.csv").write_text("ns\n31.2\n")
+    one = manifest(project, measurements=["results/timing.csv"])
+    (project / "results" / "timing.csv").write_text("ns\n29.8\n")
+    assert manifest(project, measurements=["results/timing.csv"]) == one
+    assert one["measurements"] == ["results/timing.csv"]
+    assert "results/timing.csv" not in one["outputs"]
+    assert manifest(project)["measurements"] == []
+
+
 def test_git_state_is_the_checkout_commit_and_dirty_flag(project):
     git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
     run = lambda *a: subprocess.run([*git, *a], cwd=project, check=True, capture_output=True,  # noqa: E731

@@ -225,10 +225,13 @@ def test_every_png_carries_its_colour_space(built):
 
 
 def test_provenance_lists_every_output_with_its_sha256(built):
-    """results/provenance.yaml: each other file of results/ and spectra/ with its SHA-256, the
-    configuration's hash; a copy without .git has no commit."""
+    """results/provenance.yaml: each other file of results/ and spectra/ with its SHA-256 (a
+    measurement, Blinn's cost timing, by path only), the configuration's hash; a copy without
+    .git has no commit."""
     manifest = yaml.safe_load((built / "results/provenance.yaml").read_text())
-    outputs = [p for p in results(built) if p != "results/provenance.yaml"]
+    measured = [p for p in results(built) if p.startswith("results/blinn_1977/cost_timing.")]
+    assert manifest["measurements"] == sorted(measured) and len(measured) == 3
+    outputs = [p for p in results(built) if p != "results/provenance.yaml" and p not in measured]
     assert manifest["outputs"] == digests(built, outputs)
     spectra = sorted(str(p.relative_to(built)) for p in (built / "spectra").glob("*.csv"))
     assert manifest["spectra"] == digests(built, spectra)

@@ -558,6 +558,13 @@ def _cross_field(config):
             problems.append(f"figures.blinn_1977.fig1_4.cases.{name}: these light and eye "
                             f"directions give Blinn's case {found!r}, not {name!r}")
 
+    # Blinn 1977's cost claim: the verdict's two bounds leave a margin between them
+    verdict = figures["blinn_1977"]["cost"]["verdict"]
+    if not verdict["holds_at_most"] < verdict["fails_at_least"]:
+        problems.append(f"figures.blinn_1977.cost.verdict: holds_at_most "
+                        f"({verdict['holds_at_most']:g}) must be below fails_at_least "
+                        f"({verdict['fails_at_least']:g})")
+
     # illuminants of the figures' lights
     lights = [(f"figures.cook_torrance_1982.fig6.lights[{i}]", light)
               for i, light in enumerate(ct["fig6"]["lights"])]

@@ -1,5 +1,6 @@
 # Blinn 1977, "Models of light reflection for computer synthesized pictures": the analytic figures
-# (Figs. 1-4 V-groove geometry, Figs. 5-6 polar plots, D1/D2/D3 at equal beta). Figs. 7, 8 elsewhere.
+# (Figs. 1-4 V-groove geometry, Figs. 5-6 polar plots, D1/D2/D3 at equal beta, the cost of each
+# term). Figs. 7, 8 elsewhere.
 
 # Each figure's keys (the rule's params, exactly) and outputs: its one line in
 # reflectance.papers.figures.blinn_1977.
@@ -7,7 +8,12 @@ B77_FIG1 = figure_def("blinn77_fig1")
 B77_FIG2_4 = figure_def("blinn77_fig2_4")
 B77_FIG5_6 = figure_def("blinn77_fig5_6")
 B77_DISTRIBUTIONS = figure_def("blinn77_distributions")
-TARGETS += figure_targets(B77_FIG1, B77_FIG2_4, B77_FIG5_6, B77_DISTRIBUTIONS)
+B77_COST_COUNTS = figure_def("blinn77_cost_counts")
+B77_COST_TIMING = figure_def("blinn77_cost_timing")
+TARGETS += figure_targets(
+    B77_FIG1, B77_FIG2_4, B77_FIG5_6, B77_DISTRIBUTIONS, B77_COST_COUNTS, B77_COST_TIMING
+)
+MEASUREMENTS += figure_targets(B77_COST_TIMING)
 
 
 rule blinn77_fig1:
@@ -139,3 +145,54 @@ rule blinn77_distributions:
         **B77_DISTRIBUTIONS.params,
     script:
         "../scripts/blinn_1977_distributions.py"
+
+
+rule blinn77_cost_counts:
+    output:
+        csv=report(
+            B77_COST_COUNTS.outputs["csv"],
+            caption="../report/blinn77_cost_counts.rst",
+            category="Blinn 1977",
+            subcategory="Cost of D1, D2, D3, G, F",
+        ),
+        values=B77_COST_COUNTS.outputs["values"],
+    log:
+        "logs/blinn_1977/cost_counts.log",
+    benchmark:
+        "benchmarks/blinn_1977/cost_counts.tsv"
+    threads: 1
+    resources:
+        mem_mb=500,
+        runtime=10,
+    params:
+        **B77_COST_COUNTS.params,
+    script:
+        "../scripts/blinn_1977_cost_counts.py"
+
+
+# A measurement: its outputs differ from run to run (MEASUREMENTS); one thread, so that the
+# numpy loops it times are the ones a render's job runs.
+rule blinn77_cost_timing:
+    input:
+        counts=B77_COST_COUNTS.outputs["csv"],
+    output:
+        csv=report(
+            B77_COST_TIMING.outputs["csv"],
+            caption="../report/blinn77_cost_timing.rst",
+            category="Blinn 1977",
+            subcategory="Cost of D1, D2, D3, G, F",
+        ),
+        measurement=B77_COST_TIMING.outputs["measurement"],
+        values=B77_COST_TIMING.outputs["values"],
+    log:
+        "logs/blinn_1977/cost_timing.log",
+    benchmark:
+        "benchmarks/blinn_1977/cost_timing.tsv"
+    threads: 1
+    resources:
+        mem_mb=1200,
+        runtime=10,
+    params:
+        **B77_COST_TIMING.params,
+    script:
+        "../scripts/blinn_1977_cost_timing.py"

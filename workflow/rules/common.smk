@@ -88,6 +88,9 @@ def flat_outputs(outputs):
 #: Every output `snakemake --cores 2` builds. Each rules file adds its own figures and tables
 #: (``TARGETS += [...]``); the Snakefile's rule all asks for them all.
 TARGETS = all_spectra()
+#: Of TARGETS, the measurements (timings): a rerun gives other digits, so provenance.yaml lists
+#: them without their SHA-256 (workflow/docs/guides/results.rst names them).
+MEASUREMENTS = []
 
 
 # The report marks of a rendered figure's outputs (workflow/rules/renders.smk): here because

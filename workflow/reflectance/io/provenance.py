@@ -3,7 +3,7 @@
 ``results/provenance.yaml`` (rule ``provenance``) records the git commit of the checkout (and
 whether tracked files differed from it), the SHA-256 of config.yaml and of the configuration the
 workflow ran with, of every spectrum, the Python and package versions of the environment, and the
-SHA-256 of every output. Someone holding an archive of the results can check each file against it,
+SHA-256 of every output but a measurement (a timing, which differs from run to run: listed by path). Someone holding an archive of the results can check each file against it,
 and rebuild in the environment it names (``workflow/envs/constraints.txt`` pins the same versions).
 
 Beside each audit table, a smaller file of the same kind (:func:`write_metadata`) says what that
@@ -101,13 +101,18 @@ def _canonical_sha256(value):
 def provenance(outputs: Iterable[str | os.PathLike[str]], spectra: Iterable[str | os.PathLike[str]],
                config: Mapping[str, Any], config_file: str | None = "config.yaml",
                git: Mapping[str, str | bool | None] | None = None,
-               root: str | os.PathLike[str] = ".") -> dict[str, Any]:  # JSON: values of all kinds
+               root: str | os.PathLike[str] = ".",
+               measurements: Iterable[str | os.PathLike[str]] = ()
+               ) -> dict[str, Any]:  # JSON: values of all kinds
     """The manifest as a dict (see the module's description).
 
     Parameters
     ----------
     outputs, spectra : iterable of str
         Files (relative to ``root``) hashed under ``outputs`` and ``spectra``.
+    measurements : iterable of str
+        Outputs that differ from run to run (timings): listed by path under ``measurements``,
+        not hashed, so that the manifest of a rerun stays the same bytes.
     config : mapping
         The configuration the workflow ran with (Snakemake's ``config``: config.yaml, defaults
         and any ``--config``); hashed as canonical JSON.
@@ -132,6 +137,7 @@ def provenance(outputs: Iterable[str | os.PathLike[str]], spectra: Iterable[str 
         "packages": package_versions(),
         "spectra": files(spectra),
         "outputs": files(outputs),
+        "measurements": sorted(set(map(str, measurements))),
     }
 
 

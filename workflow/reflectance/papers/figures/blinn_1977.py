@@ -1,6 +1,7 @@
-"""Blinn 1977: the figures that render nothing (Figs. 1-6, D1/D2/D3 at equal beta), one
-declaration each (:class:`Figure`). Figs. 1 and 2-4 share ``fig1_4``, Figs. 5 and 6 share
-``fig5_6``: each declares only the keys it reads, so an edit of one reruns only that one."""
+"""Blinn 1977: the figures that render nothing (Figs. 1-6, D1/D2/D3 at equal beta, the cost of
+each term), one declaration each (:class:`Figure`). Figs. 1 and 2-4 share ``fig1_4``, Figs. 5
+and 6 share ``fig5_6``: each declares only the keys it reads, so an edit of one reruns only that
+one."""
 
 from __future__ import annotations
 
@@ -30,4 +31,14 @@ DEFINITIONS = {figure.RULE: figure for figure in (
     Figure("blinn77_distributions", _OUT, {"fig": f"{_B77}.distributions"},
            {"png": "distributions.png", "pdf": "distributions.pdf", "csv": "distributions.csv",
             "summary": "distributions_max_difference.csv"}),
+    # Blinn's "no increase in computation time": the counts (deterministic), then the times (a
+    # measurement, its own rule: the counts never wait for, nor change with, a timing)
+    Figure("blinn77_cost_counts", _OUT, {"fig": _keys("cost", "panel"),
+                                         "panels": f"{_B77}.fig7.panels"},
+           {"csv": "cost_counts.csv", "values": "cost_counts.values.rst"}),
+    Figure("blinn77_cost_timing", _OUT, {"fig": _keys("cost", "panel", "n_samples", "repeats",
+                                                      "seed", "verdict"),
+                                         "panels": f"{_B77}.fig7.panels"},
+           {"csv": "cost_timing.csv", "measurement": "cost_timing.yaml",
+            "values": "cost_timing.values.rst"}),
 )}
