@@ -32,6 +32,7 @@ rule ct82_fig6:
         runtime=10,
     params:
         **CT82_FIG6_PARAMS,
+        code=draw_digest("ct82_fig6"),
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -74,6 +75,7 @@ rule blinn77_fig7:
         runtime=15,
     params:
         **B77_FIG7_PARAMS,
+        code=draw_digest("blinn77_fig7"),
     script:
         "../scripts/blinn_1977_fig7.py"
 
