@@ -106,8 +106,9 @@ def draw_digest(name):
     Snakemake's code trigger watches the script alone, so the params trigger reruns the figure
     when its drawing changes. The file is read as bytes, never imported: the parse loads no
     drawing code (matplotlib, the renderer)."""
-    return _file_digest(os.path.join(workflow.basedir, "workflow", "reflectance", "papers",
-                                     "draw", f"{name}.py"))
+    return _file_digest(
+        os.path.join(workflow.basedir, "workflow", "reflectance", "papers", "draw", f"{name}.py")
+    )
 
 
 def figure_def(name):
