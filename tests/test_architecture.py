@@ -4,7 +4,8 @@ The folders are the design: data flows one way, from ``io`` up to ``papers``, ``
 command line. A module may import its own subpackage and the ones listed below it here; nothing
 imports upward or sideways, no module reaches for another module's underscore names, and the
 modules of a subpackage import one another without a cycle. The top-level modules each have
-their own list.
+their own list. The rendered figures' drawing, ``papers.draw``, is a place of its own above
+``papers``: the workflow's scripts import it, nothing in the library does.
 """
 
 import ast
@@ -29,7 +30,15 @@ ALLOWED = {
     # nothing of papers, and nothing but the CLI uses it
     "bench": {"render", "optics", "colour", "geometry", "io"},
     "papers": {"render", "audit", "optics", "colour", "geometry", "io"},
+    # the rendered figures' drawing (one module per figure, its script's body): the figure's
+    # definition (papers), the renderer, the tables and plots, and the scripts' params_dict;
+    # no place lists it, so nothing in the library imports it (the config check and the
+    # Snakefile's parse then load no matplotlib for it)
+    "papers.draw": {"papers", "render", "optics", "colour", "geometry", "io", "scripting"},
 }
+
+#: the place of reflectance.papers.draw, inside papers' folder
+DRAW = "papers.draw"
 
 #: top-level module -> the subpackages and top-level modules it may import ("__init__": the
 #: package itself, ``from reflectance import __version__``); reflectance.lazy, which imports
@@ -70,12 +79,17 @@ def imports(path):
 
 def where(path, package=PACKAGE):
     rel = path.relative_to(package)
+    if rel.parts[:2] == ("papers", "draw") and len(rel.parts) > 2:
+        return DRAW
     return rel.parts[0] if len(rel.parts) > 1 else rel.stem
 
 
-def place(module):
-    """The subpackage or top-level module an imported module (``reflectance...``) lives in."""
+def place(module, names=()):
+    """The subpackage or top-level module an imported module (``reflectance...``) lives in;
+    ``names``, those imported from it (``from reflectance.papers import draw``: papers.draw)."""
     parts = module.split(".")
+    if parts[1:3] == ["papers", "draw"] or (parts[1:] == ["papers"] and "draw" in names):
+        return DRAW
     return parts[1] if len(parts) > 1 else "__init__"
 
 
@@ -154,10 +168,10 @@ def allowed(home):
 @pytest.mark.parametrize("path", modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
 def test_imports_follow_the_one_way_flow(path):
     home = where(path)
-    for module, _ in imports(path):
+    for module, names in imports(path):
         if module == "reflectance.lazy":  # the public faces' loader imports nothing of ours
             continue
-        target = place(module)
+        target = place(module, names)
         assert target in ALLOWED or target in TOP_LEVEL, f"{path}: imports {module}"
         assert target in allowed(home), (
             f"{path.relative_to(PACKAGE)} ({home}) imports {module}: {home} may import only "
@@ -194,6 +208,24 @@ def test_the_checks_see_a_violation(tmp_path):
     assert "papers" not in ALLOWED["render"] and "render" not in ALLOWED["optics"]
     assert place("reflectance.cli") not in allowed("bench") and "config" not in allowed("cli")
     assert place("reflectance") == "__init__" and "__init__" in allowed("cli")
+    # the drawing: its own place, inside papers' folder, which papers may not import
+    assert where(PACKAGE / "papers" / "draw" / "ct82_fig8.py") == DRAW
+    assert where(PACKAGE / "papers" / "figures" / "ct82_fig8.py") == "papers"
+    for module, names in (("reflectance.papers.draw.ct82_fig8", ["run"]),
+                          ("reflectance.papers.draw", ["ct82_fig8"]),
+                          ("reflectance.papers", ["scenes", "draw"])):
+        assert place(module, names) == DRAW and DRAW not in allowed("papers"), module
+    assert place("reflectance.papers", ["scenes"]) == "papers"
+
+
+def test_nothing_in_the_library_imports_the_drawing():
+    """Only the workflow's scripts import reflectance.papers.draw: no place of the library
+    lists it (so test_imports_follow_the_one_way_flow refuses any import of it), and no module
+    outside it names it."""
+    assert [home for home in [*ALLOWED, *TOP_LEVEL] if home != DRAW and DRAW in allowed(home)] == []
+    outside = [path for path in modules() if where(path) != DRAW]
+    assert outside and not [path for path in outside
+                            if any(place(m, n) == DRAW for m, n in imports(path))]
 
 
 def test_the_checks_see_a_planted_cycle(tmp_path):

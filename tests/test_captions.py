@@ -22,6 +22,8 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 REPORT = ROOT / "workflow" / "report"
 SCRIPTS = ROOT / "workflow" / "scripts"
+#: the rendered figures' drawings, each called by its script (reflectance.papers.draw)
+DRAWINGS = ROOT / "workflow" / "reflectance" / "papers" / "draw"
 #: the four texts, beside the project (not part of it: skipped where they are not)
 PAPERS = ROOT.parent / "shared" / "papers"
 
@@ -63,6 +65,15 @@ def references(template):
 def scripts_named(template):
     """The scripts a caption names (each caption ends with its ``Code:``)."""
     return [SCRIPTS / f"{name}.py" for name in re.findall(r"workflow/scripts/(\w+)\.py", template)]
+
+
+def code_of(script):
+    """The files a script's code is in: the script and the drawing it calls, if any
+    (``from reflectance.papers.draw.<figure> import run``)."""
+    tree = ast.parse(script.read_text(), str(script))
+    return [script, *(DRAWINGS / f"{node.module.rsplit('.', 1)[1]}.py" for node in tree.body
+                      if isinstance(node, ast.ImportFrom)
+                      and (node.module or "").startswith("reflectance.papers.draw."))]
 
 
 def written_names(path):
@@ -125,11 +136,12 @@ def test_the_printed_decimals_are_printed_in_the_texts():
 
 
 def test_every_substitution_a_caption_uses_is_written_by_its_script():
-    """Each |name| of a caption is a key its script writes to the job's values file, which the
-    caption includes first; and each key a script writes is used by a caption naming it."""
+    """Each |name| of a caption is a key its script (or the drawing the script calls) writes to
+    the job's values file, which the caption includes first; and each key a script or drawing
+    writes is used by a caption naming it."""
     used_by_script = {}
     for name, text in captions().items():
-        scripts = scripts_named(text)
+        scripts = [code for script in scripts_named(text) for code in code_of(script)]
         for script in scripts:
             used_by_script.setdefault(script, set()).update(references(text))
         if not references(text):
@@ -138,7 +150,7 @@ def test_every_substitution_a_caption_uses_is_written_by_its_script():
         assert text.startswith(INCLUDE + "\n\n"), f"{name}: the values file is included first"
         written = set().union(*(written_names(s) for s in scripts)) if scripts else set()
         assert references(text) - written == set(), (name, scripts)
-    for script in sorted(SCRIPTS.glob("*.py")):
+    for script in sorted(SCRIPTS.glob("*.py")) + sorted(DRAWINGS.glob("*.py")):
         if "write_caption_values" in script.read_text():
             assert written_names(script) - used_by_script.get(script, set()) == set(), script
 
@@ -151,6 +163,8 @@ def test_the_checks_see_a_violation(tmp_path):
     script.write_text("values = {'a': '1'}\nvalues.update({'b': '2', **{'c': '3'}})\n"
                       "write_caption_values(out.values, values)\n")
     assert written_names(script) == {"a", "b", "c"}
+    script.write_text("from reflectance.papers.draw.ct82_fig8 import run\nrun_job(snakemake, run)\n")
+    assert written_names(script) == set() and code_of(script) == [script, DRAWINGS / "ct82_fig8.py"]
     assert references(f"{INCLUDE}\n\n|a| and |d|, ``|H|``, |x - y|") == {"a", "d"}
     script.write_text("values = {k: '1' for k in 'ab'}\nwrite_caption_values(out.values, values)\n")
     with pytest.raises(AssertionError, match="not a dict literal"):

@@ -521,12 +521,13 @@ def test_fig7_default_variants_are_out_of_the_papers_grid(fig7_published, tmp_pa
     the paper's twelve, every variant a later row."""
     from PIL import Image
 
-    import reflectance.render.composite as composite
+    # the figure's drawing (its script's call) lays out the grid with the image_grid it imported
+    import reflectance.papers.draw.ct82_fig7 as drawing
 
     with Image.open(fig7_published.png) as grid, Image.open(fig7_published.pngs[0]) as vase:
         assert round(grid.width / (1.04 * vase.width)) == 6, (grid.size, vase.size)
-    grids, original = [], composite.image_grid
-    monkeypatch.setattr(composite, "image_grid",
+    grids, original = [], drawing.image_grid
+    monkeypatch.setattr(drawing, "image_grid",
                         lambda cells, *a, **k: grids.append(cells) or original(cells, *a, **k))
     run_fig7(tmp_path, "published", (24, 32, 1))
     rows = {}

@@ -7,12 +7,12 @@ import errno
 import logging
 import sys
 import traceback
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
-__all__ = ["script_log", "peak_memory", "params_dict", "command_line_job",
+__all__ = ["script_log", "run_job", "peak_memory", "params_dict", "command_line_job",
            "write_audit_metadata"]
 
 
@@ -90,6 +90,26 @@ def script_log(snakemake: Any) -> Iterator[logging.Logger]:
         finally:
             sys.stdout, sys.stderr = old_out, old_err
             logger.removeHandler(handler)
+
+
+def run_job(snakemake: Any, run: Callable[[Any, logging.Logger], None]) -> None:
+    """Run a rule's job as ``run(snakemake, log)``, its output and any traceback in its log
+    (:func:`script_log`).
+
+    A rendered figure's script is this one call with its drawing,
+    ``reflectance.papers.draw.<figure>.run``: the drawing lives in the library, where it is
+    imported by name (never by the config check or the Snakefile's parse), and its rule's params
+    carry the SHA-256 of its file, so that an edit of it reruns that figure (Snakemake's code
+    trigger watches the script alone).
+
+    Examples
+    --------
+    >>> from types import SimpleNamespace
+    >>> run_job(SimpleNamespace(log=[], rule="demo"), lambda job, log: print(job.rule, log.name))
+    demo reflectance.demo
+    """
+    with script_log(snakemake) as log:
+        run(snakemake, log)
 
 
 def params_dict(params: Any) -> dict[str, Any]:

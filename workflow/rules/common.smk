@@ -103,6 +103,17 @@ def figure_rule(name):
     return definition, params, definition.outputs(params)
 
 
+def draw_digest(name):
+    """sha256 of the rendered figure ``name``'s drawing, reflectance/papers/draw/<name>.py of this
+    checkout, for its rule's params (``code=``): its script is one call into that module, and
+    Snakemake's code trigger watches the script alone, so the params trigger reruns the figure
+    when its drawing changes. The file is read as bytes, never imported: the parse loads no
+    drawing code (matplotlib, the renderer)."""
+    return _file_digest(
+        os.path.join(workflow.basedir, "workflow", "reflectance", "papers", "draw", f"{name}.py")
+    )
+
+
 def figure_def(name):
     """The figure ``name`` that renders nothing (reflectance.papers.figures.ANALYTIC), for its
     rule: ``.params`` (its declared keys' values: the rule's params, exactly), ``.outputs``

@@ -1,7 +1,9 @@
 # Rendered figures (reflectance.render.pipeline). Each is defined once, in its module of
 # reflectance.papers.figures: the config keys it reads (the rule's params, exactly: the params
 # trigger reruns it for those keys and no other), its scenes (what the config check validates and
-# the job renders) and its outputs. The rules add the report marks, resources and the script.
+# the job renders) and its outputs. The rules add the report marks, resources and the script,
+# which is one call of the figure's drawing, reflectance.papers.draw.<rule>; the param code, that
+# module's SHA-256 (draw_digest), reruns the figure when its drawing changes.
 # Their resources follow the measured peaks and times in workflow/docs/guides/cluster.rst.
 
 # Cook & Torrance 1982, Fig. 6, the two vases: the default figure (fig6.published) and one figure
@@ -30,6 +32,7 @@ rule ct82_fig6:
         runtime=10,
     params:
         **CT82_FIG6_PARAMS,
+        code=draw_digest("ct82_fig6"),
     script:
         "../scripts/cook_torrance_1982_fig6.py"
 
@@ -72,6 +75,7 @@ rule blinn77_fig7:
         runtime=15,
     params:
         **B77_FIG7_PARAMS,
+        code=draw_digest("blinn77_fig7"),
     script:
         "../scripts/blinn_1977_fig7.py"
 
@@ -106,6 +110,7 @@ rule blinn77_fig7_sweep:
         runtime=10,
     params:
         **B77_SWEEP_PARAMS,
+        code=draw_digest("blinn77_fig7_sweep"),
     script:
         "../scripts/blinn_1977_fig7_sweep.py"
 
@@ -138,6 +143,7 @@ rule ct82_fig7:
         runtime=10,
     params:
         **CT82_FIG7_PARAMS,
+        code=draw_digest("ct82_fig7"),
     script:
         "../scripts/cook_torrance_1982_fig7.py"
 
@@ -174,6 +180,7 @@ rule ct82_fig8:
         runtime=10,
     params:
         **CT82_FIG8_PARAMS,
+        code=draw_digest("ct82_fig8"),
     script:
         "../scripts/cook_torrance_1982_fig8.py"
 
@@ -207,6 +214,7 @@ rule blinn77_fig8:
         runtime=10,
     params:
         **B77_FIG8_PARAMS,
+        code=draw_digest("blinn77_fig8"),
     script:
         "../scripts/blinn_1977_fig8.py"
 
@@ -248,6 +256,7 @@ rule article_spheres:
         runtime=10,
     params:
         **SPHERES_PARAMS,
+        code=draw_digest("article_spheres"),
     script:
         "../scripts/article_spheres.py"
 

@@ -1,0 +1,193 @@
+"""Blinn 1977, Fig. 7, drawn: the job of rule ``blinn77_fig7``, called by its script,
+``workflow/scripts/blinn_1977_fig7.py`` (which says what the figure shows). What the job reads,
+renders and writes is declared in :mod:`reflectance.papers.figures.blinn77_fig7`."""
+
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from reflectance.colour.display import display_tag, encode
+from reflectance.io.captions import write_caption_values
+from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
+from reflectance.render.pipeline import render, render_to_files
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.figures import blinn77_fig7 as definition
+from reflectance.papers.scenes import (highlight_crossover_Blinn1977, materials_Blinn1977,
+                                       mirror_highlight_Blinn1977)
+from reflectance.scripting import params_dict
+from reflectance.io.tables import write_csv
+
+__all__ = ["run"]
+
+TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
+          "b": "Figure 7b  Simulation of magnesium oxide surface"}
+MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}  # definition.MODELS, titled
+
+
+def run(snakemake: Any, log: logging.Logger) -> None:
+    """Render every panel, model, light and reading of Phong's p_s from one trace per camera and
+    light, tabulate their differences, draw one figure per reading and light and write the
+    caption's values: ``snakemake`` is the rule's job (its params and output), ``log`` its log."""
+    params = params_dict(snakemake.params)
+    fig_cfg, out = params["fig"], snakemake.output
+    folder = str(Path(out.csv).parent)  # the rule's outputs' folder
+    stems, lights = definition.stems(params, folder), fig_cfg["lights"]
+    closeup = definition.rim_light(fig_cfg)
+    images, Y, rows, rims = {}, {}, [], {}
+    # the renders share the object: one trace per camera and light (keep_trace)
+    for item in definition.scenes(params, folder=folder):  # the scenes the check validated
+        key = item.tags["key"]
+        scene = scene_from_dict(item.document, source=f"config.yaml figures.blinn_1977.fig7 {key}")
+        if item.written:
+            stem = stems[key]
+            result = render_to_files(scene, item.file, f"{stem}.exr", f"{stem}.png",
+                                     keep_trace=True)
+            images[key], Y[key] = result.display[0], result.XYZ[..., 1]
+            log.info("%s: max i = %.4f; timings %s", key, Y[key].max(), result.timings)
+        else:  # the highlight close up (fig7.rim_closeup), for the inset
+            rims[key] = render(scene, keep_trace=True).XYZ[..., 1]
+            log.info("%s close up: max i = %.4f", key, rims[key].max())
+    for panel, p in fig_cfg["panels"].items():
+        for reading in fig_cfg["phong_specular_readings"]:
+            m = materials_Blinn1977(p["p_s"], p["p_d"], p["c3"], p["n"], reading)
+            for light in lights:
+                ph = Y[definition.render_key(panel, "phong", light, reading)]
+                ts = Y[definition.render_key(panel, "torrance_sparrow", light, reading)]
+                diff, lit = np.abs(ph - ts), (ph > 0) | (ts > 0)
+                rows.append({"panel": panel, "label": p["label"], "phong_specular": reading,
+                             "light": light, **lights[light], "p_a": fig_cfg["p_a"],
+                             "p_s": p["p_s"], "p_d": p["p_d"], "n": p["n"], "c3": p["c3"],
+                             "beta_deg": m["beta_deg"], "c1": m["c1"], "phong_s": m["phong_s"],
+                             "phong_max": ph.max(), "torrance_sparrow_max": ts.max(),
+                             "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean(),
+                             "mirror_highlight": float(mirror_highlight_Blinn1977(
+                                 p["p_s"], p["n"], lights[light]["angle_deg"]))})
+    table = pd.DataFrame(rows)
+    # Blinn: MgO "even more [specular] than the aluminum" edge lit: from which light angle on
+    crossover = highlight_crossover_Blinn1977(fig_cfg["panels"]["a"], fig_cfg["panels"]["b"])
+    table["crossover_deg"] = np.nan if crossover is None else crossover
+    log.info("mirror highlights of MgO and aluminium cross at %s degrees", crossover)
+    table.pipe(write_csv, out.csv, float_format="%.6g")
+
+    # Near grazing light (beyond the crossover) the highlight is a rim a few pixels thick (N.E =
+    # cos(angle/2) at the mirror point) and brighter than i = 1: each image under the close-up's
+    # light gets an inset of the rim, magnified, on one scale for all (white = the brightest i).
+    zoom = fig_cfg["camera"]["fov_deg"] / fig_cfg["rim_closeup"]["fov_deg"]
+    rim_scale = max(rim.max() for rim in rims.values())  # one grey scale for every close-up
+    front = definition.front_light(fig_cfg)
+
+    # Blinn's layout, drawn at the print width (PRINT_WIDTH_IN, its text at the figures' sizes):
+    # per panel Phong and Torrance-Sparrow under the figure's light side by side, under them one
+    # front-lit image ("Both Models Essentially Same"; Torrance-Sparrow, the difference printed),
+    # pixel for pixel at DPI; the light-angle plot at the bottom.
+    T = TEXT_SIZE
+    DPI = 230
+    h, wd = (n / DPI for n in next(iter(images.values())).shape[:2])  # inches
+    gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
+    W = 4 * wd + 2 * gap + block + 0.12
+    # the figure's two-line title and each panel's three-line heading; column names; the line
+    # under each row (inches)
+    top, heads, foot = 1.12, 0.28, 0.3
+    plot_h, plot_foot = 1.9, 0.5
+    H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
+    sweep = np.linspace(90.0, 178.0, 881)
+
+    def image(ax, key, text):
+        ax.imshow(images[key], interpolation="nearest")
+        ax.set_xticks([]), ax.set_yticks([])
+        ax.text(0.03, 0.95, text, transform=ax.transAxes, color="white", fontsize=T["annotation"],
+                va="top")
+
+    for (reading, light), png in definition.figures(fig_cfg, folder).items():
+        fig = new_figure(W, H)
+        for k, panel in enumerate(("a", "b")):
+            x0 = 0.06 + k * (2 * wd + gap + block)
+            y0 = H - top - heads - h  # the bottom of the edge-lit row
+            for i, model in enumerate(MODELS):
+                key = definition.render_key(panel, model, light, reading)
+                ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
+                image(ax, key, f"{light} lit, {lights[light]['angle_deg']:g}\u00b0")
+                ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
+                if light == closeup:
+                    grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
+                    rh, rw = rims[key].shape
+                    iw = 0.9  # the close-up across 90 % of the image, its aspect kept
+                    inset = ax.inset_axes((0.05, 0.04, iw, iw * rh / rw * wd / h))
+                    inset.imshow(grey, cmap="gray", vmin=0, vmax=1, interpolation="antialiased")
+                    inset.set_xticks([]), inset.set_yticks([])
+                    for side in inset.spines.values():
+                        side.set(color="#e69f00", lw=0.8, visible=True)
+                    inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}", transform=inset.transAxes,
+                               color="#e69f00", fontsize=T["annotation"], va="bottom")
+            rows_of = table[(table.panel == panel) & (table.phong_specular == reading)]
+            row = rows_of[rows_of.light == light].iloc[0]
+            fig.text((x0 + wd + gap / 2) / W, (y0 - 0.04) / H,
+                     f"max i: Phong {row.phong_max:.2f}, Torrance-Sparrow "
+                     f"{row.torrance_sparrow_max:.2f}", ha="center", va="top",
+                     fontsize=T["annotation"])
+            yf = y0 - foot - h  # the front-lit image, centred under the pair
+            ax = fig.add_axes(((x0 + wd / 2 + gap / 2) / W, yf / H, wd / W, h / H))
+            image(ax, definition.render_key(panel, "torrance_sparrow", front, reading),
+                  f"{front} lit, {lights[front]['angle_deg']:g}\u00b0")
+            both = rows_of[rows_of.light == front].iloc[0]
+            fig.text((x0 + wd + gap / 2) / W, (yf - 0.04) / H,
+                     f"both models: max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
+                     ha="center", va="top", fontsize=T["annotation"])
+            p = fig_cfg["panels"][panel]
+            fig.text((x0 + wd + gap / 2) / W, (H - top + 0.02) / H,
+                     f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
+                     f"c3 = {p['c3']:g}\nPhong c1 = {row.c1:.2f}, its p_s = {row.phong_s:.4g}",
+                     ha="center", va="bottom", fontsize=T["annotation"], linespacing=1.3)
+        ax = fig.add_axes((0.75 / W, plot_foot / H, 3.3 / W, plot_h / H))
+        for panel, colour in (("a", "#0072b2"), ("b", "#d55e00")):
+            p = fig_cfg["panels"][panel]
+            ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep), color=colour,
+                    label=f"{p['label']}\n(p_s = {p['p_s']:g}, n = {p['n']:g})")
+            at = table[(table.panel == panel) & (table.light == light)].iloc[0]
+            ax.plot(lights[light]["angle_deg"], at.mirror_highlight, "o", mfc="none",
+                    color=colour, ms=6)
+        ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
+        ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
+                fontsize=T["annotation"], color="0.3", transform=ax.get_xaxis_transform())
+        ax.set(yscale="log", xlim=(90, 178), xticks=np.arange(90, 179, 15),
+               xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E)")
+        ax.grid(True, which="major")
+        ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
+        ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nthis figure's "
+                f"{light} light\n(circles)", transform=ax.transAxes, va="bottom",
+                fontsize=T["annotation"], linespacing=1.3)
+        verdict = ("MgO brighter than aluminium" if lights[light]["angle_deg"] > crossover
+                   else "MgO dimmer than aluminium")
+        fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 edge lit at {lights[light]['angle_deg']:g}\u00b0 "
+                     f"from the eye ({verdict}); Phong's p_s {reading.replace('_', ' ')}\n"
+                     f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
+                     + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else ""),
+                     y=1 - 0.04 / H, va="top", linespacing=1.3)
+        savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
+
+    # the caption's numbers (workflow/report/blinn77_fig7.rst), from the table as written
+    written = pd.read_csv(out.csv).set_index(["panel", "phong_specular", "light"])
+    at = {(panel, light): written.loc[(panel, "matched", light)]
+          for panel in ("a", "b") for light in lights}
+
+    def ratio(light):  # MgO's mirror-point highlight over aluminium's, under ``light``
+        return f"{at['b', light].mirror_highlight / at['a', light].mirror_highlight:.2f}"
+
+    # the lights the caption names (config.yaml's fig7.lights): the default figure's, the
+    # variant's and the front light; each name written out, so that a reader finds it
+    values = {"b_F0": f"{at['b', front].phong_s / at['b', front].p_s:.2f}",
+              "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
+              "tangential_ratio": ratio("tangential"), "edge_ratio": ratio("edge"),
+              "front_ratio": ratio(front),
+              "a_ts_tangential": f"{at['a', 'tangential'].torrance_sparrow_max:.2f}",
+              "b_ts_tangential": f"{at['b', 'tangential'].torrance_sparrow_max:.2f}",
+              "a_ts_edge": f"{at['a', 'edge'].torrance_sparrow_max:.2f}",
+              "b_ts_edge": f"{at['b', 'edge'].torrance_sparrow_max:.2f}",
+              "phong_edge": f"{written.xs('edge', level='light').phong_max.max():.2f}",
+              "difference_front": f"{max(at[p, front].max_abs_difference for p in 'ab'):.3f}"}
+    write_caption_values(out.values, values)

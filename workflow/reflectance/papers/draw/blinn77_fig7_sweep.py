@@ -1,0 +1,141 @@
+"""Blinn 1977, Fig. 7 as a light sweep, drawn: the job of rule ``blinn77_fig7_sweep``, called by
+its script, ``workflow/scripts/blinn_1977_fig7_sweep.py`` (which says what the figure shows).
+What the job reads, renders and writes is declared in
+:mod:`reflectance.papers.figures.blinn77_fig7_sweep`."""
+
+from __future__ import annotations
+
+import dataclasses
+import logging
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from PIL import Image, ImageDraw, ImageFont
+
+from reflectance.colour.display import display_tag
+from reflectance.io.atomic import atomic_write
+from reflectance.io.captions import write_caption_values
+from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
+from reflectance.render.integrator import shade_samples
+from reflectance.render.pipeline import RenderResult, display_image
+from reflectance.render.scene import scene_from_dict
+from reflectance.papers.figures import blinn77_fig7_sweep as definition
+from reflectance.papers.scenes import (highlight_crossover_Blinn1977, mirror_highlight_Blinn1977,
+                                       sweep_camera_Blinn1977)
+from reflectance.scripting import params_dict
+from reflectance.render.shadows import shadow_masks
+from reflectance.render.visibility import visibility
+from reflectance.io.tables import write_csv
+
+MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
+
+__all__ = ["run"]
+
+
+def run(snakemake: Any, log: logging.Logger) -> None:
+    """Shade every frame of the light sweep from one trace, write the GIF, the table and the
+    contact sheet and the caption's value: ``snakemake`` is the rule's job (its params and
+    output), ``log`` its log."""
+    params = params_dict(snakemake.params)
+    cfg, fig7, out = params["sweep"], params["fig7"], snakemake.output
+    panels = [fig7["panels"][key] for key in cfg["panels"]]
+    cam = sweep_camera_Blinn1977(fig7, cfg)
+    angles = np.linspace(*cfg["angles_deg"], cfg["n_frames"])
+    scenes = {}
+    for item in definition.scenes(params):  # the scenes the config check validated
+        scenes[item.tags["panel"], item.tags["model"]] = scene_from_dict(
+            item.document, source=f"{item.source} (panel {item.tags['panel']}, "
+                                  f"{item.tags['model']})")
+    first = next(iter(scenes.values()))
+    samples = visibility(first.mesh, first.camera)  # the same object and camera in every frame
+    shadowed = shadow_masks(samples, first.mesh, [light.source for light in first.lights])
+    crossover = (highlight_crossover_Blinn1977(fig7["panels"]["a"], fig7["panels"]["b"])
+                 if len(panels) == 2 else None)
+    font = ImageFont.load_default(size=13)
+    frames, rows, greys = [], [], {}  # greys: the frame's images without text, for the contact sheet
+    h, w = cam["height"], cam["width"]
+    label_w, head, foot, gap = 96, 20, 22, 4
+    for f, angle in enumerate(angles):
+        canvas = Image.new("L", (label_w + 2 * w + gap, head + len(panels) * (h + gap) + foot), 0)
+        draw = ImageDraw.Draw(canvas)
+        for k, name in enumerate(MODELS.values()):
+            draw.text((label_w + k * (w + gap) + w / 2, 3), name, fill=255, font=font, anchor="ma")
+        for r, (key, p) in enumerate(zip(cfg["panels"], panels)):
+            Y = {}
+            for k, model in enumerate(MODELS):
+                scene = scenes[key, model]
+                one = dataclasses.replace(scene, lights=(scene.lights[f],))
+                XYZ = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))
+                rgb = display_image(RenderResult(XYZ, None, {}, {}, one))[0]
+                image = np.round(255 * rgb[..., 1]).astype(np.uint8)  # grey: R = G = B
+                canvas.paste(Image.fromarray(image), (label_w + k * (w + gap), head + r * (h + gap)))
+                greys[f, key, model] = image
+                Y[model] = XYZ[..., 1]
+            draw.text((label_w - 6, head + r * (h + gap) + h / 2), p["label"].replace(" ", "\n", 1),
+                      fill=255, font=font, anchor="rm", align="right")
+            diff, lit = np.abs(Y["phong"] - Y["torrance_sparrow"]), Y["phong"] > 0
+            rows.append({"frame": f, "panel": key, "label": p["label"], "light_angle_deg": angle,
+                         "phong_max": Y["phong"].max(),
+                         "torrance_sparrow_max": Y["torrance_sparrow"].max(),
+                         "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean(),
+                         # Blinn's p_s D3 G F / (N.E) where N = H (D3 = G = 1): the brightest highlight
+                         "mirror_highlight": float(mirror_highlight_Blinn1977(p["p_s"], p["n"], angle))})
+        bright = "" if crossover is None else (
+            "  MgO highlight > aluminium's" if angle > crossover else "")
+        draw.text((label_w + w + gap / 2, canvas.size[1] - 3),
+                  f"light {angle:5.1f}\u00b0 from the eye{bright}", fill=230, font=font, anchor="md")
+        frames.append(canvas)
+    with atomic_write(out.gif) as tmp:
+        frames[0].save(tmp, format="GIF", save_all=True, append_images=frames[1:],
+                       duration=cfg["frame_ms"], loop=0, optimize=False)
+    table = pd.DataFrame(rows)
+    if crossover is not None:  # the MgO/aluminium ratio of the mirror-point highlights
+        ratio = (table[table.panel == "b"].mirror_highlight.to_numpy()
+                 / table[table.panel == "a"].mirror_highlight.to_numpy())
+        table["mirror_highlight_ratio_b_to_a"] = np.repeat(ratio, len(panels))
+        table["crossover_deg"] = crossover
+        log.info("MgO/aluminium mirror highlights cross at %.4f degrees from the eye", crossover)
+    table.pipe(write_csv, out.csv, float_format="%.6g")
+    log.info("%d frames of %s; %s", len(frames), frames[0].size, table.to_string())
+
+    # The contact sheet drawn at the print width (its text at the figures' sizes, not the GIF's
+    # pixel font): a block of frames per light angle, the renders pixel for pixel at DPI.
+    picks = np.unique(np.round(np.linspace(0, len(frames) - 1, cfg["contact_frames"])).astype(int))
+    cols, T = int(np.ceil(len(picks) / 2)), TEXT_SIZE
+    label_in, gap, block_gap, top, head = 0.75, 0.03, 0.12, 0.5, 0.42  # inches
+    DPI = 2 * w * cols / (PRINT_WIDTH_IN - label_in - (cols - 1) * block_gap - cols * gap)
+    wi, hi = w / DPI, h / DPI
+    bw = 2 * wi + gap  # a block: Phong and Torrance-Sparrow side by side
+    W = label_in + cols * bw + (cols - 1) * block_gap
+    H = top + 2 * (head + len(panels) * (hi + gap)) + 0.05
+    fig = new_figure(W, H, facecolor="black")
+    for n, f in enumerate(picks):
+        c, r = n % cols, n // cols
+        x0, y_top = label_in + c * (bw + block_gap), H - top - r * (head + len(panels) * (hi + gap))
+        past = crossover is not None and angles[f] > crossover
+        fig.text((x0 + bw / 2) / W, (y_top - 0.02) / H, f"light {angles[f]:.0f}\u00b0"
+                 + (": MgO > Al" if past else ""), ha="center", va="top", color="white",
+                 fontsize=T["symbol"])
+        for k, (model, name) in enumerate(MODELS.items()):
+            fig.text((x0 + k * (wi + gap) + wi / 2) / W, (y_top - head + 0.03) / H, name,
+                     ha="center", va="bottom", color="0.85", fontsize=T["annotation"])
+            for j, key in enumerate(cfg["panels"]):
+                y = y_top - head - (j + 1) * (hi + gap) + gap
+                ax = fig.add_axes(((x0 + k * (wi + gap)) / W, y / H, wi / W, hi / H))
+                ax.imshow(greys[f, key, model], cmap="gray", vmin=0, vmax=255,
+                          interpolation="nearest")
+                ax.set_axis_off()
+                if c == 0 and k == 0:
+                    fig.text((label_in - 0.06) / W, (y + hi / 2) / H,
+                             panels[j]["label"].replace(" ", "\n", 1), ha="right", va="center",
+                             color="white", fontsize=T["annotation"])
+    cross = "" if crossover is None else (f";\nMgO's highlight passes aluminium's beyond "
+                                          f"{crossover:.1f}\u00b0 from the eye")
+    fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')})"
+                 f"{cross}", y=1 - 0.04 / H, va="top", color="white", linespacing=1.3)
+    savefig(fig, out.contact, dpi=DPI, tight=False, tag=display_tag(first.display.space))
+
+    # the caption's number (workflow/report/blinn77_fig7_sweep.rst), from the table as written
+    written = pd.read_csv(out.csv)
+    write_caption_values(out.values, {"crossover": f"{written.crossover_deg.iloc[0]:.1f}"})
