@@ -172,7 +172,9 @@ with script_log(snakemake) as log:
                    else "MgO dimmer than aluminium")
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 edge lit at {lights[light]['angle_deg']:g}\u00b0 "
                      f"from the eye ({verdict}); Phong's p_s {reading.replace('_', ' ')}\n"
-                     f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
+                     + (f"{fig_cfg['grazing']['label']}; " if light == grazing
+                        else f"variant: {fig_cfg['object']['type']}; " if grazing in lights else "")
+                     + f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
                      + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else "")
                      + (f"; edge lit: white = i {white:.1f}" if light == grazing else ""),
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
@@ -200,12 +202,14 @@ with script_log(snakemake) as log:
               "difference_front": f"{max(at[p, front].max_abs_difference for p in 'ab'):.3f}"}
     if grazing in lights:  # the default figure: the grazing view's renders
         ts = {p: at[p, grazing].torrance_sparrow_max for p in "ab"}
-        values.update({f"{p}_ts_grazing": f"{ts[p]:.2f}" for p in "ab"})
-        values.update({f"{p}_ts_grazing_over_mirror": f"{ts[p] / at[p, grazing].mirror_highlight:.2f}"
-                       for p in "ab"})
-        values.update(grazing_ratio=f"{ts['b'] / ts['a']:.2f}",
-                      grazing_verdict="holds" if ts["b"] > ts["a"] else "does not hold",
-                      grazing_white=f"{white:.1f}",
-                      phong_grazing=f"{max(at[p, grazing].phong_max for p in 'ab'):.2f}",
-                      difference_grazing_front=f"{max(at[p, definition.GRAZING + 'front'].max_abs_difference for p in 'ab'):.3f}")
+        over = {p: ts[p] / at[p, grazing].mirror_highlight for p in "ab"}
+        front_difference = max(at[p, definition.GRAZING + "front"].max_abs_difference for p in "ab")
+        values.update({"a_ts_grazing": f"{ts['a']:.2f}", "b_ts_grazing": f"{ts['b']:.2f}",
+                       "a_ts_grazing_over_mirror": f"{over['a']:.2f}",
+                       "b_ts_grazing_over_mirror": f"{over['b']:.2f}",
+                       "grazing_ratio": f"{ts['b'] / ts['a']:.2f}",
+                       "grazing_verdict": "holds" if ts["b"] > ts["a"] else "does not hold",
+                       "grazing_white": f"{white:.1f}",
+                       "phong_grazing": f"{max(at[p, grazing].phong_max for p in 'ab'):.2f}",
+                       "difference_grazing_front": f"{front_difference:.3f}"})
     write_caption_values(out.values, values)

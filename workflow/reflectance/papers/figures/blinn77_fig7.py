@@ -16,7 +16,7 @@ RULE = "blinn77_fig7"
 OUT = "results/blinn_1977"
 PARAMS = {"fig": "figures.blinn_1977.fig7", "wavelengths": "wavelengths"}
 MODELS = ("phong", "torrance_sparrow")
-GRAZING = "grazing_"  # the prefix of the grazing view's render lights (config light names have no _)
+GRAZING = "grazing_"  # the grazing view's render lights' prefix (config light names have no _)
 
 
 def spectra(params):
