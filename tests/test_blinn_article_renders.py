@@ -111,6 +111,7 @@ def test_matched_phong_specular_is_p_s_times_normal_fresnel():
 def _fig7_config():
     fig = copy.deepcopy(B77["fig7"])
     fig["camera"].update(width=192, height=128, supersample=1)
+    fig["grazing"]["camera"].update(width=192, height=128, supersample=1)
     # the close-up inset at a quarter of its size (the same aspect and field of view): only the
     # PNG shows it; test_fig7_rim_closeup_shows_the_edge_lit_highlight checks it at full size
     fig["rim_closeup"].update(width=160, height=48, supersample=1)
@@ -123,7 +124,7 @@ def fig7(tmp_path_factory):
     fig = _fig7_config()
     readings = fig["phong_specular_readings"]
     stems = {key: str(tmp / f"fig7{key}")
-             for p in "ab" for light in fig["lights"]
+             for p in "ab" for light in [*fig["lights"], "grazing_edge", "grazing_front"]
              for key in [f"{p}_torrance_sparrow_{light}"] + [f"{p}_phong_{light}_{r}" for r in readings]}
     output = {"figures": [str(tmp / f"fig7_{r}{s}.png") for r in readings for s in ("", "_edge")],
               "csv": str(tmp / "fig7.csv"),
@@ -164,7 +165,7 @@ def test_fig7_front_lit_models_agree_and_edge_lit_differ(fig7):
 
 
 def test_fig7_edge_highlight_reads_at_full_view_and_the_tangential_one_does_not(fig7):
-    """At 172 degrees (Blinn's "almost tangentially", the default figure, with close-ups) the
+    """On the torus at 172 degrees (Blinn's "almost tangentially", a variant, with close-ups) the
     Torrance-Sparrow highlight is a rim of a few dozen pixels in ~50,000; at the variant's edge
     light it is a band: over 1.5 % of the object brighter than i = 0.5 in each material, against
     under 0.3 % at the tangential angle. The object's pixels: those the front light reaches (i > p_a
@@ -176,7 +177,67 @@ def test_fig7_edge_highlight_reads_at_full_view_and_the_tangential_one_does_not(
                  for light in ("edge", "tangential")}
         assert share["edge"] > 0.015 and share["tangential"] < 0.003, (p, share)
     for r in fig["phong_specular_readings"]:  # Blinn's layout, once per light but the front one
-        assert (tmp / f"fig7_{r}.png").is_file() and (tmp / f"fig7_{r}_edge.png").is_file()
+        for suffix in ("", "_tangential", "_edge"):
+            assert (tmp / f"fig7_{r}{suffix}.png").is_file(), (r, suffix)
+
+
+def _srgb_8bit(linear):
+    """IEC 61966-2-1 encoding of linear values in [0, 1], as 8-bit codes (written out here)."""
+    v = np.clip(linear, 0.0, 1.0)
+    return np.round(255 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055))
+
+
+def test_fig7_grazing_view_puts_h_on_the_top_face():
+    """The default figure's eye and light: 172 degrees apart, their bisector H the bar's top-face
+    normal (+y at its middle), each 4 degrees above the face (Blinn's paper held edge on)."""
+    g = B77["fig7"]["grazing"]
+    E = np.subtract(g["camera"]["position"], g["camera"]["look_at"])
+    E /= np.linalg.norm(E)
+    up = np.asarray(g["camera"]["up"], float) - np.dot(g["camera"]["up"], E) * E
+    up /= np.linalg.norm(up)
+    a = np.radians(g["light"]["angle_deg"])
+    assert g["light"]["azimuth_deg"] == 90  # in the plane of E and the image's up
+    L = np.cos(a) * E + np.sin(a) * up
+    H = (E + L) / np.linalg.norm(E + L)
+    np.testing.assert_allclose(H, [0.0, 1.0, 0.0], atol=1e-6)
+    assert np.degrees(np.arcsin(E[1])) == pytest.approx(4.0, abs=1e-4)
+    assert np.degrees(np.arcsin(L[1])) == pytest.approx(4.0, abs=1e-4)
+    radii = g["object"]["radii"]
+    assert radii[2] > 5 * radii[0]  # long along the view: the top face reads at sin 4 deg
+
+
+def test_fig7_grazing_edge_lit_highlight_reads_at_full_view(fig7):
+    """The default figure's four edge-lit images at their shared exposure (white = the brightest
+    Torrance-Sparrow i, the knee of fig7.grazing; encoded here by the formulas): the
+    Torrance-Sparrow highlight covers over a third of each object at mid-grey or brighter, Phong's
+    none of it; MgO's highlight is brighter than aluminium's by Blinn's p_s F ratio at
+    E.H = cos 86 deg (Fresnel's sin/tan form, "even more so than the aluminum"), and over twice as
+    much of the object is at 192/255 or brighter."""
+    fig, Y, _, _ = fig7
+    k = fig["grazing"]["highlight_knee"]
+    ts = {p: Y[f"{p}_torrance_sparrow_grazing_edge"] for p in "ab"}
+    white = max(y.max() for y in ts.values())
+
+    def codes(i):  # Y / white, compressed above the knee: k + (1 - k) tanh((v - k) / (1 - k))
+        v = i / white
+        return _srgb_8bit(np.where(v > k, k + (1 - k) * np.tanh((v - k) / (1 - k)), v))
+
+    near_white = {}
+    for p in "ab":
+        obj = Y[f"{p}_torrance_sparrow_grazing_front"] > 0  # p_a > 0 on every object pixel
+        assert obj.mean() > 0.25, p  # the object fills the frame
+        lit = (codes(ts[p])[obj] >= 128).mean()
+        for r in fig["phong_specular_readings"]:
+            assert (codes(Y[f"{p}_phong_grazing_edge_{r}"])[obj] >= 128).mean() == 0, (p, r)
+        assert lit > 1 / 3, (p, lit)
+        near_white[p] = (codes(ts[p])[obj] >= 192).mean()
+    assert near_white["b"] > 2 * near_white["a"] > 0, near_white
+    q = fig["panels"]
+    c = np.cos(np.radians(fig["grazing"]["light"]["angle_deg"] / 2))
+    blinn = (q["b"]["p_s"] * fresnel_sin_tan(np.arccos(c), q["b"]["n"])
+             / (q["a"]["p_s"] * fresnel_sin_tan(np.arccos(c), q["a"]["n"])))
+    assert blinn > 1.2
+    assert ts["b"].max() / ts["a"].max() == pytest.approx(blinn, rel=0.05)
 
 
 @pytest.mark.parametrize("p", ["a", "b"])

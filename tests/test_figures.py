@@ -316,7 +316,9 @@ def test_a_light_added_in_config_is_rendered(after_build):
     import pandas as pd
 
     table = pd.read_csv(cwd / "results/blinn_1977/fig7.csv")
-    assert set(table.light) == {"edge", "front", "tangential", "side"}
+    # (and the default figure's grazing view: its edge light and the front light on the bar)
+    assert set(table.light) == {"edge", "front", "tangential", "side", "grazing_edge",
+                                "grazing_front"}
     assert len(table[table.light == "side"]) == 4  # 2 panels x 2 readings of Phong's p_s
     for reading in ("as_printed", "matched"):  # each light but the front one: a figure of its own
         assert (cwd / "results/blinn_1977" / f"fig7_{reading}_side.png").is_file(), reading

@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.display import display_tag, encode
+from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
 from reflectance.render.pipeline import render, render_to_files
@@ -36,7 +36,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     params = params_dict(snakemake.params)
     fig_cfg, out = params["fig"], snakemake.output
     folder = str(Path(out.csv).parent)  # the rule's outputs' folder
-    stems, lights = definition.stems(params, folder), fig_cfg["lights"]
+    stems, lights = definition.stems(params, folder), definition.lights(fig_cfg)
     closeup = definition.rim_light(fig_cfg)
     images, Y, rows, rims = {}, {}, [], {}
     # the renders share the object: one trace per camera and light (keep_trace)
@@ -79,7 +79,15 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     # light gets an inset of the rim, magnified, on one scale for all (white = the brightest i).
     zoom = fig_cfg["camera"]["fov_deg"] / fig_cfg["rim_closeup"]["fov_deg"]
     rim_scale = max(rim.max() for rim in rims.values())  # one grey scale for every close-up
-    front = definition.front_light(fig_cfg)
+    # the default figure's (the grazing view's) four edge-lit images share one exposure: white =
+    # the brightest Torrance-Sparrow i of them, compressed above fig7.grazing.highlight_knee
+    grazing = definition.GRAZING + "edge"
+    if grazing in lights:
+        white = max(Y[definition.render_key(p, "torrance_sparrow", grazing, None)].max()
+                    for p in fig_cfg["panels"])
+        knee = fig_cfg["grazing"]["highlight_knee"]
+        shared = {key: encode(compress_highlights(np.repeat(Y[key][..., None], 3, -1) / white,
+                                                  knee)) for key in Y if grazing in key}
 
     # Blinn's layout, drawn at the print width (PRINT_WIDTH_IN, its text at the figures' sizes):
     # per panel Phong and Torrance-Sparrow under the figure's light side by side, under them one
@@ -98,12 +106,15 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     sweep = np.linspace(90.0, 178.0, 881)
 
     def image(ax, key, text):
-        ax.imshow(images[key], interpolation="nearest")
+        ax.imshow(shared[key] if grazing in key else images[key], interpolation="nearest")
         ax.set_xticks([]), ax.set_yticks([])
         ax.text(0.03, 0.95, text, transform=ax.transAxes, color="white", fontsize=T["annotation"],
                 va="top")
 
     for (reading, light), png in definition.figures(fig_cfg, folder).items():
+        front = definition.figure_front(fig_cfg, light)
+        name = {light: light.removeprefix(definition.GRAZING),
+                front: front.removeprefix(definition.GRAZING)}
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
             x0 = 0.06 + k * (2 * wd + gap + block)
@@ -111,7 +122,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
             for i, model in enumerate(MODELS):
                 key = definition.render_key(panel, model, light, reading)
                 ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
-                image(ax, key, f"{light} lit, {lights[light]['angle_deg']:g}\u00b0")
+                image(ax, key, f"{name[light]} lit, {lights[light]['angle_deg']:g}\u00b0")
                 ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
                 if light == closeup:
                     grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
@@ -133,7 +144,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
             yf = y0 - foot - h  # the front-lit image, centred under the pair
             ax = fig.add_axes(((x0 + wd / 2 + gap / 2) / W, yf / H, wd / W, h / H))
             image(ax, definition.render_key(panel, "torrance_sparrow", front, reading),
-                  f"{front} lit, {lights[front]['angle_deg']:g}\u00b0")
+                  f"{name[front]} lit, {lights[front]['angle_deg']:g}\u00b0")
             both = rows_of[rows_of.light == front].iloc[0]
             fig.text((x0 + wd + gap / 2) / W, (yf - 0.04) / H,
                      f"both models: max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
@@ -151,22 +162,31 @@ def run(snakemake: Any, log: logging.Logger) -> None:
             at = table[(table.panel == panel) & (table.light == light)].iloc[0]
             ax.plot(lights[light]["angle_deg"], at.mirror_highlight, "o", mfc="none",
                     color=colour, ms=6)
-        ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
-        ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right", va="top",
-                fontsize=T["annotation"], color="0.3", transform=ax.get_xaxis_transform())
+            # the renders' brightest i: G stays 1 while N.E > E.H / 2, so past N = H, s grows
+            ax.plot(lights[light]["angle_deg"], at.torrance_sparrow_max, "v", color=colour, ms=5)
+        if crossover is not None:  # (panels of other parameters may not cross at all)
+            ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
+            ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right",
+                    va="top", fontsize=T["annotation"], color="0.3",
+                    transform=ax.get_xaxis_transform())
         ax.set(yscale="log", xlim=(90, 178), xticks=np.arange(90, 179, 15),
                xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E)")
         ax.grid(True, which="major")
         ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
         ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nthis figure's "
-                f"{light} light\n(circles)", transform=ax.transAxes, va="bottom",
+                f"{name[light]} light\n(circles); its renders'\nbrightest i (triangles)",
+                transform=ax.transAxes, va="bottom",
                 fontsize=T["annotation"], linespacing=1.3)
-        verdict = ("MgO brighter than aluminium" if lights[light]["angle_deg"] > crossover
-                   else "MgO dimmer than aluminium")
+        brighter = (table[(table.panel == "b") & (table.light == light)].mirror_highlight.iloc[0]
+                    > table[(table.panel == "a") & (table.light == light)].mirror_highlight.iloc[0])
+        verdict = "MgO brighter than aluminium" if brighter else "MgO dimmer than aluminium"
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 edge lit at {lights[light]['angle_deg']:g}\u00b0 "
                      f"from the eye ({verdict}); Phong's p_s {reading.replace('_', ' ')}\n"
-                     f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
-                     + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else ""),
+                     + (f"{fig_cfg['grazing']['label']}; " if light == grazing
+                        else f"variant: {fig_cfg['object']['type']}; " if grazing in lights else "")
+                     + f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
+                     + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else "")
+                     + (f"; edge lit: white = i {white:.1f}" if light == grazing else ""),
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
         savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
 
@@ -190,4 +210,16 @@ def run(snakemake: Any, log: logging.Logger) -> None:
               "b_ts_edge": f"{at['b', 'edge'].torrance_sparrow_max:.2f}",
               "phong_edge": f"{written.xs('edge', level='light').phong_max.max():.2f}",
               "difference_front": f"{max(at[p, front].max_abs_difference for p in 'ab'):.3f}"}
+    if grazing in lights:  # the default figure: the grazing view's renders
+        ts = {p: at[p, grazing].torrance_sparrow_max for p in "ab"}
+        over = {p: ts[p] / at[p, grazing].mirror_highlight for p in "ab"}
+        front_difference = max(at[p, definition.GRAZING + "front"].max_abs_difference for p in "ab")
+        values.update({"a_ts_grazing": f"{ts['a']:.2f}", "b_ts_grazing": f"{ts['b']:.2f}",
+                       "a_ts_grazing_over_mirror": f"{over['a']:.2f}",
+                       "b_ts_grazing_over_mirror": f"{over['b']:.2f}",
+                       "grazing_ratio": f"{ts['b'] / ts['a']:.2f}",
+                       "grazing_verdict": "holds" if ts["b"] > ts["a"] else "does not hold",
+                       "grazing_white": f"{white:.1f}",
+                       "phong_grazing": f"{max(at[p, grazing].phong_max for p in 'ab'):.2f}",
+                       "difference_grazing_front": f"{front_difference:.3f}"})
     write_caption_values(out.values, values)

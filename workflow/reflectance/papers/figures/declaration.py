@@ -112,7 +112,7 @@ class Figure(NamedTuple):
 
     RULE: str
     folder: str
-    PARAMS: dict | Callable[[dict], dict]
+    PARAMS: dict | Callable[[Mapping[str, Any]], dict]
     OUTPUTS: dict
     SPECTRA: Callable[[Mapping[str, Any]], Iterable[str]] | None = None
     WILDCARDS: dict = {}
