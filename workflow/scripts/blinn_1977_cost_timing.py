@@ -6,6 +6,7 @@ other digits (the verdict's margin keeps its word)."""
 
 import datetime
 import platform
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -83,8 +84,7 @@ with script_log(snakemake) as log:
         "verdicts": verdicts, "verdict_bounds": dict(bounds),
         "pow_in_multiplies": round(float(pow_in_multiplies), 2)}
     with atomic_write(snakemake.output.measurement) as tmp:
-        with open(tmp, "w") as out:
-            yaml.safe_dump(measurement, out, sort_keys=False)
+        Path(tmp).write_text(yaml.safe_dump(measurement, sort_keys=False))
     log.info("ratios %s; verdicts %s", ratios, verdicts)
 
     write_caption_values(snakemake.output.values, {
