@@ -5,6 +5,7 @@ Each script runs once, as Snakemake would run it, with the parameters of config.
 a temporary directory.
 """
 
+import re
 import runpy
 from pathlib import Path
 from types import SimpleNamespace
@@ -151,6 +152,30 @@ def test_fig5_6_numbers(tmp, fig):
         term = np.argmin(np.stack([np.ones_like(NE), 2 * NH * NE / EH, 2 * NH * NL / EH]), axis=0)
         corners = np.degrees(tr[np.flatnonzero(np.diff(term)) + 1])
         assert [float(a) for a in str(row.G_corners_deg).split()] == pytest.approx(corners, abs=0.06)
+        # issue 28: only the corners where the specular term shows are marked (at least
+        # corner_min_fraction of its peak), e.g. Fig. 6's kink near 83 degrees, not the flat -70, 30
+        specular = hand["torrance_sparrow"] - s["p_d"] * NL
+        corner_idx = np.flatnonzero(np.diff(term)) + 1
+        shown = corner_idx[specular[corner_idx] >= CONFIG["fig5_6"]["corner_min_fraction"] * specular.max()]
+        marked = [float(a) for a in str(row.G_corners_marked_deg).split()] if row.G_corners_marked_deg == \
+            row.G_corners_marked_deg else []  # NaN: none marked
+        assert marked == pytest.approx(np.degrees(tr[shown]), abs=0.06)
+        if fig == "fig6" and s is sets[0]:
+            assert len(marked) == 1 and 80 < marked[0] < 86
+        # issue 28: one radial scale for Figs. 5 and 6: at least every value drawn at either angle
+        # (by hand, Phong as printed and Torrance-Sparrow at both), and at most 10 % more
+        both = []
+        for angle in CONFIG["fig5_6"]["incidence_deg"].values():
+            _, ph, ts = blinn_curves(angle, s)
+            t = np.radians(np.arange(-90 + 0.05, 90, 0.05))
+            NH_a = np.cos((np.radians(angle) - t) / 2)
+            both += [ts.max(), (s["p_d"] * np.cos(np.radians(angle)) + s["p_s"] * NH_a**c1).max()]
+        assert max(both) <= row.polar_scale <= 1.1 * max(both)
+        # issue 28: "coincides" in the legend when Phong as printed lies within a line width of the
+        # matched curve; their gap is p_s (1 - F(0)) at the mirror (D1 = 1)
+        gap = s["p_s"] * (1 - F0) / row.polar_scale
+        if gap < 0.005 or gap > 0.05:
+            assert bool(row.phong_as_printed_coincides) == (gap < 0.005), s["label"]
         for reading in ("matched", "as_printed"):
             assert row[f"peak_ratio_ts_to_{reading}"] == pytest.approx(
                 hand["torrance_sparrow"].max() / hand[f"phong_{reading}"].max(), rel=1e-5)
@@ -162,6 +187,17 @@ def test_fig5_6_numbers(tmp, fig):
             hand["phong_matched"].max() / hemisphere - 1, rel=1e-4)
     # Blinn: at 30 degrees "the functions are almost identical" -- for Fig. 7's MgO with the matched
     # p_s (peaks within 5 %); the as-printed Phong peak is 2.7 times the Torrance-Sparrow one.
+    # issue 28: the caption's Torrance-Sparrow peak direction, and how far beyond the mirror, from
+    # the curves written out by hand (the first set's, the default)
+    values_rst = dict(re.findall(r"\|(\w+)\| replace:: (.*)", out["values"].read_text()))
+    peak_deg = float(values_rst["chosen_torrance_sparrow_deg"])
+    _, _, ts_default = blinn_curves(np.degrees(ti), sets[0])
+    t_default = np.arange(-90 + 0.05, 90, 0.05)
+    assert peak_deg == pytest.approx(t_default[np.argmax(ts_default)], abs=0.06)
+    beyond = float(values_rst["chosen_ts_beyond_mirror"])
+    assert beyond == pytest.approx(peak_deg - np.degrees(ti), abs=0.06)
+    if fig == "fig6":
+        assert 1 < beyond < 10  # "not in quite the same direction"
     if fig == "fig5":
         mgo = summary[summary.n == 1.8].iloc[0]
         assert abs(mgo.peak_ratio_ts_to_matched - 1) < 0.05

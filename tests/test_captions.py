@@ -38,6 +38,8 @@ PRINTED = {
     "0.2": "lecture, microfacet distributions: m near 0.2 ... nearly smooth",
     "0.6": "lecture, microfacet distributions: m near 0.6 ... rough",
     "605.767": "lecture: JHU course 605.767",
+    "0.9": "lecture, Cook and Torrance: For shiny plastics: d = 0.9, s = 0.1",
+    "0.1": "lecture, Cook and Torrance: For shiny plastics: d = 0.9, s = 0.1",
 }
 
 #: a decimal typed into a caption (not a section number such as §13.2)

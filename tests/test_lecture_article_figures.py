@@ -278,8 +278,9 @@ def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
     assert table.phong.idxmax() == mirror.name
     assert mirror.blinn_phong == pytest.approx(bp["c_diff"] / math.pi + (bp["m"] + 8) / (8 * math.pi) * bp["c_spec"],
                                                rel=1e-5)
-    # Cook-Torrance (physical) by hand: Beckmann D / pi, V-cavity G, Fresnel of a dielectric (k = 0).
-    assert ct["k"] == 0 and ct["convention"] == "physical" and ct["d"] == 0
+    # Cook-Torrance (physical) by hand: Beckmann D / pi, V-cavity G, Fresnel of a dielectric (k = 0),
+    # the lecture's "shiny plastics: d = 0.9, s = 0.1" (issue 28): s R_s + d R_d
+    assert ct["k"] == 0 and ct["convention"] == "physical" and (ct["d"], ct["s"]) == (0.9, 0.1)
     for theta_o in (fig["incidence_deg"], 20.0, 70.0, 85.0):
         to = math.radians(theta_o)
         L = np.array([-math.sin(ti), 0, math.cos(ti)])
@@ -290,7 +291,12 @@ def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
         G = min(1, 2 * H[2] * V[2] / (V @ H), 2 * H[2] * L[2] / (V @ H))
         F = fresnel_by_hand(math.acos(V @ H), ct["n"])
         row = table.iloc[(table.theta_o_deg - theta_o).abs().argmin()]
-        assert row.cook_torrance == pytest.approx(ct["s"] * F * D * G / (4 * L[2] * V[2]), rel=1e-5), theta_o
+        assert row.cook_torrance == pytest.approx(ct["s"] * F * D * G / (4 * L[2] * V[2]) + ct["d"] * ct["R_d"],
+                                                  rel=1e-5), theta_o
+    # a hemisphere plus a lobe: d R_d away from the mirror, at least 1.5 times that at the mirror
+    assert table.cook_torrance[(table.theta_o_deg > -40) & (table.theta_o_deg < 10)].to_numpy() == \
+        pytest.approx(ct["d"] * ct["R_d"], rel=0.02)
+    assert mirror.cook_torrance > 1.5 * ct["d"] * ct["R_d"]
 
 
 def test_brdf_lobes_2d_phong_adds_a_protrusion_and_ward_turns_with_the_grain(config, tmp_path):
@@ -329,6 +335,35 @@ def test_brdf_lobes_2d_phong_adds_a_protrusion_and_ward_turns_with_the_grain(con
         return np.ptp(t[inside])
 
     assert half_width(table.ward_turned.to_numpy()) > 2 * half_width(table.ward.to_numpy())
+
+
+def test_brdf_lobes_2d_draw_nothing_past_the_max_view_angle(config, tmp_path):
+    """Issue 28: every curve drawn (the lobes, the dashed turned Ward lobe and Lommel-Seeliger
+    variant) stops at scale_to_deg from N, where the "max f" under each panel is taken: nothing is
+    drawn beyond it, and the largest radius drawn in each panel is the largest f of the table there
+    (the printed max is the drawn max); the rim is the outermost labelled ring."""
+    fig = config["figures"]["lecture"]["brdf_lobes"]
+    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"},
+                     fig=fig)
+    table = pd.read_csv(tmp_path / "l.csv")
+    inside = table.theta_o_deg.abs() <= fig["scale_to_deg"]
+    polar = [ax for ax in out["fig"].axes if ax.name == "polar"]
+    assert len(polar) == 6
+    tops = []
+    for ax, key in zip(polar, ["diffuse", "phong", "blinn_phong", "cook_torrance", "ward", "lunar"]):
+        drawn = []
+        for line in ax.get_lines():
+            theta, r = (np.asarray(a, dtype=float) for a in line.get_data())
+            assert not np.any(r[np.abs(np.degrees(theta)) > fig["scale_to_deg"] + 1e-9] > 0), key
+            if len(theta) > 2:  # a curve, not the light's or the mirror's ray
+                drawn.append(r.max())
+        assert drawn[0] == pytest.approx(table[key][inside].max(), rel=1e-5), key
+        if key == "ward":
+            assert drawn[1] == pytest.approx(table.ward_turned[inside].max(), rel=1e-5)
+        rings = ax.get_yticks()
+        assert rings[-1] == pytest.approx(ax.get_ylim()[1])  # the rim is a ring, labelled
+        tops.append(ax.get_ylim()[1])
+    assert max(table[inside].drop(columns="theta_o_deg").max()) < min(tops)
 
 
 def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
@@ -379,6 +414,9 @@ def test_brdf_lobes_3d_maxima_agree_with_the_2d_figure(lobes_3d):
         assert values[f"{key}_max"] == f"{table[key][inside].max():.3g}", key
         assert values[f"{key}_max_plane"] == values[f"{key}_max"], key
     assert values["lunar_max_at"] == f"theta_o = {fig['incidence_deg']:.1f} deg, phi_o = 180 deg"
+    # issue 28: the lobes stop at scale_to_deg from N (the last ring of theta drawn), as in 2-D
+    step = 90 / (fig["hemisphere_samples"][0] - 1)
+    assert fig["scale_to_deg"] - step < float(values["ward_drawn_to"]) <= fig["scale_to_deg"]
 
 
 def test_brdf_lobes_3d_fill_their_canvas(lobes_3d):

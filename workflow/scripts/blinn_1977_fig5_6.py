@@ -16,6 +16,7 @@ from reflectance.papers.blinn_comparison import compare_in_plane_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
 
+LINE_PT = 1.6  # the solid curves' width (points)
 CURVES = {  # key: (legend, colour, line style)
     "phong_matched": ("Phong, p_s F(0) (matched)", OKABE_ITO[0], "-"),
     "phong_as_printed": ("Phong, p_s as printed", OKABE_ITO[5], (0, (4, 2))),
@@ -23,16 +24,30 @@ CURVES = {  # key: (legend, colour, line style)
 }
 
 
-def draw(sets, results, theta_i, theta_r, title):
-    """One row per parameter set: the two polar plots on one scale, and i(theta)."""
+def polar_top(values, row, theta_i, theta_r, R):
+    """The highest point drawn in a row's polar panels: curves and arrows (the rest is cropped)."""
+    peak = np.radians(row["torrance_sparrow_max_deg"])
+    return max(max((v * np.cos(theta_r)).max() for v in values.values()),
+               R * np.cos(theta_i), R * np.cos(peak))
+
+
+def draw(sets, results, theta_i, theta_r, title, scales):
+    """One row per parameter set: the two polar plots on one scale (``scales``, by label: the same
+    for Figs. 5 and 6), cropped above the highest curve or arrow, and i(theta). Returns the figure
+    and, per row, whether Phong as printed lies under the matched curve within a line width."""
+    tops = [polar_top(*r, theta_i, theta_r, scales[s["label"]]) / scales[s["label"]]
+            for s, r in zip(sets, results)]
     # drawn at the print width (its text prints at the figures' sizes); each row's parameters over it
-    fig = new_figure(PRINT_WIDTH_IN, 1.2 + 2.7 * len(sets))
+    # a row: the polar panels' height (2.1 in across at this width) and 1.5 in of text above and below
+    fig = new_figure(PRINT_WIDTH_IN, 1.2 + sum(max(1.6, 1.5 + 2.1 * (t + 0.24) / 2.04) for t in tops))
     axes = np.atleast_2d(fig.subplots(len(sets), 3, gridspec_kw={"width_ratios": [1, 1, 0.82]}))
-    for row_axes, s, (values, row) in zip(axes, sets, results):
+    for row_axes, s, (values, row), top in zip(axes, sets, results, tops):
         beta, c1, F0 = np.radians(row["beta_deg"]), row["c1"], row["F0"]
-        R = 1.08 * max(v.max() for v in values.values())  # the same scale for both polar plots
-        ticks = [t for t in MaxNLocator(3).tick_values(0, R) if 0 < t < R]
+        R = scales[s["label"]]  # the same scale for both polar plots, and for Figs. 5 and 6
+        ticks = [t for t in MaxNLocator(3).tick_values(0, R) if 0 < t <= R + 1e-9]
         light = R * np.array([np.sin(theta_i), np.cos(theta_i)])
+        peak = np.radians(row["torrance_sparrow_max_deg"])
+        marked = row["G_corners_marked"]
         for ax, keys, name in ((row_axes[0], ("phong_as_printed", "phong_matched"), "Phong model"),
                                (row_axes[1], ("torrance_sparrow",), "Torrance-Sparrow model")):
             ax.fill_between([-R, R], -0.07 * R, 0, color="0.88", lw=0)
@@ -46,20 +61,27 @@ def draw(sets, results, theta_i, theta_r, title):
             for key in keys:  # Blinn's light from the right: the plane seen from behind (x -> -x)
                 label, colour, style = CURVES[key]
                 ax.plot(-values[key] * np.sin(theta_r), values[key] * np.cos(theta_r), color=colour,
-                        ls=style, lw=1.6 if style == "-" else 1.2, label=label)
+                        ls=style, lw=LINE_PT if style == "-" else 1.2, label=label)
                 if row[f"{key}_max_deg"] == np.degrees(theta_r[-1]):  # a peak at the horizon lies
                     # along the baseline: mark it above the line
                     edge = -values[key][-1]
                     ax.plot([edge], [0.0], "o", color=colour, ms=4, clip_on=False, zorder=4)
                     ax.annotate(f"{values[key][-1]:.2f} at the horizon", xy=(edge, 0.0),
-                                xytext=(edge, 0.6 * R), ha="left", va="bottom", color=colour,
+                                xytext=(edge, 0.75 * top * R), ha="left", va="bottom", color=colour,
                                 fontsize=TEXT_SIZE["annotation"],
                                 arrowprops=dict(arrowstyle="-", color=colour, lw=0.8))
+            if keys == ("torrance_sparrow",):  # the corners of G that show, and the peak's direction
+                ts = values["torrance_sparrow"][marked]
+                ax.plot(-ts * np.sin(theta_r[marked]), ts * np.cos(theta_r[marked]), "v", color="0.2",
+                        ms=4, zorder=4)
+                ax.annotate("", xy=R * np.array([-np.sin(peak), np.cos(peak)]), xytext=(0, 0),
+                            arrowprops=dict(arrowstyle="-|>", color=CURVES[keys[0]][1], lw=0.7))
             ax.annotate("", xy=0.03 * light, xytext=light,  # the incoming ray
                         arrowprops=dict(arrowstyle="-|>", color="0.15", lw=1.1, shrinkA=0, shrinkB=0))
             ax.annotate("", xy=light * [-1, 1], xytext=(0, 0),  # Blinn's reference vector
                         arrowprops=dict(arrowstyle="-|>", color="0.5", lw=0.9, ls=(0, (3, 2))))
-            ax.set(xlim=(-R, R), ylim=(-0.2 * R, 1.02 * R), aspect="equal", xticks=[], yticks=[])
+            ax.set(xlim=(-1.02 * R, 1.02 * R), ylim=(-0.2 * R, (top + 0.04) * R), aspect="equal",
+                   xticks=[], yticks=[])
             ax.set_title(name, pad=2)
             for side in ax.spines.values():
                 side.set_visible(False)
@@ -67,10 +89,9 @@ def draw(sets, results, theta_i, theta_r, title):
         tr_deg = np.degrees(theta_r)
         for key in ("phong_as_printed", "phong_matched", "torrance_sparrow"):
             label, colour, style = CURVES[key]
-            cart.plot(tr_deg, values[key], color=colour, ls=style, lw=1.6 if style == "-" else 1.2,
+            cart.plot(tr_deg, values[key], color=colour, ls=style, lw=LINE_PT if style == "-" else 1.2,
                       label=label)
-        corners = row["G_corners"]
-        cart.plot(tr_deg[corners], values["torrance_sparrow"][corners], "v", color="0.2", ms=4,
+        cart.plot(tr_deg[marked], values["torrance_sparrow"][marked], "v", color="0.2", ms=4,
                   zorder=4)
         cart.axvline(np.degrees(theta_i), color="0.5", lw=0.8, ls=(0, (3, 2)))
         # the word beside the line, inside the axes (the axis runs from +90 on the left)
@@ -82,31 +103,51 @@ def draw(sets, results, theta_i, theta_r, title):
         cart.grid(True)
         cart.set_title("the same, i(\u03b8)", pad=2)
         # how alike the two pictures are, under both polar plots
-        row_axes[0].text(1.08, -0.2, f"largest difference {row['max_difference_ts_matched']:.0%} of the "
+        row_axes[0].annotate(f"largest difference {row['max_difference_ts_matched']:.0%} of the "
                          f"Phong peak; ratio of peaks {row['peak_ratio_ts_to_matched']:.2f}, of bumps "
                          f"{row['bump_ratio_ts_to_matched']:.2f}".replace("%", " %"),
-                         transform=row_axes[0].transAxes, ha="center", va="top",
+                         xy=(1.08, 0), xycoords="axes fraction", xytext=(0, -16),
+                         textcoords="offset points", ha="center", va="top",
                          fontsize=TEXT_SIZE["annotation"], color="0.2")
-        row_axes[0].text(0.0, 1.3, f"{s['label']}:\np_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
+        base = [v["label"] for v in snakemake.params.fig["parameter_sets"]
+                if all(v[k] == s[k] for k in ("p_s", "p_d", "n")) and v["c3"] != s["c3"]]
+        name = (f"{base[0]} with c\u2083 = {s['c3']:g} (Blinn prints no parameters for Figs. 5 and 6)"
+                if base else s["label"])
+        row_axes[0].annotate(f"{name}:\np_s = {s['p_s']:g}, p_d = {s['p_d']:g}, "
                          f"n = {s['n']:g}, F(0) = {F0:.3g}, c\u2083 = {s['c3']:g}, "
                          f"\u03b2 = {np.degrees(beta):.1f}\u00b0, c\u2081 = {c1:.2f}",
-                         transform=row_axes[0].transAxes, ha="left", va="bottom",
+                         xy=(0, 1), xycoords="axes fraction", xytext=(0, 22),
+                         textcoords="offset points", ha="left", va="bottom",
                          fontsize=TEXT_SIZE["annotation"] + 0.5, linespacing=1.3)
         for ax, key in ((row_axes[0], "phong_matched"), (row_axes[1], "torrance_sparrow")):
-            ax.text(0.5, -0.04, f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
-                    transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"],
-                    color=CURVES[key][1])
+            ax.annotate(f"peak {row[f'{key}_max']:.3f} at \u03b8 = {row[f'{key}_max_deg']:.1f}\u00b0",
+                    xy=(0.5, 0), xycoords="axes fraction", xytext=(0, -3),
+                    textcoords="offset points", ha="center", va="top",
+                    fontsize=TEXT_SIZE["annotation"], color=CURVES[key][1])
     fig.suptitle(title, y=0.998, va="top", linespacing=1.3)
-    handles, labels = axes[0, 2].get_legend_handles_labels()
-    handles.append(Line2D([], [], marker="v", ls="none", color="0.2", ms=4))
-    labels.append("where G = min(1, G_b, G_c) changes term")
-    fig.legend(handles, labels, loc="upper center", ncol=2,
-               bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
     # one row: its polar axes, wider than high, shrink about their centres (aspect 1): start higher
     title_in = 1.3 if len(sets) == 1 else 1.55
     fig.subplots_adjust(left=0.01, right=0.99, top=1 - title_in / fig.get_figheight(),
                         bottom=0.5 / fig.get_figheight(), wspace=0.3, hspace=0.95)
-    return fig
+    coincide = []  # Phong as printed within a line width of the matched curve, in the polar panel
+    for row_axes, s, (values, row) in zip(axes, sets, results):
+        row_axes[0].apply_aspect()
+        width_pt = row_axes[0].get_position().width * fig.get_figwidth() * 72
+        per_pt = 2.04 * scales[s["label"]] / width_pt  # data units per point
+        gap = np.abs(values["phong_as_printed"] - values["phong_matched"]).max()
+        coincide.append(bool(gap <= LINE_PT * per_pt))
+    handles, labels = axes[0, 2].get_legend_handles_labels()
+    if all(coincide):
+        labels[0] += " (coincides)"
+    elif any(coincide):
+        labels[0] += " (coincides for " + ", ".join(
+            s["label"] for s, c in zip(sets, coincide) if c) + ")"
+    handles += [Line2D([], [], color=CURVES["torrance_sparrow"][1], lw=0.7),
+                Line2D([], [], marker="v", ls="none", color="0.2", ms=4)]
+    labels += ["Torrance-Sparrow peak direction", "corner: G = min(1, G_b, G_c) changes term"]
+    fig.legend(handles, labels, loc="upper center", ncol=2,
+               bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
+    return fig, coincide
 
 
 with script_log(snakemake) as log:
@@ -115,21 +156,31 @@ with script_log(snakemake) as log:
     # n_directions from -90 to 90 degrees inclusive; the two horizon samples (i = 0) are dropped
     theta_r = np.radians(np.linspace(-90.0, 90.0, cfg["n_directions"])[1:-1])
     chosen, variants = [cfg["chosen"]], cfg["parameter_sets"]
-    results = {s["label"]: compare_in_plane_Blinn1977(s, theta_i, theta_r) for s in chosen + variants}
+    results = {s["label"]: compare_in_plane_Blinn1977(s, theta_i, theta_r, cfg["corner_min_fraction"])
+               for s in chosen + variants}
+    # one radial scale for Figs. 5 and 6 (the same rings): each set's largest value at either angle
+    scales = {s["label"]: 1.08 * max(max(v.max() for v in compare_in_plane_Blinn1977(
+        s, np.radians(float(a)), theta_r)[0].values()) for a in cfg["incidence_deg"].values())
+        for s in chosen + variants}
+    coincide = {}
     incidence = f"light at {np.degrees(theta_i):g}\u00b0 from the normal, from the right"
     for sets, title, png, pdf in (
             (chosen, f"Blinn 1977, Fig. {number} \u2014 Phong and Torrance-Sparrow reflection,\n"
              f"{incidence}", snakemake.output.png, snakemake.output.pdf),
             (variants, f"Blinn 1977, Fig. {number}, variant: Fig. 7's measured materials,\n{incidence}",
              snakemake.output.variant_png, snakemake.output.variant_pdf)):
-        fig = draw(sets, [results[s["label"]] for s in sets], theta_i, theta_r, title)
+        fig, flags = draw(sets, [results[s["label"]] for s in sets], theta_i, theta_r, title, scales)
+        coincide.update({s["label"]: c for s, c in zip(sets, flags)})
         savefig(fig, png, pdf)
     curves, summary = [], []
     for role, s in [("default", s) for s in chosen] + [("variant", s) for s in variants]:
         values, row = results[s["label"]]
-        corners = " ".join(f"{a:.1f}" for a in np.degrees(theta_r[row["G_corners"]]))
-        row = {"role": role, **{k: v for k, v in row.items() if k != "G_corners"},
-               "G_corners_deg": corners}
+        corners, marked = (" ".join(f"{a:.1f}" for a in np.degrees(theta_r[row[k]]))
+                           for k in ("G_corners", "G_corners_marked"))
+        row = {"role": role, **{k: v for k, v in row.items() if not k.startswith("G_corners")},
+               "G_corners_deg": corners, "G_corners_marked_deg": marked,
+               "polar_scale": scales[s["label"]],
+               "phong_as_printed_coincides": coincide[s["label"]]}
         log.info("%s: %s", s["label"], ", ".join(f"{k} = {v:.6g}" for k, v in row.items()
                                                    if not isinstance(v, str)))
         summary.append(row)
@@ -153,6 +204,7 @@ with script_log(snakemake) as log:
         "chosen_phong_matched_deg": f"{default.phong_matched_max_deg:.1f}",
         "chosen_torrance_sparrow_peak": f"{default.torrance_sparrow_max:.3f}",
         "chosen_torrance_sparrow_deg": f"{default.torrance_sparrow_max_deg:.1f}",
+        "chosen_ts_beyond_mirror": f"{default.torrance_sparrow_max_deg - default.theta_i_deg:.1f}",
         "set1_difference": f"{first.max_difference_ts_matched:.0%}".replace("%", " %"),
         "set2_difference": f"{second.max_difference_ts_matched:.0%}".replace("%", " %"),
         "set1_F0": f"{first.F0:.2f}", "set2_F0": f"{second.F0:.3f}",

@@ -24,8 +24,8 @@ from reflectance.io.tables import write_csv
 MODELS = {
     "diffuse": ("Lambert", "Diffuse (Lambert)"),
     "phong": ("Phong1975", "Phong, (R\u00b7V)$^{c_1}$/(N\u00b7L)"),
-    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong, (m+8)/(8\u03c0) cos$^m\\theta_h$"),
-    "cook_torrance": ("CookTorrance1982", "Cook-Torrance, DGF/(4(N\u00b7L)(N\u00b7V))"),
+    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "normalised Blinn-Phong, (m+8)/(8\u03c0) cos$^m\\theta_h$"),
+    "cook_torrance": ("CookTorrance1982", "Cook-Torrance, plastic: s DGF/(4(N\u00b7L)(N\u00b7V)) + d R$_d$"),
     "ward": ("Ward1992", "Ward, anisotropic"),
     "lunar": ("Hapke1981", "lunar: Hapke 1981, opposition effect"),
 }
@@ -64,9 +64,12 @@ with script_log(snakemake) as log:
                          **cfg["models"]["ward"])
     # one radial scale for every panel: scale_margin times the largest of their maxima (Ward's f grows
     # without bound at the horizon: each maximum is taken up to scale_to_deg, lobe_peak)
-    peaks = {key: lobe_peak(table[key], theta_o, cfg["scale_to_deg"]) for key in MODELS}
+    # every curve drawn (the dashed ones too) stops at scale_to_deg from N, so that the largest
+    # value drawn is the "max f" printed under it
+    peaks = {key: lobe_peak(table[key], theta_o, cfg["scale_to_deg"])
+             for key in (*MODELS, VARIANT, TURNED)}
     top = cfg["scale_margin"] * max(peak for peak, _ in peaks.values())
-    rings = [t for t in MaxNLocator(3).tick_values(0, top) if 0 < t < top]
+    rings = [t for t in MaxNLocator(3).tick_values(0, top) if 0 < t < 0.9 * top] + [top]  # and the rim
     pd.DataFrame(table).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
 
     # drawn at the print width (its text prints at the figures' sizes): the angle diagram and the
@@ -85,17 +88,18 @@ with script_log(snakemake) as log:
         ax.set_theta_zero_location("N")
         ax.set_theta_direction(-1)
         ax.set_thetalim(-np.pi / 2, np.pi / 2)
-        # drawn short of the horizon, where Ward's 1/sqrt(N.V) has no value (clipped at the rim)
-        seen = np.abs(theta_o) < np.pi / 2 - 1e-9
+        # drawn up to scale_to_deg from N, where the printed max is taken (Ward's 1/sqrt(N.V) grows
+        # without bound towards the horizon); beyond it each curve returns to the centre
+        seen = np.abs(theta_o) <= np.radians(cfg["scale_to_deg"]) * (1 + 1e-12)  # as lobe_peak
         f = np.where(seen, table[key], 0.0)
         peak, at = peaks[key]
-        ax.plot(theta_o, np.minimum(f, top), color=OKABE_ITO[0], lw=1.6)
-        ax.fill(theta_o, np.minimum(f, top), color=OKABE_ITO[0], alpha=0.15)
+        ax.plot(theta_o, f, color=OKABE_ITO[0], lw=1.6)
+        ax.fill(theta_o, f, color=OKABE_ITO[0], alpha=0.15)
         if key == "lunar":
-            ax.plot(theta_o, np.minimum(table[VARIANT], top), color=OKABE_ITO[3], lw=1.2, ls=(0, (4, 2)),
+            ax.plot(theta_o, np.where(seen, table[VARIANT], 0.0), color=OKABE_ITO[3], lw=1.2, ls=(0, (4, 2)),
                     label="lunar variant: Lommel-Seeliger\n(same w, no back-scatter)")
         if key == "ward":
-            ax.plot(theta_o, np.minimum(np.where(seen, table[TURNED], 0.0), top), color=OKABE_ITO[2], lw=1.2, ls=(0, (4, 2)),
+            ax.plot(theta_o, np.where(seen, table[TURNED], 0.0), color=OKABE_ITO[2], lw=1.2, ls=(0, (4, 2)),
                     label=f"Ward, light turned {cfg['ward_turned_deg']:g}\u00b0 about N\n(across the grain)")
         ax.plot([-theta_i, -theta_i], [0, top], color=OKABE_ITO[4], lw=1.5, label="towards the light L")
         ax.plot([theta_i, theta_i], [0, top], color="0.4", lw=1, ls="--", label="mirror direction")
@@ -103,10 +107,16 @@ with script_log(snakemake) as log:
         ax.set_title(f"{title}\n" + wrap_items(parameters_text(cfg["models"][key])),
                      fontsize=TEXT_SIZE["annotation"], pad=0, linespacing=1.25)
         ax.tick_params(pad=1)
-        ax.set_xticks(np.radians([-90, -45, 0, 45, 90]))
-        ax.set_yticks(rings, [f"{t:g}" for t in rings], fontsize=TEXT_SIZE["table"])  # the one scale
-        flat = np.ptp(f[np.abs(theta_o) < np.pi / 2]) <= 1e-9 * peak  # Lambert's: no one direction
+        ax.set_xticks(np.radians([-90, -45, 0, 45, 90]), ["", "-45\u00b0", "0\u00b0", "45\u00b0", ""])
+        ax.set_yticks(rings, [])  # the one scale: each ring's value centred under it, the rim's too
+        for t in rings:
+            ax.annotate(f"{t:.2g}", xy=(np.pi / 2, t), xytext=(0, -2), textcoords="offset points",
+                        ha="center", va="top", fontsize=TEXT_SIZE["table"], annotation_clip=False)
+        flat = np.ptp(f[seen]) <= 1e-9 * peak  # Lambert's: no one direction
         where = "" if flat else f" at \u03b8 = {np.degrees(theta_o[at]):.0f}\u00b0"
+        if key == "ward":  # the dashed lobe's own maximum, at the limit
+            where += (f";\nturned: {peaks[TURNED][0]:.3g} at "
+                      f"{np.degrees(theta_o[peaks[TURNED][1]]):.0f}\u00b0")
         ax.text(0.5, 0.02, f"max f = {peak:.3g} sr$^{{-1}}${where}",
                 transform=ax.transAxes, ha="center", va="top", fontsize=TEXT_SIZE["annotation"])
         log.info("%s: max f %.6g at theta_o = %.2f deg (up to %g deg from N)", key, peak,

@@ -22,18 +22,19 @@ from reflectance.scripting import script_log
 MODELS = {
     "diffuse": ("Lambert", "Diffuse (Lambert)"),
     "phong": ("Phong1975", "Phong"),
-    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "Blinn-Phong, (m+8)/(8 pi)"),
-    "cook_torrance": ("CookTorrance1982", "Cook-Torrance"),
+    "blinn_phong": ("BlinnPhong_AkenineMoller2008", "normalised Blinn-Phong"),
+    "cook_torrance": ("CookTorrance1982", "Cook-Torrance, shiny plastic"),
     "ward": ("Ward1992", "Ward, anisotropic"),
     "lunar": ("Hapke1981", "lunar (Hapke, opposition effect)"),
 }
 COLUMNS = 3
+KEY_WEIGHT = 0.3  # the colour key's column, beside the panels, against a panel's 1
 
 with script_log(snakemake) as log:
     cfg = snakemake.params.fig
     limit = cfg["scale_to_deg"]
     theta_i = np.radians(cfg["incidence_deg"])
-    L, mirror, N = plane_of_incidence_vectors(theta_i, theta_i)  # light on the -x side
+    L, _, N = plane_of_incidence_vectors(theta_i, theta_i)  # light on the -x side
     n_theta, n_phi = cfg["hemisphere_samples"]
     theta, phi = np.meshgrid(np.linspace(0.0, np.pi / 2, n_theta), np.linspace(0.0, 2 * np.pi, n_phi),
                              indexing="ij")
@@ -48,53 +49,57 @@ with script_log(snakemake) as log:
     f_all = {key: brdf(L, V, N, method, **cfg["models"][key]) for key, (method, _) in MODELS.items()}
     f_turned = brdf(L_turned, V, N, "Ward1992", **cfg["models"]["ward"])
     peaks = {key: lobe_peak(f, theta, limit) for key, f in f_all.items()}
-    top = cfg["scale_margin"] * max(peak for peak, _ in peaks.values())  # the 2-D figure's one scale: the disc's rim
+    turned_peak, _ = lobe_peak(f_turned, theta, limit)
+    # the 2-D figure's one scale (the disc's rim): over every lobe drawn, the turned one too
+    top = cfg["scale_margin"] * max([peak for peak, _ in peaks.values()] + [turned_peak])
+    # every lobe stops at scale_to_deg from N, where its printed max is taken (Ward's
+    # 1/sqrt(N.L N.V) grows without bound towards the horizon)
+    last = int(np.count_nonzero(theta[:, 0] <= np.radians(limit) * (1 + 1e-12)))
 
     rows = -(-len(MODELS) // COLUMNS)
-    pl = off_screen_plotter(*cfg["render_3d"]["size"], shape=(rows, COLUMNS))
+    pl = off_screen_plotter(*cfg["render_3d"]["size"], shape=(rows, COLUMNS + 1),
+                            col_weights=[1] * COLUMNS + [KEY_WEIGHT], groups=[(np.s_[:], COLUMNS)])
     pl.set_background("white")
     found = {}  # per model: its maximum over the hemisphere and in the 2-D table, where, how far drawn
     for i, (key, (method, title)) in enumerate(MODELS.items()):
         peak, at = peaks[key]
         in_plane, _ = lobe_peak(brdf(L_plane, V_plane, N, method, **cfg["models"][key]), theta_plane, limit)
         pl.subplot(i // COLUMNS, i % COLUMNS)
-        lights = [(L, f_all[key])] + ([(L_turned, f_turned)] if key == "ward" else [])
-        for light, f in lights:
+        lights = [(L, f_all[key], "L")] + ([(L_turned, f_turned, "L'")] if key == "ward" else [])
+        for light, f, name in lights:
             r = f / top
-            # rings of theta are drawn while the lobe stays inside the rim (Ward's rises past it
-            # towards the horizon; the lobes' maxima up to scale_to_deg are within it by design)
-            beyond = r.max(axis=1) > 1.0
-            last = int(np.argmax(beyond)) if beyond.any() else n_theta
             lobe = pv.StructuredGrid(*(r[:last] * V[:last, :, j] for j in range(3)))
             lobe["f (1/sr)"] = f[:last].ravel(order="F")
             actor = pl.add_mesh(lobe, scalars="f (1/sr)", cmap="viridis", clim=(0, top),
                                 smooth_shading=True, show_scalar_bar=False)
             pl.add_mesh(pv.Arrow(start=1.35 * light, direction=-light, scale=1.25, tip_length=0.12,
                                  tip_radius=0.035, shaft_radius=0.012), color="#d98c00")
-            if light is L:
-                drawn_to = np.degrees(theta[last - 1, 0])
+            # each light named at its tail, and its mirror direction (its lobe's axis) drawn
+            mirrored = light * np.array([-1.0, -1.0, 1.0])
+            pl.add_point_labels([1.42 * light], [name], font_size=22, text_color="#8a5a00",
+                                show_points=False, shape_opacity=0.0, font_file=font_file())
+            pl.add_mesh(pv.Line((0, 0, 0), 1.25 * mirrored), color="#595959", line_width=2)
+            drawn_to = np.degrees(theta[last - 1, 0])
         pl.add_mesh(pv.Disc(inner=0.0, outer=1.0, normal=(0, 0, 1), c_res=96), color="#d9d9d9",
                     opacity=0.5)
-        pl.add_mesh(pv.Line((0, 0, 0), 1.25 * mirror), color="#595959", line_width=2)
-        turned = f"\n(2nd light turned {cfg['ward_turned_deg']:g} deg)" if key == "ward" else ""
+        turned = (f"; L': {turned_peak:.3g}\n(L' = L turned {cfg['ward_turned_deg']:g} deg about N)"
+                  if key == "ward" else "")
         pl.add_text(f"{title}\nmax f = {peak:.3g} /sr{turned}", font_size=11, color="black",
                     position="upper_edge", font_file=font_file())  # the figures' typeface
-        # from above the front; Ward's panel from higher up, where each lobe's width across its
-        # plane of incidence (alpha_y for the first light, alpha_x for the turned one) shows
-        pl.view_vector(cfg["render_3d"]["ward_view" if key == "ward" else "view"], viewup=(0, 0, 1))
+        pl.view_vector(cfg["render_3d"]["view"], viewup=(0, 0, 1))  # one camera for every panel
         pl.reset_camera(bounds=(-1.1, 1.1, -1.1, 1.1, -0.3, 1.0))  # lobes up under their titles
         pl.camera.zoom(cfg["render_3d"]["zoom"])
-        if i == len(MODELS) - 1:  # the key: f in sr^-1, the colour and the radius of every panel
-            pl.add_scalar_bar(title=f"f (1/sr)\nrim {top:.2g}", mapper=actor.mapper, n_labels=4,
-                              fmt="%.2f", vertical=True, position_x=0.86, position_y=0.03,
-                              width=0.05, height=0.5, color="black", title_font_size=15,
-                              label_font_size=14, font_family="arial")
         t_deg, p_deg = np.degrees(theta.flat[at]), np.degrees(phi.flat[at])
         found[key] = {"max": f"{peak:.3g}", "plane": f"{in_plane:.3g}",
                       "at": f"theta_o = {t_deg:.1f} deg, phi_o = {p_deg:.0f} deg",
                       "drawn_to": f"{drawn_to:.1f}"}
         log.info("%s: max f %.6g sr^-1 at (theta_o, phi_o) = (%.2f, %.1f) deg; in the plane %.6g; "
                  "drawn to %.2f deg", key, peak, t_deg, p_deg, in_plane, drawn_to)
+    pl.subplot(0, COLUMNS)  # the key, outside the panels: f in sr^-1, colour and radius of every lobe
+    pl.add_scalar_bar(title=f"f (1/sr)\n\ndisc rim\n= {top:.2g} /sr\n", mapper=actor.mapper, n_labels=4,
+                      fmt="%.1f", vertical=True, position_x=0.12, position_y=0.2, width=0.3,
+                      height=0.6, color="black", title_font_size=18, label_font_size=16,
+                      font_family="arial")
     write_caption_values(snakemake.output.values, {
         "diffuse_max": found["diffuse"]["max"], "diffuse_max_plane": found["diffuse"]["plane"],
         "phong_max": found["phong"]["max"], "phong_max_plane": found["phong"]["plane"],
@@ -103,7 +108,7 @@ with script_log(snakemake) as log:
         "cook_torrance_max_plane": found["cook_torrance"]["plane"],
         "cook_torrance_max_at": found["cook_torrance"]["at"],
         "ward_max": found["ward"]["max"], "ward_max_plane": found["ward"]["plane"],
-        "ward_drawn_to": found["ward"]["drawn_to"],
+        "ward_drawn_to": found["ward"]["drawn_to"], "ward_turned_max": f"{turned_peak:.3g}",
         "lunar_max": found["lunar"]["max"], "lunar_max_plane": found["lunar"]["plane"],
         "lunar_max_at": found["lunar"]["at"], "scale": f"{top:.2g}",
     })

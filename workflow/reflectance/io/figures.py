@@ -201,17 +201,19 @@ def savefig(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 200, tight: 
         plt.close(fig)
 
 
-def off_screen_plotter(width: int, height: int, shape: Sequence[int] = (1, 1)) -> pv.Plotter:
+def off_screen_plotter(width: int, height: int, shape: Sequence[int] = (1, 1),
+                       **layout: Any) -> pv.Plotter:
     """A pyvista plotter that renders off-screen (EGL on a machine without a display).
 
     ``shape = (rows, columns)`` makes a grid of subplots (select one with ``plotter.subplot(i, j)``),
-    drawn without borders between them.
+    drawn without borders between them; ``layout`` passes pyvista's ``col_weights``,
+    ``row_weights`` and ``groups`` (e.g. a narrow column for a colour key).
     """
     import pyvista as pv
 
     pv.OFF_SCREEN = True
     return pv.Plotter(off_screen=True, window_size=(int(width), int(height)),
-                      shape=tuple(int(n) for n in shape), border=False)
+                      shape=tuple(int(n) for n in shape), border=False, **layout)
 
 
 def font_file() -> str:

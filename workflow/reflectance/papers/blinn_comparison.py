@@ -21,7 +21,8 @@ from reflectance.papers.polar import intensity_in_plane_of_incidence, plane_of_i
 __all__ = ["compare_in_plane_Blinn1977"]
 
 
-def compare_in_plane_Blinn1977(s: Mapping[str, Any], theta_i: float, theta_r: npt.NDArray[np.float64]
+def compare_in_plane_Blinn1977(s: Mapping[str, Any], theta_i: float, theta_r: npt.NDArray[np.float64],
+                               corner_min_fraction: float = 0.0
                                ) -> tuple[dict[str, npt.NDArray[np.float64]], dict[str, Any]]:
     """Phong (as printed and matched) and Torrance-Sparrow over the plane of incidence, and a summary.
 
@@ -34,6 +35,9 @@ def compare_in_plane_Blinn1977(s: Mapping[str, Any], theta_i: float, theta_r: np
         Angle of incidence (radians).
     theta_r : numpy.ndarray
         Signed viewing angles (radians), inside the horizon.
+    corner_min_fraction : float, optional
+        A corner of G goes into ``G_corners_marked`` only where the Torrance-Sparrow specular term
+        is at least this fraction of its peak (elsewhere the corner is invisible).
 
     Returns
     -------
@@ -43,7 +47,8 @@ def compare_in_plane_Blinn1977(s: Mapping[str, Any], theta_i: float, theta_r: np
         The parameters, beta, c1, F(0); each curve's peak, its direction and its mirror value; the
         peaks' and bumps' ratios; the curves' largest difference against the Phong peak; each bump
         against the hemisphere ``p_d cos theta_i``; ``G_corners``, the indices where
-        ``G = min(1, G_b, G_c)`` changes term.
+        ``G = min(1, G_b, G_c)`` changes term, and ``G_corners_marked``, those of them where the
+        specular term is not negligible.
 
     References
     ----------
@@ -96,4 +101,7 @@ def compare_in_plane_Blinn1977(s: Mapping[str, Any], theta_i: float, theta_r: np
     G_b, G_c = vcavity_terms_Blinn1977(L @ N, E @ N, H @ N, np.sum(E * H, axis=-1))
     term = np.argmin(np.stack([np.ones_like(G_b), G_b, G_c]), axis=0)
     row["G_corners"] = np.flatnonzero(np.diff(term)) + 1
+    specular = values["torrance_sparrow"] - hemisphere
+    row["G_corners_marked"] = row["G_corners"][
+        specular[row["G_corners"]] >= corner_min_fraction * specular.max()]
     return values, row
