@@ -147,7 +147,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                   f"{name[front]} lit, {lights[front]['angle_deg']:g}\u00b0")
             both = rows_of[rows_of.light == front].iloc[0]
             fig.text((x0 + wd + gap / 2) / W, (yf - 0.04) / H,
-                     f"both models: max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
+                     "Both Models Essentially Same (Blinn)\n"  # his label under the image
+                     f"max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
                      ha="center", va="top", fontsize=T["annotation"])
             p = fig_cfg["panels"][panel]
             fig.text((x0 + wd + gap / 2) / W, (H - top + 0.02) / H,
