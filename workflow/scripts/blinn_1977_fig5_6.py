@@ -142,9 +142,11 @@ def draw(sets, results, theta_i, theta_r, title, scales):
     elif any(coincide):
         labels[0] += " (coincides for " + ", ".join(
             s["label"] for s, c in zip(sets, coincide) if c) + ")"
-    handles += [Line2D([], [], color=CURVES["torrance_sparrow"][1], lw=0.7),
-                Line2D([], [], marker="v", ls="none", color="0.2", ms=4)]
-    labels += ["Torrance-Sparrow peak direction", "corner: G = min(1, G_b, G_c) changes term"]
+    handles += [Line2D([], [], color=CURVES["torrance_sparrow"][1], lw=0.7)]
+    labels += ["Torrance-Sparrow peak direction"]
+    if any(np.size(row["G_corners_marked"]) for _, row in results):  # a key only for a mark drawn
+        handles += [Line2D([], [], marker="v", ls="none", color="0.2", ms=4)]
+        labels += ["corner: G = min(1, G_b, G_c) changes term"]
     fig.legend(handles, labels, loc="upper center", ncol=2,
                bbox_to_anchor=(0.5, 1 - 0.45 / fig.get_figheight()))
     return fig, coincide
