@@ -8,6 +8,7 @@ import logging
 from pathlib import Path
 from typing import Any
 
+from colour.colorimetry import lightness_CIE1976
 import numpy as np
 import pandas as pd
 
@@ -182,7 +183,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
             # carbon (issue 28): its measured F0 over the visible, the lightness of its F0 (the
             # albedo of R_d = F0/pi, CIE 1976 L*) against the median L* the figure shows
             "Carbon_L": f"{L.Carbon:.0f}",
-            "Carbon_F0_L": f"{116 * np.cbrt(vases.F0_Y.Carbon) - 16:.0f}",
+            "Carbon_F0_L": f"{lightness_CIE1976(100 * vases.F0_Y.Carbon):.0f}",
             "Carbon_F0_min": f"{carbon.min():.2f}", "Carbon_F0_max": f"{carbon.max():.2f}",
             "visible_lo": f"{snakemake.params.visible_nm[0]:g}",
             "visible_hi": f"{snakemake.params.visible_nm[1]:g}"})
