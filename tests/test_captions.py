@@ -24,8 +24,10 @@ REPORT = ROOT / "workflow" / "report"
 SCRIPTS = ROOT / "workflow" / "scripts"
 #: the rendered figures' drawings, each called by its script (reflectance.papers.draw)
 DRAWINGS = ROOT / "workflow" / "reflectance" / "papers" / "draw"
-#: the four texts, beside the project (not part of it: skipped where they are not)
-PAPERS = ROOT.parent / "shared" / "papers"
+#: the four texts, in ``shared/papers`` beside the project or beside a folder above it (a git
+#: worktree sits deeper than the main checkout); not part of the project: skipped where absent
+PAPERS = next((p / "shared" / "papers" for p in ROOT.parents if (p / "shared" / "papers").is_dir()),
+              ROOT.parent / "shared" / "papers")
 
 #: the decimals the captions quote from the texts, and where each text prints them
 PRINTED = {
