@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 _Scalar = TypeVar("_Scalar", bound="np.generic")
 
 __all__ = ["STYLE", "OKABE_ITO", "DARK_YELLOW", "DARK_ORANGE", "text_colour", "PRINT_WIDTH_IN", "TEXT_SIZE", "apply_style", "paper_name", "savefig", "new_figure", "off_screen_plotter", "trim_to_content",
-           "save_plotter", "font_file", "set_vtk_font"]
+           "save_plotter", "font_file", "set_vtk_font", "lines_under"]
 
 OKABE_ITO = ("#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#f0e442", "#000000")
 """Okabe & Ito (2008), "Color universal design": eight colours told apart by every observer."""
@@ -199,6 +199,45 @@ def savefig(fig: Figure, *paths: str | os.PathLike[str], dpi: int = 200, tight: 
                 Path(tmp).write_bytes(data)
     finally:
         plt.close(fig)
+
+
+def lines_under(ax: Any, artist: Any) -> list[str]:
+    """The labels of the lines of ``ax`` with a drawn point inside ``artist``'s box on the canvas
+    (an annotation's text box, a legend): empty when the artist covers no curve. Draws the figure.
+
+    Examples
+    --------
+    >>> fig = new_figure(3, 2); ax = fig.subplots()
+    >>> _ = ax.plot([0, 1], [0, 1], label="rising"); box = ax.text(0.8, 0.1, "note")
+    >>> lines_under(ax, box), lines_under(ax, ax.text(0.4, 0.4, "on it"))
+    ([], ['rising'])
+    >>> plt.close(fig)
+    """
+    import numpy as np
+
+    renderer = ax.figure.canvas.get_renderer()
+    ax.figure.draw_without_rendering()
+    from matplotlib.text import Annotation, Text
+
+    patch = getattr(artist, "get_bbox_patch", lambda: None)()
+    # an annotation's own extent takes in its arrow, which may cross a curve: its text box only
+    box = (patch.get_window_extent(renderer) if patch is not None
+           else Text.get_window_extent(artist, renderer) if isinstance(artist, Annotation)
+           else artist.get_window_extent(renderer))
+    hits = []
+    for line in ax.get_lines():
+        x, y = (np.asarray(v, float) for v in line.get_data())
+        # the polyline resampled finely, so a segment crossing the box between its samples counts
+        t = np.linspace(0, len(x) - 1, 20 * len(x))
+        xy = ax.transData.transform(np.column_stack([np.interp(t, np.arange(len(x)), x),
+                                                     np.interp(t, np.arange(len(y)), y)]))
+        xy = xy[np.isfinite(xy).all(axis=1)]
+        frame = ax.get_window_extent(renderer)  # lines are clipped to the axes
+        inside = ((xy[:, 0] >= frame.x0) & (xy[:, 0] <= frame.x1) & (xy[:, 1] >= frame.y0) & (xy[:, 1] <= frame.y1)
+                  & (xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1))
+        if inside.any():
+            hits.append(line.get_label())
+    return hits
 
 
 def off_screen_plotter(width: int, height: int, shape: Sequence[int] = (1, 1),
