@@ -186,6 +186,14 @@ def test_fresnel_curves(config, tmp_path, grid):
         assert exact[0] == pytest.approx(F0, rel=1e-5) and exact[-1] == pytest.approx(1.0)
         np.testing.assert_allclose(exact[inner], fresnel_by_hand(theta[inner], n), rtol=2e-5, atol=1e-6)
         np.testing.assert_allclose(schlick, F0 + (1 - F0) * (1 - np.cos(theta)) ** 5, rtol=2e-5, atol=1e-6)
+        # the slide's printed F, c(g - c) - 1 below: at normal incidence g = n, so it is
+        # 1/2 F0 (1 + n^2 / (n - 2)^2), not F0; n > 2 passes through its pole (c (g - c) = 1)
+        slide = table[f"{name}_slide"].to_numpy()
+        assert slide[0] == pytest.approx(0.5 * F0 * (1 + n**2 / (n - 2) ** 2), rel=1e-5)
+        assert slide[-1] == pytest.approx(1.0)
+        c = np.cos(theta)
+        pole = c * (np.sqrt(n**2 + c**2 - 1) - c) - 1
+        assert (np.any(np.diff(np.sign(pole)) != 0)) == (n > 2), name
     # Metals at normal incidence: Y of F0 = |(n - 1 + ik)/(n + 1 + ik)|^2 by colour-science's integration.
     from reflectance.optics.spectra import load_material
 
@@ -236,11 +244,14 @@ def test_fresnel_colour_bands(config, tmp_path, grid):
             F = (np.abs(rs) ** 2 + np.abs(rp) ** 2) / 2
             XYZ = colour.sd_to_XYZ(colour.SpectralDistribution(dict(zip(grid, F))), cmfs, light,
                                    method="Integration") / 100
-            linear = colour.XYZ_to_RGB(XYZ, "sRGB", apply_cctf_encoding=False)
+            linear = colour.XYZ_to_RGB(fig["band_exposure"] * XYZ, "sRGB", apply_cctf_encoding=False)
             if np.all((linear > 0.002) & (linear < 0.998)):
                 np.testing.assert_allclose(rgb[row], colour.cctf_encoding(linear, "sRGB"), atol=3e-3)
                 checked += 1
-        np.testing.assert_allclose(rgb[-1], 1.0, atol=1e-6)  # 90 degrees: F = 1, the white
+        # 90 degrees: F = 1, the illuminant's white at the bands' one exposure, a grey below the page's white
+        white = colour.cctf_encoding(fig["band_exposure"], "sRGB")
+        np.testing.assert_allclose(rgb[-1], white, atol=1e-6)
+        assert rgb.max() < 0.95, name  # no band reaches the page's white (gold's red tops the mirror's)
     assert checked >= 6
     for name in ("Cu", "Au"):
         r, g, b = table[[f"{name}_display_{c}" for c in "RGB"]].iloc[0]

@@ -54,6 +54,7 @@ __all__ = [
     "nk_from_reflectivity_Gulbrandsen2014",
     "reflectivity_from_nk_Gulbrandsen2014",
     "FRESNEL_METHODS",
+    "fresnel_slide_Russin",
     "fresnel",
 ]
 
@@ -308,6 +309,41 @@ def fresnel_Blinn1977(cos_theta: npt.ArrayLike,
     # Blinn 1977, Fresnel formula in g and c, as printed (missing the 1/2; Cook & Torrance 1982).
     F = first * second
     return _out(np.where(tir, 2.0, F))
+
+
+def fresnel_slide_Russin(cos_theta: npt.ArrayLike,
+                         n: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+    """The lecture slide's Fresnel equation exactly as printed: ``c(g - c) - 1`` where Cook &
+    Torrance have ``c(g - c) + 1``.
+
+        F = 1/2 (g - c)^2 / (g + c)^2 {1 + [c (g + c) - 1]^2 / [c (g - c) - 1]^2}
+
+    Kept for the lecture's figure and errata, not for shading: it is not the Fresnel reflectance.
+    At normal incidence it gives 1/2 ((n - 1)/(n + 1))^2 (1 + n^2 / (n - 2)^2) instead of
+    ((n - 1)/(n + 1))^2, and it has a pole where c (g - c) = 1 (returned as ``inf``), which
+    every n > 2 reaches between normal and grazing incidence.
+
+    References
+    ----------
+    Russin, "Advanced Reflection Models" (Module 3B), "Fresnel Reflectance" slide; Cook & Torrance
+    (1982), "Spectral composition" (the ``+ 1``: :func:`fresnel_dielectric_CookTorrance1982`).
+
+    Examples
+    --------
+    >>> print(f"{fresnel_slide_Russin(1.0, 1.5):.6f}")  # 1/2 (0.5/2.5)^2 (1 + 1.5^2/0.5^2)
+    0.200000
+    >>> print(f"{fresnel_slide_Russin(0.0, 1.5):.6f}")  # grazing: both brackets are -1
+    1.000000
+    """
+    c = _cos(cos_theta)
+    n = _check_n(n)
+    first, _, tir = _g_c_terms(c, n)
+    g = np.sqrt(np.maximum((n - 1.0) * (n + 1.0) + c * c, 0.0))
+    den = (c * (g - c) - 1.0) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # the slide, "Fresnel Reflectance": its denominator has c(g - c) - 1 (C&T 1982: + 1)
+        F = 0.5 * first * (1.0 + (c * (g + c) - 1.0) ** 2 / den)
+    return _out(np.where(tir, 1.0, np.where(den == 0, np.inf, F)))
 
 
 def n_from_F0_CookTorrance1982(F0: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
