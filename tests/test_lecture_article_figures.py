@@ -511,3 +511,31 @@ def test_masking_G1_of_the_profile(config, tmp_path):
     # facets tilted towards the light are lit more often than those tilted away (not Smith's constant)
     lit = by.visible_light.dropna().to_numpy()
     assert lit[-3:].mean() > lit[:3].mean() + 0.1
+
+
+def test_shadowing_markers_block_their_rays(config):
+    """(a)'s x markers: from any point of a cast shadow (facing the light, not lit) the ray towards
+    the light meets the profile at the marker, and runs above the profile until then; the same for
+    a masked point towards the viewer. Checked against first_blocker's exact segment crossings."""
+    from reflectance.papers.profile import (blocking_point, first_blocker, gaussian_profile,
+                                            visible_fraction)
+
+    fig = config["figures"]["lecture"]["shadowing_masking"]
+    h, p = gaussian_profile(fig["n_samples"], fig["correlation_length"], fig["rms_slope"], fig["seed"])
+    w0, w1 = fig["window"]
+    xs, hs = np.arange(w0 - 40, w1 + 41, dtype=float), h[np.arange(w0 - 40, w1 + 41) % h.size]
+    checked = 0
+    for theta, sign in ((np.radians(fig["incidence_deg"]), -1), (np.radians(fig["view_deg"]), 1)):
+        direction = (sign * np.sin(theta), np.cos(theta))
+        vis = visible_fraction(h, sign * theta)[np.arange(w0, w1) % h.size]
+        facing = sign * p[np.arange(w0, w1) % h.size] < 1 / np.tan(theta)
+        for i in np.nonzero((vis < 0.5) & facing)[0][::7]:
+            x = w0 + i + 0.5
+            y = np.interp(x, xs, hs) + 1e-6
+            got = blocking_point(xs, hs, x, y, direction)
+            bx, bh = first_blocker(xs, hs, np.array([x]), np.array([y]), sign * theta)
+            assert got is not None and got[0] == pytest.approx(bx[0], abs=0.05), (x, theta)
+            t = np.linspace(0.02, 0.98, 400) * np.hypot(got[0] - x, got[1] - y)
+            assert np.all(np.interp(x + t * direction[0], xs, hs) < y + t * direction[1])
+            checked += 1
+    assert checked >= 5

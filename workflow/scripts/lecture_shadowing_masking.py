@@ -11,7 +11,7 @@ from matplotlib.collections import LineCollection
 
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
-from reflectance.papers.profile import gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
+from reflectance.papers.profile import blocking_point, gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
 from reflectance.scripting import script_log
 from reflectance.optics.shadowing import G1_Smith_Beckmann_Walter2007
 from reflectance.io.tables import write_csv
@@ -60,42 +60,50 @@ with script_log(snakemake) as log:
              np.sum(rays.escaped == (rays.seen[hit_segment] > 0.5)), hit_x.size)
 
     # drawn at the print width, so its text prints at the figures' sizes
-    fig = new_figure(PRINT_WIDTH_IN, 7.4)
-    grid = fig.add_gridspec(2, 3, height_ratios=[1.15, 1], hspace=0.62, wspace=0.42, top=0.83,
+    fig = new_figure(PRINT_WIDTH_IN, 7.0)
+    grid = fig.add_gridspec(2, 3, height_ratios=[1.15, 1], hspace=0.62, wspace=0.42, top=0.87,
                             bottom=0.2, left=0.08, right=0.99)
     ax = fig.add_subplot(grid[0, :])
     top, keep = hs.max() + 0.15 * (w1 - w0), (xs[:-1] >= w0) & (xs[1:] <= w1)
+    # the facets by what happens to them: cast shadow (facing the light, blocked) apart from
+    # facing away from the light; masked (lit, facing the viewer, blocked) apart from facing away
+    faces_light, faces_viewer = rays.slope > -1 / np.tan(ti), rays.slope < 1 / np.tan(to)
     classes = {"lit and seen": "#e69f00", "lit, masked by another facet": "#d62728",
-               "lit, facing away from the viewer": "#9ab0c8",
-               "shadowed, or facing away from the light": "#3a3a3a"}
-    colour = np.where(rays.lit > 0.5, np.where(rays.seen > 0.5, "#e69f00", np.where(
-        rays.slope >= 1 / np.tan(to), "#9ab0c8", "#d62728")), "#3a3a3a")
+               "lit, facing away from the viewer": "#56b4e9", "in a cast shadow": "#2a2a2a",
+               "facing away from the light": "#a0a0a0"}
+    kind = np.where(~faces_light, "facing away from the light", np.where(
+        rays.lit < 0.5, "in a cast shadow", np.where(~faces_viewer, "lit, facing away from the viewer", np.where(
+            rays.seen > 0.5, "lit and seen", "lit, masked by another facet"))))
     seg = np.stack([np.stack([xs[:-1], hs[:-1]], -1), np.stack([xs[1:], hs[1:]], -1)], 1)
-    ax.add_collection(LineCollection(seg[keep], colors=colour[keep], linewidths=3.5, zorder=3))
-    for x, y, ok, face, bx, bh in zip(hit_x, hit_h, rays.escaped, rays.faces_view, mask_x, mask_h):
-        ax.plot([x - (top - y) * np.tan(ti), x], [top, y], color="#f0c040", lw=0.9)
+    ax.add_collection(LineCollection(seg[keep], colors=[classes[k] for k in kind[keep]], linewidths=3.5, zorder=3))
+    for x, y, ok in zip(hit_x, hit_h, rays.escaped):
+        ax.plot([x - (top - y) * np.tan(ti), x], [top, y], color="#f0c040", lw=0.8)
         if ok:
-            ax.plot([x, x + (top - y) * np.tan(to)], [y, top], color="#e69f00", lw=0.9, ls="--")
-        elif face:
-            ax.plot([x, bx], [y, bh], color="#d62728", lw=1.1, ls="--")
-            ax.plot(bx, bh, "x", color="#d62728", ms=7, mew=2, zorder=4)
-    for (x, y), (bx, bh) in zip(rays.shadowed, rays.occluder):
-        ax.plot([x, bx], [y, bh], color="0.35", lw=1.1, ls=":")
-        ax.plot(bx, bh, "x", color="0.2", ms=7, mew=2, zorder=4)
+            ax.plot([x, x + (top - y) * np.tan(to)], [y, top], color="#e69f00", lw=0.8, ls="--")
+
+    # one example per run of cast shadow and per run of masked facets in the window: from the
+    # run's middle towards the light (dotted) or the viewer (dashed) to the facet that blocks it (x)
+    to_light, to_viewer = (-np.sin(ti), np.cos(ti)), (np.sin(to), np.cos(to))
+    for name, direction, c, ls in (("in a cast shadow", to_light, "#2a2a2a", ":"),
+                                   ("lit, masked by another facet", to_viewer, "#d62728", "--")):
+        run = np.r_[False, keep & (kind == name), False].astype(int)
+        for a, b in zip(np.nonzero(np.diff(run) == 1)[0], np.nonzero(np.diff(run) == -1)[0]):
+            mid = (xs[a] + xs[b]) / 2
+            hit = blocking_point(xs, hs, mid, np.interp(mid, xs, hs) + 1e-6, direction)
+            if hit is None or not w0 <= hit[0] <= w1:
+                continue
+            ax.plot([mid, hit[0]], [np.interp(mid, xs, hs), hit[1]], color=c, lw=1.4, ls=ls, zorder=5)
+            ax.plot(*hit, "x", color=c, ms=7, mew=2, zorder=6)
     for label, c in classes.items():
         ax.plot([], [], color=c, lw=3.5, label=label)
     ax.set(xlim=(w0, w1), ylim=(hs.min() - 0.05 * (w1 - w0), top), aspect="equal",
            xlabel="x (samples)", ylabel="height")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
-    ax.set_title(f"(a) light from the left at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid rays), viewer "
-                 f"on the right at \u03b8o = {cfg['view_deg']:g}\u00b0 (dashed)\nred: masked; dotted: from "
-                 "a shadowed facet back to its occluder (x)\nG1 of the whole profile: shadowing "
-                 f"{g1['light'][0]:.3f} (Smith {g1['light'][1]:.3f}), masking {g1['view'][0]:.3f} "
-                 f"(Smith {g1['view'][1]:.3f})\nrms slope \u03c3 = {sigma:.3g}, Beckmann m = "
-                 f"\u221a2 \u03c3 = {m:.3g}", fontsize=TEXT_SIZE["symbol"], linespacing=1.3)
-
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=3, frameon=False)
+    ax.set_title(f"(a) light from the left at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid), viewer on the "
+                 f"right at \u03b8o = {cfg['view_deg']:g}\u00b0 (dashed)\nx: the facet that blocks a shadowed "
+                 "(dotted) or a masked (red dashed) point", fontsize=TEXT_SIZE["symbol"], linespacing=1.3)
     ax = fig.add_subplot(grid[1, 0])
-    ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, m = {m:.3g}")
+    ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, m = {m:.3g}\n(not in the lecture)")
     ax.plot(np.degrees(angles), sim[:, 0], "o", ms=2.5, color=OKABE_ITO[0], label="simulated profile")
     ax.set(xlabel="\u03b8 from the normal (\u00b0)", ylabel="G1", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
            title="(b) G1 of the profile")
@@ -111,10 +119,10 @@ with script_log(snakemake) as log:
     ax = fig.add_subplot(grid[1, 2])
     ax.plot(np.degrees(angles), G_slide, color="#d55e00",
             label="slide: min{1, G$_s$, G$_m$}\n(V-cavity)")
-    ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.5, label="Smith: G1(L) G1(V)")
+    ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.5, label="Smith G1(L) G1(V)\n(not in the lecture)")
     ax.set(xlabel="view \u03b8o, mirror side (\u00b0)", ylabel="G", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
            title=f"(d) G, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
+    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3), labelspacing=0.9)
     ax.grid(True)
     fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d,\non a simulated "
                  f"Gaussian surface profile (seed {cfg['seed']})", y=0.995, va="top", linespacing=1.3)

@@ -42,6 +42,7 @@ import numpy.typing as npt
 
 __all__ = [
     "gaussian_profile",
+    "blocking_point",
     "projected_length",
     "visible_fraction",
     "masking_G1",
@@ -266,6 +267,30 @@ def first_hit(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x0: npt.
     hx, hh = crossings(xs, hs, xs - hs * np.tan(theta), x0)
     k = np.nanargmax(hh, axis=1)
     return hx[np.arange(x0.size), k], hh[np.arange(x0.size), k]
+
+
+def blocking_point(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64], x: float, y: float,
+                   direction: Sequence[float], step: float = 0.01) -> tuple[float, float] | None:
+    """By brute force, the first point of the polyline ``(xs, hs)`` on the ray from ``(x, y)``
+    along the unit ``direction``: marching in steps of ``step`` until the profile reaches the ray.
+    None where the ray leaves the polyline's x range or rises above its highest point first.
+
+    Examples
+    --------
+    >>> xs, hs = np.arange(4.0), np.array([0.0, 0.0, 2.0, 0.0])
+    >>> [round(v, 1) for v in blocking_point(xs, hs, 0.5, 0.0, (np.sqrt(0.5), np.sqrt(0.5)))]
+    [1.5, 1.0]
+    >>> blocking_point(xs, hs, 2.5, 1.0, (np.sqrt(0.5), np.sqrt(0.5))) is None
+    True
+    """
+    t = np.arange(step, np.hypot(np.ptp(xs), np.ptp(hs)) + step, step)
+    rx, ry = x + t * direction[0], y + t * direction[1]
+    inside = (rx >= xs[0]) & (rx <= xs[-1]) & (ry <= hs.max())
+    if not inside.all():  # past the end or above every peak: nothing further can block it
+        stop = np.argmin(inside)
+        rx, ry = rx[:stop], ry[:stop]
+    met = np.nonzero(np.interp(rx, xs, hs) >= ry)[0]
+    return (float(rx[met[0]]), float(np.interp(rx[met[0]], xs, hs))) if met.size else None
 
 
 def first_blocker(xs: npt.NDArray[np.float64], hs: npt.NDArray[np.float64],
