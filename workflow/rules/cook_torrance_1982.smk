@@ -287,6 +287,13 @@ rule errata:
             subcategory="All texts",
         ),
         pdf=ERRATA.outputs["pdf"],
+        other_png=report(
+            ERRATA.outputs["other_png"],
+            caption="../report/errata.rst",
+            category="Errata",
+            subcategory="All texts",
+        ),
+        other_pdf=ERRATA.outputs["other_pdf"],
     log:
         "logs/errata/errata.log",
     benchmark:

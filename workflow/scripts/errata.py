@@ -1,30 +1,43 @@
 """Errata of the four texts: every place where they disagree with each other or with arithmetic: the
 text of workflow/report/errata.yaml (read as text only) with the consequence computed by each
-row's function in reflectance.papers.errata, and the test that shows it."""
+row's function in reflectance.papers.errata, and the test that shows it (in the CSV; the figures,
+for a paper's reader, leave the test paths out)."""
 
 import textwrap
 
 from reflectance.papers.errata import errata_table
 
 
-def render(table, png, pdf):
-    """The table as a figure at print width: per erratum, where it is (left) and what it is (right)."""
+def wrap(text, width):
+    """Lines of at most ``width`` characters with no orphan: a last line of a word or two (``1/2``,
+    ``(N.E)``, ``4)``) is avoided by wrapping narrower until it carries at least a third of a line."""
+    lines = textwrap.wrap(text, width, break_long_words=False) or [""]
+    for narrower in range(width, int(0.75 * width), -1):
+        candidate = textwrap.wrap(text, narrower, break_long_words=False)
+        if len(candidate) == 1 or len(candidate[-1]) >= width / 3:
+            return candidate
+    return lines
+
+
+def render(table, title, png, pdf):
+    """The rows as a figure at print width, under one heading per kind: per row, where it is
+    (left) and what it is (right). The test that shows each row is in the CSV, not the figure."""
     from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 
     x_where, x_label, x_text = 0.005, 0.215, 0.335  # column edges, fractions of the width
-    wrap = {"where": 25, "text": 82, "test": 62}     # characters per line (the test in monospace)
-    fields = (("printed", "As printed"), ("correct", "Correct / other"), ("consequence", "Computed"),
-              ("test", "Test"))
-    blocks = []
-    for _, r in table.iterrows():
-        where = [(str(r.text).split(" (")[0], "bold")] + [
-            (line, "normal") for line in textwrap.wrap(str(r.location), wrap["where"])] + [
-            (line, "italic") for line in textwrap.wrap(f"({r.kind})", wrap["where"])] * (r.kind != "erratum")
-        what = [(label if i == 0 else "", line, key) for key, label in fields
-                for i, line in enumerate(textwrap.wrap(str(r[key]).replace("::", ":: "), wrap.get(key, wrap["text"]),
-                                                       break_long_words=False) or [""])]
-        blocks.append((where, what, max(len(where), len(what))))
-    gap = 0.7  # lines between errata
+    width = {"where": 25, "text": 82}                # characters per line
+    fields = (("printed", "As printed"), ("correct", "Correct / other"), ("consequence", "Computed"))
+    blocks = []  # (heading or None, where lines, what lines, height)
+    for kind, rows in table.groupby("kind", sort=False):
+        if table.kind.nunique() > 1:
+            blocks.append((kind[0].upper() + kind[1:], [], [], 1.2))
+        for _, r in rows.iterrows():
+            where = [(str(r.text).split(" (")[0], "bold")] + [
+                (line, "normal") for line in wrap(str(r.location), width["where"])]
+            what = [(label if i == 0 else "", line) for key, label in fields
+                    for i, line in enumerate(wrap(str(r[key]).replace("::", ":: "), width["text"]))]
+            blocks.append((None, where, what, max(len(where), len(what))))
+    gap = 0.7  # lines between rows
     total = sum(h for *_, h in blocks) + gap * len(blocks)
     line_in = 1.4 * TEXT_SIZE["table"] / 72
     fig = new_figure(PRINT_WIDTH_IN, (total + 3.5) * line_in + 0.3)
@@ -33,27 +46,28 @@ def render(table, png, pdf):
     ax.set_xlim(0, 1)
     ax.set_ylim(total + 1.5, -2.4)
     ax.text(x_where, -1.2, "Text, location", fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
-    ax.text(x_label, -1.2, "What the text prints, what it should, what follows (computed), and the test",
+    ax.text(x_label, -1.2, "What the text prints, what it should, what follows (computed)",
             fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
     ax.axhline(-0.55, color="0.2", lw=0.8)
-    y = 0.0
-    for i, (where, what, h) in enumerate(blocks):
-        if i % 2 == 0:
+    y, shade = 0.0, 0
+    for heading, where, what, h in blocks:
+        if heading:
+            ax.text(x_where, y + 0.1, heading, fontsize=TEXT_SIZE["annotation"], fontweight="bold",
+                    fontstyle="italic", color="#a0522d", va="center")
+            y += h + gap
+            continue
+        if shade % 2 == 0:
             ax.axhspan(y - 0.5 - gap / 2, y + h - 0.5 + gap / 2, color="0.94", lw=0)
+        shade += 1
         for j, (line, weight) in enumerate(where):
-            ax.text(x_where, y + j, line, fontsize=TEXT_SIZE["table"], va="center",
-                    fontweight="bold" if weight == "bold" else "normal",
-                    fontstyle="italic" if weight == "italic" else "normal",
-                    color="#a0522d" if weight == "italic" else None)  # the row's kind, when not an erratum
-        for j, (label, line, key) in enumerate(what):
+            ax.text(x_where, y + j, line, fontsize=TEXT_SIZE["table"], va="center", fontweight=weight)
+        for j, (label, line) in enumerate(what):
             ax.text(x_label, y + j, label, fontsize=TEXT_SIZE["table"], va="center", color="0.35")
-            ax.text(x_text, y + j, line, fontsize=TEXT_SIZE["table"], va="center",
-                    family="monospace" if key == "test" else None)
+            ax.text(x_text, y + j, line, fontsize=TEXT_SIZE["table"], va="center")
         y += h + gap
     sources = sorted(set(table.text[table.text.str.contains(" (", regex=False)]))
     ax.text(x_where, total + 0.6, "; ".join(sources), fontsize=TEXT_SIZE["table"], color="0.3", va="center")
-    fig.suptitle("Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article disagree\n"
-                 "with each other or with arithmetic (kind in italics where it is not an erratum)", size=STYLE["axes.titlesize"], y=0.998, va="top")
+    fig.suptitle(title, size=STYLE["axes.titlesize"], y=0.998, va="top")
     savefig(fig, png, pdf)
 
 
@@ -65,6 +79,12 @@ if "snakemake" in globals():
         settings = {k: v for k, v in snakemake.params.errata.items() if k != "rows"}
         table = errata_table(snakemake.input.rows, settings)
         table.pipe(write_csv, snakemake.output.csv, float_format="%.6g")
-        render(table, snakemake.output.png, snakemake.output.pdf)
+        # errata.png: the errata; errata_other.png: the rows of other kinds (naming, convention
+        # mismatch, possible transcription artefacts), each under its own heading
+        is_erratum = table.kind == "erratum"
+        render(table[is_erratum], "Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article\n"
+               "disagree with each other or with arithmetic", snakemake.output.png, snakemake.output.pdf)
+        render(table[~is_erratum], "Not errata: naming, a convention mismatch and possible transcription\n"
+               "artefacts in the four texts", snakemake.output.other_png, snakemake.output.other_pdf)
         for r in table.itertuples():
             log.info("%s | %s | %s", r.text, r.location, r.consequence)

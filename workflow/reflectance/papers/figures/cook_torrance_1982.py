@@ -47,5 +47,6 @@ DEFINITIONS = {figure.RULE: figure for figure in (
                                  **_SPECTRAL},
            {"png": "table1.png", "pdf": "table1.pdf", "csv": "table1.csv"}, _table1_spectra),
     Figure("errata", "results/errata", {"errata": "figures.errata"},
-           {"csv": "errata.csv", "png": "errata.png", "pdf": "errata.pdf"}),
+           {"csv": "errata.csv", "png": "errata.png", "pdf": "errata.pdf",
+            "other_png": "errata_other.png", "other_pdf": "errata_other.pdf"}),
 )}
