@@ -436,3 +436,19 @@ def test_built_fig1_and_errata_tables(built, root, table):
     errata_csv = pd.read_csv(built / "results" / "errata" / "errata.csv")
     assert list(errata_csv.test) == list(table.test)
     np.testing.assert_allclose(errata_csv.value, table.value.astype(float), rtol=1e-5)
+
+
+def test_figure_wrapping_leaves_no_orphans(root, table):
+    """The errata figures wrap each field without a last line of a word or two ("1/2", "(N.E)"),
+    and the wrapped lines hold every word of the field in order."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("errata_script", root / "workflow" / "scripts" / "errata.py")
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    for key, width in (("printed", 82), ("correct", 82), ("consequence", 82), ("location", 25)):
+        for text in table[key].astype(str):
+            lines = script.wrap(text, width)
+            assert "".join(lines).replace(" ", "") == text.replace(" ", "")  # (hyphens may end a line)
+            assert all(len(line) <= width for line in lines if " " in line), text
+            assert len(lines) == 1 or len(lines[-1]) >= width / 3, (text, lines)
