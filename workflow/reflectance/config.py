@@ -716,7 +716,7 @@ def _grid_sizes(config):
     for name, span in (("step_deg", st["fine_from_deg"]),
                        ("fine_step_deg", 90.0 - st["fine_from_deg"])):
         yield (f"figures.cook_torrance_1982.fig5.strip.{name}", f"{st[name]:g} degrees",
-               [(grid_points(max(span, 0.0), st[name]), "angles"), (len(fig5["rows"]), "rows"),
+               [(grid_points(max(span, 0.0), st[name]), "angles"), (len(fig5["rows"]) + len(fig5["variant_rows"]), "rows"),
                 (wl, "wavelengths")])
     yield ("figures.cook_torrance_1982.fig5.surface_angle_step_deg",
            f"{fig5['surface_angle_step_deg']:g} degrees",

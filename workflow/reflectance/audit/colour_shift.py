@@ -143,6 +143,32 @@ def approximation_onset_CookTorrance1982(material: Material, average_range_nm: S
     return out
 
 
+def approximation_agreement(strip: pd.DataFrame, bound_dE00: float,
+                            method: str = "approximation") -> dict[str, float]:
+    """Where a row of a colour table (:func:`colour_table`, over an angle sweep) stays "similar"
+    to the exact row, C&T 1982's word for Fig. 5c against 5b, read as CIEDE2000 below ``bound_dE00``.
+
+    Returns
+    -------
+    dict
+        ``agree_deg``: the largest swept angle up to which every sample's
+        ``dE2000_vs_exact`` is below the bound (from 0 degrees on); ``worst_dE00`` and
+        ``worst_deg``: the largest difference of the sweep and its angle.
+    """
+    rows = strip[strip.method == method].sort_values("angle_deg")
+    if rows.empty:
+        raise ValueError(f"colour table holds no {method!r} row")
+    angles, dE = rows.angle_deg.to_numpy(float), rows.dE2000_vs_exact.to_numpy(float)
+    above = np.flatnonzero(dE >= bound_dE00)
+    last = len(angles) - 1 if above.size == 0 else above[0] - 1
+    if last < 0:
+        raise ValueError(f"{method!r} differs from the exact row by {dE[0]:.3g} >= {bound_dE00:g} "
+                         f"at {angles[0]:g} degrees already")
+    worst = int(np.argmax(dE))
+    return {"agree_deg": float(angles[last]), "worst_dE00": float(dE[worst]),
+            "worst_deg": float(angles[worst])}
+
+
 #: How the colour of each row of Fig. 5 and of ``reflectance colour`` is obtained.
 COLOUR_METHODS = {
     "exact": "exact complex-index Fresnel per wavelength (C&T 1982 Fig. 5b)",
