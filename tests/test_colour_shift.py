@@ -175,10 +175,13 @@ def test_fig5c_onset_by_hand(root, tmp_path):
 
     config = yaml.safe_load((root / "config.yaml").read_text())
     fig = config["figures"]["cook_torrance_1982"]["fig5"]
-    out = {k: str(tmp_path / f"{k}.{ext}") for k, ext in (
-        ("png", "png"), ("pdf", "pdf"), ("csv", "csv"), ("exr", "exr"), ("strip", "csv"),
-        ("approximation", "csv"), ("values", "values.rst"))}
-    out["strip"], out["approximation"] = str(tmp_path / "strip.csv"), str(tmp_path / "approx.csv")
+    from pathlib import Path
+
+    from reflectance.papers.figures import figure, params_of
+
+    # every output the rule declares, by the figure's own definition, in tmp_path
+    declared = figure("ct82_fig5bc").outputs(params_of(figure("ct82_fig5bc"), config))
+    out = {k: str(tmp_path / f"{k}{Path(v).suffix}") for k, v in declared.items()}
     snakemake = SimpleNamespace(
         params=SimpleNamespace(fig=fig, colour=config["colour"], wavelengths=config["wavelengths"]),
         input=SimpleNamespace(spectrum=str(root / "spectra" / f"{fig['material']}.csv")),

@@ -117,7 +117,7 @@ with script_log(snakemake) as log:
     # --- the default figure: the paper's rows, and why (c) stays copper ---
     fig = new_figure(PRINT_WIDTH_IN, 1.5 + 0.42 * len(rows) + 1.9)
     cells = fig.add_gridspec(2, 3, width_ratios=ratios, height_ratios=[0.42 * len(rows), 1.9],
-                             wspace=0.14, hspace=0.42, left=0.14, right=0.995, top=0.86, bottom=0.1)
+                             wspace=0.14, hspace=0.42, left=0.14, right=0.995, top=0.83, bottom=0.1)
     strips = draw_rows(fig, [cells[0, k] for k in range(3)], table, strip, rows, angles,
                        fine_from, fine_step)
     n, F0 = written.n_average, written.F0_average
@@ -153,7 +153,7 @@ with script_log(snakemake) as log:
                  f"angle ({colour_cfg['illuminant']}, {colour_cfg['space']})\n(c) is within \u0394E$_{{00}}$ "
                  f"{written.agreement_dE00:g} of (b) up to {written.agree_deg:.0f}\u00b0; above, (c) keeps its "
                  f"0\u00b0 colour while (b) whitens (\u0394E$_{{00}}$ up to {written.worst_dE00:.1f}, "
-                 f"at {written.worst_deg:.1f}\u00b0): F of the fitted index is below F$_0$ until "
+                 f"at {written.worst_deg:.1f}\u00b0),\nbecause F of the k = 0 index fitted to F$_0$ stays below F$_0$ until "
                  f"{written.onset_deg:.2f}\u00b0", y=0.995, va="top", fontsize=TEXT_SIZE["annotation"] + 1)
     savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=tag)
 
