@@ -245,6 +245,13 @@ def _expected(cwd):
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
     _, F0_a, F0_b = colour.XYZ_to_Lab(b[["F0_X", "F0_Y", "F0_Z"]].to_numpy(float), d65)
     onset = read("fig5bc_approximation.csv").iloc[0]
+    strip = read("fig5bc_strip.csv")
+    rows = {m: strip[strip.method == m].sort_values("angle_deg") for m in ("exact", "approximation")}
+    angles = rows["exact"].angle_deg.to_numpy(float)
+    lab = {m: colour.XYZ_to_Lab(r[["X", "Y", "Z"]].to_numpy(float), d65) for m, r in rows.items()}
+    dE = colour.delta_E(lab["exact"], lab["approximation"], method="CIE 2000")
+    bound = config["figures"]["cook_torrance_1982"]["fig5"]["agreement_dE00"]
+    agree, worst = angles[np.argmax(dE >= bound) - 1], int(np.argmax(dE))
     vases = read("fig7.csv").set_index("vase")
     span = vases.L99 - vases.L10
     munsell = pd.read_csv(cwd / "spectra" / "sources.csv").set_index("material").dataset
@@ -278,6 +285,10 @@ def _expected(cwd):
             "dip": f"{-onset.dip:.2f}", "dip_deg": f"{onset.dip_deg:.1f}",
             "onset_deg": f"{onset.onset_deg:.2f}", "last_deg": f"{90 - onset.onset_deg:.2f}",
             "half_deg": f"{onset['t_0.5_deg']:.2f}",
+            # "similar" read as CIEDE2000 below the config's bound: colour-science's own
+            # XYZ -> Lab -> CIE 2000 on the strip's XYZ, not the job's dE column
+            "agreement_dE00": f"{bound:g}", "agree_deg": f"{agree:g}",
+            "worst_dE00": f"{dE[worst]:.1f}", "worst_deg": f"{angles[worst]:.1f}",
         },
         "fig7": {
             **{f"{v}_notation": munsell[v].removeprefix("Munsell ")

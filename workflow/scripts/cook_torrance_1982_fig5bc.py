@@ -151,7 +151,7 @@ with script_log(snakemake) as log:
                borderaxespad=0, handlelength=1.6)
     fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {name} against the incidence "
                  f"angle ({colour_cfg['illuminant']}, {colour_cfg['space']})\n(c) is within \u0394E$_{{00}}$ "
-                 f"{written.agreement_dE00:g} of (b) up to {written.agree_deg:.0f}\u00b0; above, (c) keeps its "
+                 f"{written.agreement_dE00:g} of (b) up to {written.agree_deg:g}\u00b0; above, (c) keeps its "
                  f"0\u00b0 colour while (b) whitens (\u0394E$_{{00}}$ up to {written.worst_dE00:.1f}, "
                  f"at {written.worst_deg:.1f}\u00b0),\nbecause F of the k = 0 index fitted to F$_0$ stays below F$_0$ until "
                  f"{written.onset_deg:.2f}\u00b0", y=0.995, va="top", fontsize=TEXT_SIZE["annotation"] + 1)
@@ -177,6 +177,6 @@ with script_log(snakemake) as log:
         "dip": f"{-written.dip:.2f}", "dip_deg": f"{written.dip_deg:.1f}",
         "onset_deg": f"{written.onset_deg:.2f}", "last_deg": f"{90 - written.onset_deg:.2f}",
         "half_deg": f"{written['t_0.5_deg']:.2f}", "agreement_dE00": f"{written.agreement_dE00:g}",
-        "agree_deg": f"{written.agree_deg:.0f}", "worst_dE00": f"{written.worst_dE00:.1f}",
+        "agree_deg": f"{written.agree_deg:g}", "worst_dE00": f"{written.worst_dE00:.1f}",
         "worst_deg": f"{written.worst_deg:.1f}",
         "fractions": " and ".join(c[2:-4] for c in written.index if c.startswith("t_"))})
