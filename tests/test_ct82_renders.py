@@ -50,7 +50,8 @@ def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
                           values=str(tmp / "fig7.values.rst"),
                           exrs=[str(tmp / f"{v}.exr") for v in VASES],
                           scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES],
-                          pngs=[str(tmp / f"{v}.png") for v in VASES])
+                          pngs=[str(tmp / f"{v}.png") for v in VASES],
+                          variants_png=str(tmp / "fig7_variants.png"))
     reference, published, readings = reading_params(reading)
     snakemake = SimpleNamespace(
         input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")),
