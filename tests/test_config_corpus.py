@@ -191,6 +191,10 @@ CORPUS = [
     ("unknown-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidean", 2.0),
      r"fig7\.vase_exposure: 'Obsidean' is not a vase of fig7; known: Cu, .*Obsidian"),
     ("zero-vase-exposure", set_(f"{CT}.fig7.vase_exposure.Obsidian", 0), r"fig7\.vase_exposure\.Obsidian: 0 is less than or equal"),
+    ("vase-exposure-without-reason", set_(f"{CT}.fig7.vase_exposure.Rubber", 1.2),
+     r"fig7\.vase_exposure_reasons: 'Rubber' has a factor in vase_exposure but no reason$"),
+    ("unknown-rolloff", set_(f"{CT}.fig7.exposure.metal.highlight_rolloff", "Reinhard"),
+     r"fig7\.exposure\.metal\.highlight_rolloff: 'Reinhard' is not one of"),
     ("readme-vase", set_("readme.strip.fig7_vases[1]", "Bronze"),
      r"^config\.yaml: readme\.strip\.fig7_vases\[1\]: 'Bronze' is not a vase of Cook & Torrance "
      r"1982 Fig\. 7; known: Cu, .*, Rubber, "),

@@ -50,7 +50,8 @@ def run_fig7(tmp, reading="irradiance", size=(48, 64, 1)):
                           values=str(tmp / "fig7.values.rst"),
                           exrs=[str(tmp / f"{v}.exr") for v in VASES],
                           scenes=[str(tmp / f"{v}.scene.yaml") for v in VASES],
-                          pngs=[str(tmp / f"{v}.png") for v in VASES])
+                          pngs=[str(tmp / f"{v}.png") for v in VASES],
+                          variants_png=str(tmp / "fig7_variants.png"))
     reference, published, readings = reading_params(reading)
     snakemake = SimpleNamespace(
         input=SimpleNamespace(sources=str(SPECTRA / "sources.csv")),
@@ -373,6 +374,21 @@ def object_lab(codes, XYZ):
     return codes, colour.XYZ_to_Lab(shown, sRGB.whitepoint)
 
 
+def row_misfit(image, png):
+    """The least, over every place in ``image`` (H, W, 3 codes), of the largest code difference
+    between it and the middle row of the vase PNG ``png`` (its object's span): 0 where the
+    vase is drawn pixel for pixel."""
+    from numpy.lib.stride_tricks import sliding_window_view
+    from PIL import Image
+
+    vase = np.asarray(Image.open(png).convert("RGB"), dtype=int)
+    row = vase[vase.shape[0] // 2]
+    span = np.flatnonzero(row.sum(axis=-1))
+    row = row[span[0]:span[-1] + 1]
+    windows = sliding_window_view(image, (len(row), 3), axis=(1, 2))[:, :, 0]
+    return int(min(np.abs(line - row).max(axis=(1, 2)).min() for line in windows))
+
+
 def shown_lab(png, exr):
     """:func:`object_lab` of a written PNG and its EXR."""
     from PIL import Image
@@ -515,10 +531,11 @@ def test_fig7_default_every_vase_reads(fig7_published, vase):
 
 def test_fig7_default_variants_are_out_of_the_papers_grid(fig7_published, tmp_path,
                                                          monkeypatch):
-    """Issue 28: the paper's grid is six metals over six nonmetals; the variants (hematite) sit
-    in a row of their own below it. On the built figure: it is six vases wide (each vase drawn
-    pixel for pixel, 1.04 of its width per column); in its layout: rows 0 and 1 hold exactly
-    the paper's twelve, every variant a later row."""
+    """Issue 28: the paper's figure is six metals over six nonmetals and nothing else; the
+    variants (hematite) are in a file of their own, fig7_variants.png, each beside the paper's
+    vase of its Table I row. On the built figure: it is six vases wide (each vase drawn pixel
+    for pixel, 1.04 of its width per column) and two rows of vases high at most; in its layout:
+    rows 0 and 1 hold exactly the paper's twelve, and the variants' figure holds every variant."""
     from PIL import Image
 
     # the figure's drawing (its script's call) lays out the grid with the image_grid it imported
@@ -526,6 +543,15 @@ def test_fig7_default_variants_are_out_of_the_papers_grid(fig7_published, tmp_pa
 
     with Image.open(fig7_published.png) as grid, Image.open(fig7_published.pngs[0]) as vase:
         assert round(grid.width / (1.04 * vase.width)) == 6, (grid.size, vase.size)
+    # pixel for pixel: each paper vase's middle row is in fig7.png; each variant's is not, but
+    # is in fig7_variants.png
+    figure, apart = (np.asarray(Image.open(path).convert("RGB"), dtype=int)
+                     for path in (fig7_published.png, fig7_published.variants_png))
+    for vase, png in zip(VASES, fig7_published.pngs):
+        paper = "_" not in vase  # a variant's vase id is <Table I row>_<material>
+        assert (row_misfit(figure, png) <= 2) == paper, (vase, row_misfit(figure, png))
+        if not paper:
+            assert row_misfit(apart, png) <= 2, (vase, row_misfit(apart, png))
     grids, original = [], drawing.image_grid
     monkeypatch.setattr(drawing, "image_grid",
                         lambda cells, *a, **k: grids.append(cells) or original(cells, *a, **k))
@@ -537,8 +563,22 @@ def test_fig7_default_variants_are_out_of_the_papers_grid(fig7_published, tmp_pa
     metals = [names.get(m["material"], m["material"]) for m in CT82["fig7"]["metals"]]
     nonmetals = [names.get(r, r) for r in ROWS]
     extras = [names.get(e["material"], e["material"]) for e in CT82["fig7"]["extras"]]
-    assert rows[0] == metals and rows[1] == nonmetals, rows
-    assert sorted(sum((rows[r] for r in rows if r >= 2), [])) == sorted(extras), rows
+    assert rows == {0: metals, 1: nonmetals}, rows
+    apart = [label.split("\n")[0] for _, _, _, label in grids[1]]
+    assert len(grids) == 2 and set(extras) <= set(apart), (len(grids), apart)
+
+
+@pytest.mark.parametrize("metal", [m["material"] for m in CT82["fig7"]["metals"]])
+def test_fig7_default_metal_highlights_keep_a_gradient(fig7_published, metal):
+    """Issue 28, Fig. 6b's bound applied to Fig. 7's metals: under 2 % of each metal vase's
+    pixels have a channel at 255 (every one clipped on 7-11 % of its pixels, flat plateaus,
+    before), while its highlight still reads as a highlight: its brightest pixel has a channel
+    at or above 240/255."""
+    codes, _ = shown_lab(*(getattr(fig7_published, key)[VASES.index(metal)]
+                           for key in ("pngs", "exrs")))
+    clipped = (codes.max(axis=-1) >= 255).mean()
+    assert clipped < 0.02, f"{metal}: {clipped:.1%} of the vase has a channel at 255"
+    assert codes.max() >= 240, f"{metal}: the brightest code is {codes.max():.0f}"
 
 
 def test_fig7_default_carbon_is_its_f0s_grey(fig7_published):

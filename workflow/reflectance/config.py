@@ -406,6 +406,11 @@ def _table1_references(config):
     problems += [f"figures.cook_torrance_1982.fig7.vase_exposure: {vase!r} is not a vase of "
                  f"fig7; known: {', '.join(vases)}"
                  for vase in ct["fig7"].get("vase_exposure", {}) if vase not in vases]
+    factors, reasons = ct["fig7"].get("vase_exposure", {}), ct["fig7"].get("vase_exposure_reasons", {})
+    problems += [f"figures.cook_torrance_1982.fig7.vase_exposure_reasons: {vase!r} has "
+                 + ("a factor in vase_exposure but no reason" if vase in factors
+                    else "a reason but no factor in vase_exposure")
+                 for vase in sorted(set(factors) ^ set(reasons))]
     readings = list(ct["fig6"]["ambient_readings"]) + ["published"]
     if ct["fig8"]["ambient_reading"] not in readings:
         problems.append(f"figures.cook_torrance_1982.fig8.ambient_reading: "

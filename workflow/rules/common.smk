@@ -163,6 +163,14 @@ def ct82_reported(definition, params, outputs, fig, subcategory):
                     "file": {"png": "figure", "csv": "table"}[key],
                 },
             )
+    if "variants_png" in outputs:  # the default figure's variants, apart from the paper's grid
+        marked["variants_png"] = report(
+            outputs["variants_png"],
+            caption=f"../report/ct82_{fig}_variants.rst",
+            category="Cook & Torrance 1982",
+            subcategory=subcategory,
+            labels={"variant": "not in the paper", "file": "figure"},
+        )
     return marked
 
 

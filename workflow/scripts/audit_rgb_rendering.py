@@ -57,7 +57,8 @@ with script_log(snakemake) as log:
                      "exposure_scale": scale})
         d = scene.display
         kwargs = dict(expose=False, illuminant=d.illuminant, observer=scene.observer,
-                      wavelengths=scene.wavelengths, highlight_knee=d.highlight_knee)
+                      wavelengths=scene.wavelengths, highlight_knee=d.highlight_knee,
+                      highlight_rolloff=d.highlight_rolloff)
         shown.append((metal, [XYZ_to_display(x * scale, d.space, d.gamut_clip, **kwargs)
                               for x in (spectral, rgb)], np.where(vase, dE, np.nan)))
         log.info("%s: %s", metal, rows[-1])

@@ -74,7 +74,7 @@ def exr_display_RGB(XYZ: npt.ArrayLike,
     scale = float(header["display_exposure_scale"])
     RGB = XYZ_to_linear_RGB(XYZ * scale, d["space"], illuminant=white)
     if d.get("highlight_knee") is not None:
-        RGB = compress_highlights(RGB, d["highlight_knee"])
+        RGB = compress_highlights(RGB, d["highlight_knee"], d.get("highlight_rolloff", "tanh"))
     return RGB, d["space"], white, XYZ[..., 1] > 0
 
 

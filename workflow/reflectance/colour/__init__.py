@@ -48,6 +48,7 @@ _EXPORTS = {
     "expose_CookTorrance1982": "display",
     "expose_key": "display",
     "compress_highlights": "display",
+    "HIGHLIGHT_ROLLOFFS": "display",
     "gamut_clip_CookTorrance1982": "display",
     "gamut_clip_channels": "display",
     "gamut_clip_CSSColor4": "display",

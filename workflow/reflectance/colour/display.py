@@ -62,6 +62,7 @@ __all__ = [
     "expose_CookTorrance1982",
     "expose_key",
     "compress_highlights",
+    "HIGHLIGHT_ROLLOFFS",
     "gamut_clip_CookTorrance1982",
     "gamut_clip_channels",
     "gamut_clip_CSSColor4",
@@ -348,30 +349,48 @@ def expose_key(XYZ: npt.NDArray[np.float64], percentile: float = 50.0,
     return XYZ * scale, scale
 
 
-def compress_highlights(RGB_linear: npt.ArrayLike, knee: float) -> npt.NDArray[np.float64]:
+#: The curves :func:`compress_highlights` bends a pixel's largest channel ``M`` above the knee
+#: ``k`` with, in ``x = (M - k) / (1 - k)``: each has slope 1 at the knee and tends to 1.
+#: ``tanh`` reaches 1 - 1e-3 at x = 3.8 (a highlight 3.8 (1 - k) above the knee is white);
+#: ``Reinhard2002``, x / (1 + x) (Reinhard et al. 2002, "Photographic tone reproduction for
+#: digital images", eq. 3, L / (1 + L)), only at x = 999: a bright highlight keeps a gradient.
+HIGHLIGHT_ROLLOFFS = {
+    "tanh": np.tanh,
+    "Reinhard2002": lambda x: x / (1.0 + x),
+}
+
+
+def compress_highlights(RGB_linear: npt.ArrayLike, knee: float,
+                        rolloff: str = "tanh") -> npt.NDArray[np.float64]:
     """Bring colours above ``knee`` smoothly below the display maximum at constant chromaticity.
 
     Each pixel's linear RGB is multiplied by ``g(M) / M`` with ``M`` its largest channel and
-    ``g(M) = M`` up to the knee, ``g(M) = k + (1 - k) tanh((M - k) / (1 - k))`` above it (slope 1 at
-    the knee, tending to 1). Scaling all three channels by one factor keeps the chromaticity, so
-    the dominant wavelength and purity (and, where CIELAB is a cube root, the CIELAB hue) of a
-    highlight stay those of the scene: a copper highlight stays copper instead of being clipped
-    to white. Colours with a negative channel keep it (the gamut clip handles them).
+    ``g(M) = M`` up to the knee, ``g(M) = k + (1 - k) f((M - k) / (1 - k))`` above it, ``f`` the
+    ``rolloff`` of :data:`HIGHLIGHT_ROLLOFFS` (slope 1 at the knee, tending to 1). Scaling all
+    three channels by one factor keeps the chromaticity, so the dominant wavelength and purity
+    (and, where CIELAB is a cube root, the CIELAB hue) of a highlight stay those of the scene: a
+    copper highlight stays copper instead of being clipped to white. Colours with a negative
+    channel keep it (the gamut clip handles them).
 
     Examples
     --------
     >>> compress_highlights([[0.4, 0.2, 0.1], [1.0, 0.5, 0.25]], 0.8).round(4)
     array([[ 0.4   ,  0.2   ,  0.1   ],
            [ 0.9523,  0.4762,  0.2381]])
+    >>> compress_highlights([[1.0, 0.5, 0.25]], 0.5, "Reinhard2002").round(4)
+    array([[ 0.75  ,  0.375 ,  0.1875]])
     """
     RGB = _as_triplets(RGB_linear, "RGB_linear")
     k = float(knee)
     if not 0.0 < k < 1.0:
         raise ValueError(f"highlight knee must lie in (0, 1), got {knee!r}")
+    if not isinstance(rolloff, str) or rolloff not in HIGHLIGHT_ROLLOFFS:
+        raise ValueError(f"highlight rolloff: unknown {rolloff!r}; known: "
+                         f"{', '.join(HIGHLIGHT_ROLLOFFS)}")
     M = RGB.max(axis=-1, keepdims=True)
     above = np.isfinite(M) & (M > k)
     safe = np.where(above, M, 1.0)
-    g = k + (1.0 - k) * np.tanh((safe - k) / (1.0 - k))
+    g = k + (1.0 - k) * HIGHLIGHT_ROLLOFFS[rolloff]((safe - k) / (1.0 - k))
     return np.where(above, RGB * (g / safe), RGB)
 
 
@@ -695,6 +714,7 @@ def XYZ_to_display(
     observer: str = OBSERVER_DEFAULT,
     wavelengths: npt.ArrayLike | None = None,
     highlight_knee: float | None = None,
+    highlight_rolloff: str = "tanh",
 ) -> npt.NDArray[np.float64]:
     """Scene XYZ to encoded display RGB in [0, 1]: expose, linear RGB, gamut clip, encode.
 
@@ -713,6 +733,8 @@ def XYZ_to_display(
     highlight_knee : float, optional
         Compress colours above this linear level at constant chromaticity
         (:func:`compress_highlights`) before the gamut clip.
+    highlight_rolloff : str
+        The curve above the knee, one of :data:`HIGHLIGHT_ROLLOFFS`.
 
     Returns
     -------
@@ -735,7 +757,7 @@ def XYZ_to_display(
         XYZ, _scale = expose_CookTorrance1982(XYZ, space, illuminant, observer, wavelengths)
     RGB = XYZ_to_linear_RGB(XYZ, space, illuminant, observer, wavelengths)
     if highlight_knee is not None:
-        RGB = compress_highlights(RGB, highlight_knee)
+        RGB = compress_highlights(RGB, highlight_knee, highlight_rolloff)
     return encode(gamut_clip(RGB, clip, space), space)
 
 

@@ -99,7 +99,7 @@ def image_display_RGB(XYZ: npt.NDArray[np.float64], display: Any, observer: str 
         band = XYZ[start:start + rows]
         RGB = XYZ_to_linear_RGB(band * factor if factor != 1.0 else band, d.space, **kwargs)
         if d.highlight_knee is not None:
-            RGB = compress_highlights(RGB, d.highlight_knee)
+            RGB = compress_highlights(RGB, d.highlight_knee, d.highlight_rolloff)
         RGB = gamut_clip(RGB, d.gamut_clip, d.space)
         out[start:start + rows] = encode(RGB, d.space, d.transfer) if encoded else RGB
     return out, scale

@@ -156,6 +156,7 @@ class Display:
     highlight_knee: float | None = None  # reflectance.colour.display.compress_highlights
     white: float | None = None  # display luminance of a white card: shading.white_card_luminance
     transfer: str = "display"  # reflectance.colour.display.TRANSFERS: encode's transfer
+    highlight_rolloff: str = "tanh"  # reflectance.colour.display.HIGHLIGHT_ROLLOFFS
 
 
 @dataclass(frozen=True, eq=False)
@@ -619,7 +620,8 @@ def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>",
     if white is not None and any(light.area is not None for light in lights):
         check.add(["display", "white"], "a white card needs every light's solid_angle")
     display = Display(d["space"], d["gamut_clip"], d["expose"], display_white,
-                      d["png_bit_depth"], key, d.get("highlight_knee"), white, d["transfer"])
+                      d["png_bit_depth"], key, d.get("highlight_knee"), white, d["transfer"],
+                      d.get("highlight_rolloff", "tanh"))
 
     cache: dict[str, Any] = {}
     objects: list[SceneObject] = []

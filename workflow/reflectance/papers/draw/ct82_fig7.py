@@ -98,8 +98,13 @@ def variant(snakemake, log, out, reference, published, items):
         metered = {g: (f"white card at {e['white']['luminance']:g}" if "white" in e
                        else f"median at {e['key']['luminance']:g}")
                    for g, e in p.fig["exposure"].items()}
-        departures = ", ".join(f"{p.fig['labels'].get(r['material'], r['material']).lower()} {f:g}x"
-                               for r, f in zip(rows, factors) if f != 1)
+        # each factor with its reason (config fig7.vase_exposure_reasons): a departure from one
+        # exposure per row, said where the reader sees it
+        reasons = p.fig.get("vase_exposure_reasons", {})
+        departures = ", ".join(
+            f"{p.fig['labels'].get(r['material'], r['material']).lower()} {f:g}x"
+            + (f" ({reasons[r['vase']]})" if r["vase"] in reasons else "")
+            for r, f in zip(rows, factors) if f != 1)
         title = ("Cook & Torrance 1982, Fig. 7 \u2014 one exposure per row:\nmetals "
                  f"{metered['metal']}, nonmetals {metered['nonmetal']}"
                  + (f";\nper vase: {departures}" if departures else ""))
@@ -118,27 +123,47 @@ def variant(snakemake, log, out, reference, published, items):
     table.pipe(write_csv, out["csv"], float_format="%.6g")
 
     # the paper's grid: metals in the first row, nonmetals in the second; the variants (not in the
-    # paper) apart, in a row of their own below it under their own heading (issue 28)
+    # paper): in the default figure, a file of their own (issue 28), each beside the paper's vase
+    # of its Table I row; in a reading's grid (one scene), a row of their own below it
+    vases = [row["vase"] for row in rows]
     n_cols = max(groups.count("metal"), groups.count("nonmetal"))
-    row_of = {"metal": 0, "nonmetal": 1, "extra": 2}
-    slots, cells, headings = {"metal": 0, "nonmetal": 0, "extra": 0}, [], []
-    for rgb, group, text in zip(shown, groups, labels):
-        row, col = row_of[group], slots[group]
-        slots[group] += 1
-        if group not in [h[2] for h in headings]:  # the group's heading over its first vase
-            headings.append((row, col, group))
-        cells.append((row, col, rgb, text))
-    n_rows = max(row_of[g] for g in groups) + 1
-    styles = {"metal": {"x": 0.01}, "nonmetal": {"x": 0.01},
-              "extra": {"x": 0.01, "color": "#ffcc66"}}
     # the grid drawn at the print width, the vases pixel for pixel, so its text prints at its size
     dpi = shown[0].shape[1] * n_cols * 1.04 / PRINT_WIDTH_IN
-    fig = image_grid(cells, n_rows, n_cols, title,
-                     headings=[(r, c, GROUPS[g], styles[g]) for r, c, g in headings],
-                     crop=covered_rows(images), foot=0.6 if published else 0.4,
-                     top=0.12 + 0.22 * (title.count("\n") + 1), dpi=dpi,
-                     label_size=TEXT_SIZE["table"])
-    savefig(fig, out["png"], dpi=dpi, tag=display_tag(colour_cfg["space"]))
+    crop = covered_rows(images)
+    grid = [g for g in groups if g != "extra" or not published]
+    draw(out["png"], title, [(group, rgb, text) for group, rgb, text in zip(groups, shown, labels)
+                             if group in grid], n_cols, crop, dpi, published, colour_cfg)
+    if published and "extra" in groups:  # (the rule's outputs have variants_png then)
+        spectra = p.fig.get("table1_spectra", {})
+        pairs = []
+        for extra in p.fig["extras"]:
+            paper = vases.index(spectra.get(extra["table1"], extra["table1"]))
+            variant_k = vases.index(f"{extra['table1']}_{extra['material']}")
+            pairs += [(f"row{len(pairs) // 2}", shown[k], text) for k, text in (
+                (paper, f"{labels[paper]}\n(as in Fig. 7)"), (variant_k, labels[variant_k]))]
+        draw(out["variants_png"], "Not in the paper:\nC&T 1982 Fig. 7, variants",
+             pairs, 2, crop, dpi, published, colour_cfg,
+             headings={g: "Table I's s, d, m" for g, _, _ in pairs})
+
+
+def draw(path, title, vases, n_cols, crop, dpi, published, colour_cfg, headings=None):
+    """A grid of ``vases`` (group, encoded RGB, label), a row per group in order of first
+    appearance and at most ``n_cols`` a row, with each group's heading (``headings``, default
+    :data:`GROUPS`) over its first vase, written to ``path`` at ``dpi``."""
+    headings = headings or GROUPS
+    order = list(dict.fromkeys(group for group, _, _ in vases))
+    slots, cells, heads = dict.fromkeys(order, 0), [], []
+    for group, rgb, text in vases:
+        row, col = order.index(group), slots[group]
+        if col == 0:
+            heads.append((row, col, headings[group],
+                          {"x": 0.01, **({"color": "#ffcc66"} if group == "extra" else {})}))
+        slots[group] += 1
+        cells.append((row, col, rgb, text))
+    fig = image_grid(cells, len(order), n_cols, title, headings=heads, crop=crop,
+                     foot=0.6 if published else 0.4, top=0.12 + 0.22 * (title.count("\n") + 1),
+                     dpi=dpi, label_size=TEXT_SIZE["table"])
+    savefig(fig, path, dpi=dpi, tag=display_tag(colour_cfg["space"]))
 
 
 def run(snakemake: Any, log: logging.Logger) -> None:
@@ -153,8 +178,9 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     for prefix, reference, published in variants:
         log.info("variant %s (ambient reference %s)", prefix.rstrip("_") or "published", reference)
         out = {key: getattr(snakemake.output, prefix + key) for key in ("png", "csv", "exrs", "scenes")}
-        if published:  # the default figure alone writes each vase's PNG
+        if published:  # the default figure alone writes each vase's PNG and its variants'
             out["pngs"] = getattr(snakemake.output, "pngs")
+            out["variants_png"] = getattr(snakemake.output, "variants_png", None)
         variant(snakemake, log, out, reference, published,
                 [item for item in scenes if item.tags["prefix"] == prefix])
     log.info("%d distinct traces for %d variants", len(TRACES), len(variants))

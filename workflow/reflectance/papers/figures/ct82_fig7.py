@@ -61,8 +61,10 @@ def outputs(params):
         out.update({f"{prefix}png": f"{OUT}/{stem}.png", f"{prefix}csv": f"{OUT}/{stem}.csv",
                     f"{prefix}exrs": [f"{OUT}/{stem}/{v}.exr" for v in vases(params)],
                     f"{prefix}scenes": [f"{OUT}/{stem}/{v}.scene.yaml" for v in vases(params)]})
-        if published:  # the default figure alone writes each vase's PNG
+        if published:  # the default figure alone writes each vase's PNG, and its variants
             out["pngs"] = [f"{OUT}/{stem}/{v}.png" for v in vases(params)]
+            if params["fig"]["extras"]:  # apart from the paper's grid (issue 28)
+                out["variants_png"] = f"{OUT}/{stem}_variants.png"
     return out
 
 
