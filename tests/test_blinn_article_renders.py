@@ -18,7 +18,7 @@ import pytest
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from PIL import Image
+from PIL import Image, ImageSequence
 
 from reflectance.io.images import read_exr
 from reflectance.render.scene import constant_index_material
@@ -288,6 +288,30 @@ def test_sweep_gif_frames_and_determinism(tmp_path):
         c = np.cos(np.radians(part.light_angle_deg.to_numpy()) / 2)
         np.testing.assert_allclose(part.mirror_highlight, q["p_s"] * fresnel_sin_tan(np.arccos(c), q["n"]) / c,
                                    rtol=1e-5)
+
+
+def test_sweep_frames_labels_true_of_pixels_and_unclipped(tmp_path):
+    """Each GIF frame's four images share one exposure (so grey order is i order), no object pixel
+    sits at 255, and MgO's Torrance-Sparrow peak, measured on the frame's pixels, is above
+    aluminium's exactly where the table (and so the "MgO > Al" label) says so."""
+    sweep, out = _run_sweep(tmp_path, n_frames=8)
+    table = pd.read_csv(out["csv"])
+    with Image.open(out["gif"]) as gif:
+        frames = [np.asarray(frame.convert("L")).copy() for frame in ImageSequence.Iterator(gif)]
+    label_w, head, gap = 96, 20, 4  # the GIF's layout
+    w = (frames[0].shape[1] - label_w - gap) // 2
+    h = (frames[0].shape[0] - head - 22 - 2 * gap) // 2
+    for f, frame in enumerate(frames):
+        cell = {(key, k): frame[head + r * (h + gap):head + r * (h + gap) + h,
+                                label_w + k * (w + gap):label_w + k * (w + gap) + w]
+                for r, key in enumerate(sweep["panels"]) for k in range(2)}
+        obj = np.concatenate([c[c > 0] for c in cell.values()])
+        assert (obj == 255).mean() < 0.02, f
+        rows = table[table.frame == f].set_index("panel")
+        # brighter on screen exactly when brighter in i (ties aside)
+        ts_a, ts_b = rows.torrance_sparrow_max["a"], rows.torrance_sparrow_max["b"]
+        if abs(ts_b / ts_a - 1) > 0.05:
+            assert (cell["b", 1].max() > cell["a", 1].max()) == (ts_b > ts_a), f
 
 
 def test_mgo_passes_aluminium_only_near_grazing_light():
