@@ -144,15 +144,13 @@ def run(snakemake: Any, log: logging.Logger) -> None:
 
     # the caption's number (workflow/report/blinn77_fig7_sweep.rst), from the table as written
     written = pd.read_csv(out.csv)
-    ratio = (written[written.panel == "b"].torrance_sparrow_max.to_numpy()
-             / written[written.panel == "a"].torrance_sparrow_max.to_numpy())
+    # the frames where MgO's rendered Torrance-Sparrow peak is above aluminium's
+    brighter = (written[written.panel == "b"].torrance_sparrow_max.to_numpy()
+                > written[written.panel == "a"].torrance_sparrow_max.to_numpy())
     angle = written[written.panel == "a"].light_angle_deg.to_numpy()
     write_caption_values(out.values, {
         "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
-        # the rendered Torrance-Sparrow peaks: MgO's over aluminium's at the last frame, and the
-        # frames where MgO's rendered peak is the brighter
-        "last_angle": f"{angle[-1]:.0f}", "last_ratio": f"{ratio[-1]:.2f}",
-        "rendered_mgo_brighter": ", ".join(f"{a:.0f}" for a in angle[ratio > 1]) or "none"})
+        "rendered_mgo_brighter": ", ".join(f"{a:.0f}" for a in angle[brighter]) or "none"})
 
 
 def _claim(rows: list[dict], angle: float, crossover: float | None) -> str:
