@@ -13,12 +13,11 @@ import numpy as np
 import pandas as pd
 from PIL import Image, ImageDraw, ImageFont
 
-from reflectance.colour.display import display_tag
+from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.atomic import atomic_write
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.integrator import shade_samples
-from reflectance.render.pipeline import RenderResult, display_image
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import blinn77_fig7_sweep as definition
 from reflectance.papers.scenes import (highlight_crossover_Blinn1977, mirror_highlight_Blinn1977,
@@ -53,7 +52,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     crossover = (highlight_crossover_Blinn1977(fig7["panels"]["a"], fig7["panels"]["b"])
                  if len(panels) == 2 else None)
     font = ImageFont.load_default(size=13)
-    frames, rows, greys = [], [], {}  # greys: the frame's images without text, for the contact sheet
+    frames, rows, greys, labels = [], [], {}, []  # greys: the frame's images without text, for the contact sheet
     h, w = cam["height"], cam["width"]
     label_w, head, foot, gap = 96, 20, 22, 4
     for f, angle in enumerate(angles):
@@ -61,30 +60,38 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         draw = ImageDraw.Draw(canvas)
         for k, name in enumerate(MODELS.values()):
             draw.text((label_w + k * (w + gap) + w / 2, 3), name, fill=255, font=font, anchor="ma")
-        for r, (key, p) in enumerate(zip(cfg["panels"], panels)):
-            Y = {}
-            for k, model in enumerate(MODELS):
+        # shade the frame's four images first: they share one exposure (white = the frame's
+        # brightest i), compressed above fig7_sweep.highlight_knee, so materials and models
+        # compare fairly and no highlight clips
+        Y = {}
+        for key in cfg["panels"]:
+            for model in MODELS:
                 scene = scenes[key, model]
                 one = dataclasses.replace(scene, lights=(scene.lights[f],))
-                XYZ = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))
-                rgb = display_image(RenderResult(XYZ, None, {}, {}, one))[0]
-                image = np.round(255 * rgb[..., 1]).astype(np.uint8)  # grey: R = G = B
+                Y[key, model] = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))[..., 1]
+        white = max(y.max() for y in Y.values())
+        for r, (key, p) in enumerate(zip(cfg["panels"], panels)):
+            for k, model in enumerate(MODELS):
+                grey = encode(compress_highlights(np.repeat(Y[key, model][..., None], 3, -1) / white,
+                                                  cfg["highlight_knee"]), first.display.space)
+                image = np.round(255 * grey[..., 1]).astype(np.uint8)  # grey: R = G = B
                 canvas.paste(Image.fromarray(image), (label_w + k * (w + gap), head + r * (h + gap)))
                 greys[f, key, model] = image
-                Y[model] = XYZ[..., 1]
             draw.text((label_w - 6, head + r * (h + gap) + h / 2), p["label"].replace(" ", "\n", 1),
                       fill=255, font=font, anchor="rm", align="right")
-            diff, lit = np.abs(Y["phong"] - Y["torrance_sparrow"]), Y["phong"] > 0
+            phong, ts = Y[key, "phong"], Y[key, "torrance_sparrow"]
+            diff, lit = np.abs(phong - ts), phong > 0
             rows.append({"frame": f, "panel": key, "label": p["label"], "light_angle_deg": angle,
-                         "phong_max": Y["phong"].max(),
-                         "torrance_sparrow_max": Y["torrance_sparrow"].max(),
+                         "phong_max": phong.max(), "torrance_sparrow_max": ts.max(),
                          "max_abs_difference": diff.max(), "mean_abs_difference": diff[lit].mean(),
+                         "frame_white": white,
                          # Blinn's p_s D3 G F / (N.E) where N = H (D3 = G = 1): the brightest highlight
                          "mirror_highlight": float(mirror_highlight_Blinn1977(p["p_s"], p["n"], angle))})
-        bright = "" if crossover is None else (
-            "  MgO highlight > aluminium's" if angle > crossover else "")
+        label = _claim(rows[-len(panels):], angle, crossover)
         draw.text((label_w + w + gap / 2, canvas.size[1] - 3),
-                  f"light {angle:5.1f}\u00b0 from the eye{bright}", fill=230, font=font, anchor="md")
+                  f"light {angle:5.1f}\u00b0 from the eye{label and '  ' + label}", fill=230,
+                  font=font, anchor="md")
+        labels.append(label)
         frames.append(canvas)
     with atomic_write(out.gif) as tmp:
         frames[0].save(tmp, format="GIF", save_all=True, append_images=frames[1:],
@@ -113,9 +120,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     for n, f in enumerate(picks):
         c, r = n % cols, n // cols
         x0, y_top = label_in + c * (bw + block_gap), H - top - r * (head + len(panels) * (hi + gap))
-        past = crossover is not None and angles[f] > crossover
         fig.text((x0 + bw / 2) / W, (y_top - 0.02) / H, f"light {angles[f]:.0f}\u00b0"
-                 + (": MgO > Al" if past else ""), ha="center", va="top", color="white",
+                 + (labels[f] and ": " + labels[f]), ha="center", va="top", color="white",
                  fontsize=T["symbol"])
         for k, (model, name) in enumerate(MODELS.items()):
             fig.text((x0 + k * (wi + gap) + wi / 2) / W, (y_top - head + 0.03) / H, name,
@@ -138,4 +144,22 @@ def run(snakemake: Any, log: logging.Logger) -> None:
 
     # the caption's number (workflow/report/blinn77_fig7_sweep.rst), from the table as written
     written = pd.read_csv(out.csv)
-    write_caption_values(out.values, {"crossover": f"{written.crossover_deg.iloc[0]:.1f}"})
+    # the frames where MgO's rendered Torrance-Sparrow peak is above aluminium's
+    brighter = (written[written.panel == "b"].torrance_sparrow_max.to_numpy()
+                > written[written.panel == "a"].torrance_sparrow_max.to_numpy())
+    angle = written[written.panel == "a"].light_angle_deg.to_numpy()
+    write_caption_values(out.values, {
+        "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
+        "rendered_mgo_brighter": ", ".join(f"{a:.0f}" for a in angle[brighter]) or "none"})
+
+
+def _claim(rows: list[dict], angle: float, crossover: float | None) -> str:
+    """The frame's label, true of its pixels: "MgO > Al" only where MgO's rendered
+    Torrance-Sparrow peak exceeds aluminium's; past the computed crossover with aluminium's still
+    the brighter render, that the mirror points are not resolved."""
+    if crossover is None:
+        return ""
+    ts = {row["panel"]: row["torrance_sparrow_max"] for row in rows}
+    if ts["b"] > ts["a"]:
+        return "MgO > Al"
+    return "MgO > Al at N = H, unresolved" if angle > crossover else ""

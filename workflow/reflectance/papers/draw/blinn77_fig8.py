@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.display import display_tag
+from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.captions import write_caption_values
 from reflectance.optics.microfacet import c3_texture_Blinn1977, c3_to_beta_Blinn1977
 from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
@@ -41,7 +41,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                                 source=f"config.yaml figures.blinn_1977.fig8 pattern {part}")
         result = render_to_files(scene, out[f"{part}_scene"], out[f"{part}_exr"],
                                  out[f"{part}_png"], keep_trace=True)
-        images[part] = result.display[0]
+        images[part] = result.XYZ[..., 1]
         # Blinn 1977, C3 = C_min + (1 - C_min) t(u, v)
         maps[part] = c3_texture_Blinn1977(texture(u, v, pattern["method"], **pattern["parameters"]),
                                           cfg["c_min"])
@@ -51,6 +51,13 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                      "c_min": cfg["c_min"], "C3_min_on_map": maps[part].min(),
                      "C3_max_on_map": maps[part].max(), "max_i": Y.max(), "mean_i": Y[Y > 0].mean()})
         log.info("pattern %s: %s; timings %s", part, rows[-1], result.timings)
+    # one exposure for both renders: white = their brightest i, compressed above fig8.highlight_knee
+    white = max(Y.max() for Y in images.values())
+    images = {part: encode(compress_highlights(np.repeat(Y[..., None], 3, -1) / white,
+                                               cfg["highlight_knee"]), scene.display.space)
+              for part, Y in images.items()}
+    for row in rows:
+        row["white_i"] = white
     pd.DataFrame(rows).pipe(write_csv, out.csv, float_format="%.6g")
 
     # drawn at the print width (the renders pixel for pixel at DPI): its text prints at its size
@@ -80,11 +87,13 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                  f"Torrance-Sparrow, D3 with C3 = C_min + (1 \u2212 C_min) t(u, v), C_min = {cfg['c_min']:g}\n"
                  f"p_s = {cfg['p_s']:g}, p_d = {cfg['p_d']:g}, n = {snakemake.params.n:g}, "
                  f"p_a = {fig7['p_a']:g}; light {cfg['light']['angle_deg']:g}\u00b0 from the eye; "
-                 f"i = 1 is white", fontsize=T["symbol"], y=1 - 0.05 / H, va="top", linespacing=1.3)
+                 f"white i = {white:.2f}, knee {cfg['highlight_knee']:g}",
+                 fontsize=T["symbol"], y=1 - 0.05 / H, va="top", linespacing=1.3)
     savefig(fig, out.png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
 
     # the caption's numbers (workflow/report/blinn77_fig8.rst): the shiny parts' half-value angle
     # (C3 = C_min, the table's least C3)
     written = pd.read_csv(out.csv)
     write_caption_values(out.values, {
-        "shiny_beta": f"{np.degrees(c3_to_beta_Blinn1977(written.C3_min_on_map.min())):.0f}"})
+        "shiny_beta": f"{np.degrees(c3_to_beta_Blinn1977(written.C3_min_on_map.min())):.1f}",
+        "white_i": f"{written.white_i.iloc[0]:.2f}"})

@@ -38,9 +38,11 @@ def outputs(params):
 def scenes(params, spectra_dir=None):
     """One written scene per pattern (its outputs ``<pattern>_scene``, ``_exr``, ``_png``)."""
     fig, n, files = params["fig"], params["n"], outputs(params)
+    cam = params["fig7"]["camera"]  # fig7's camera, fig8.width pixels across at its aspect
+    camera = dict(cam, width=fig["width"], height=round(fig["width"] * cam["height"] / cam["width"]))
     return [FigureScene(f"fig8{part}", f"figures.blinn_1977.fig8.patterns.{part}",
                         blinn_scene_Blinn1977(params["fig7"],
                                               texture_material_Blinn1977(fig, pattern, n),
-                                              fig["light"], params["wavelengths"]),
+                                              fig["light"], params["wavelengths"], camera),
                         files[f"{part}_scene"], {"pattern": part})
             for part, pattern in fig["patterns"].items()]
