@@ -519,15 +519,14 @@ def _gold_sphere(out):
 def test_article_spheres_gold_reads_as_metal_not_a_flat_disc(spheres):
     """The review: outside its highlight the gold sphere was one flat colour (113, 95, 68), a
     khaki disc. Mirroring a sky (config metal_sphere.environment), its body outside the highlight
-    (luminance under half the peak) spans a luminance range: 90th percentile over 10th above 3
-    (a flat fill gives 1)."""
+    (luminance under half the peak) spans a luminance range: its median over its 10th percentile
+    above 3 (a flat fill covering most of the body gives 1)."""
     fig, out, _, _ = spheres
-    assert "environment" in fig["metal_sphere"]
     _, sphere, Y = _gold_sphere(out)
     body = Y[sphere & (Y < 0.5 * Y[sphere].max())]
     assert body.size > 200
-    p10, p90 = np.percentile(body, [10, 90])
-    assert p90 > 3.0 * p10, (p10, p90)
+    p10, p50 = np.percentile(body, [10, 50])
+    assert p50 > 3.0 * p10, (p10, p50)
 
 
 def test_article_spheres_gold_highlight_has_a_gradient_and_gold_hue(spheres):

@@ -85,7 +85,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
 
     sphere, Yg = chromatic(gold_image), results["metal"].XYZ[..., 1]
     bright = sphere & (Yg > 0.5 * Yg[sphere].max())
-    body = np.percentile(Yg[sphere & ~bright], [10, 90])
+    body = np.percentile(Yg[sphere & ~bright], [10, 50])
     clipped = float(np.mean(np.round(255 * gold_image[sphere]).max(-1) >= 255))
 
     # the sky cropped: the rows above the highest sphere go, leaving the gap between the panels
