@@ -112,8 +112,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         ax.set_axis_off()
         ax.set_title(label, size=STYLE["font.size"], pad=3)
         left += w + gap_px / w_px
-    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: \u201cspecular highlights on a pair "
-                 "of spheres\u201d, rendered (Cook\u2013Torrance), and the article's gold",
+    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: a pair of spheres, rendered, and the "
+                 "article's gold",
                  size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top")
     savefig(fig, out.png, dpi=w_px / width_in, tight=False, tag=display_tag(results["pair"].scene.display.space))
 
