@@ -52,6 +52,7 @@ from reflectance.geometry.vectors import unit_vector
 from reflectance.io.paths import package_data
 
 __all__ = [
+    "sky_dome_lights",
     "CONFIG_PATH",
     "PHONG_SPECULAR_READINGS",
     "display_from_colour",
@@ -535,6 +536,34 @@ def sweep_camera_Blinn1977(fig7: Mapping[str, Any], sweep: Mapping[str, Any]) ->
     return cam
 
 
+def sky_dome_lights(environment: Mapping[str, Any], spectrum: str) -> list[dict[str, Any]]:
+    """A gradient sky as ``environment["lights"]`` directional lights over the upper hemisphere.
+
+    The directions are a Fibonacci lattice on the hemisphere: light ``i`` at height
+    ``z_i = (i + 1/2) / N`` and azimuth ``i`` times the golden angle. Equal steps in z cut a
+    sphere into zones of equal area (Archimedes' hat-box theorem), so each light stands for the
+    solid angle ``2 pi / N``. The sky's radiance falls from ``zenith`` overhead to ``horizon``
+    linearly in z, the sine of the elevation (both in units of the key light's irradiance per
+    steradian; a choice: the article prints no environment). A light's intensity is that
+    radiance, its ``solid_angle`` ``2 pi / N``: the lights sum to the sky's irradiance.
+
+    Examples
+    --------
+    >>> dome = sky_dome_lights({"lights": 64, "zenith": 0.3, "horizon": 0.1}, "D65")
+    >>> z = np.array([d["direction"][2] for d in dome])
+    >>> print(len(dome), f"{z.min():.4f} {z.max():.4f}", f"{sum(d['solid_angle'] for d in dome):.4f}")
+    64 0.0078 0.9922 6.2832
+    """
+    n = int(environment["lights"])
+    z = (np.arange(n) + 0.5) / n
+    phi = np.arange(n) * np.pi * (3.0 - np.sqrt(5.0))  # the golden angle
+    r = np.sqrt(1.0 - z**2)
+    radiance = environment["horizon"] + (environment["zenith"] - environment["horizon"]) * z
+    return [{"direction": [float(r[i] * np.cos(phi[i])), float(r[i] * np.sin(phi[i])),
+                           float(z[i])], "spectrum": spectrum, "intensity": float(radiance[i]),
+             "solid_angle": float(2.0 * np.pi / n)} for i in range(n)]
+
+
 def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, Any],
                           colour: Mapping[str, Any], spectra_dir: str | None,
                           panel: str = "pair") -> dict[str, Any]:
@@ -547,6 +576,8 @@ def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, 
     if panel not in ("pair", "metal"):
         raise ValueError(f"panel: 'pair' or 'metal', got {panel!r}")
     camera = dict(cfg["camera"])
+    lights = [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}]
+    ambient = {"fraction": cfg["ambient_fraction"], "reference": "irradiance"}
     if panel == "pair":
         objects = [{"name": s["name"], "geometry": {"type": "sphere", "center": s["center"],
                                                      "radius": s["radius"]},
@@ -565,14 +596,15 @@ def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, 
                                  "distribution": cfg["distribution"],
                                  "convention": cfg["convention"], "m": metal["m"], "s": 1.0,
                                  "d": 0.0, "fresnel": "exact", "shadowing": "v-cavity"}}]
+        if "environment" in metal:  # a sky the metal mirrors: it stands in for the ambient term
+            lights += sky_dome_lights(metal["environment"], cfg["light"]["spectrum"])
+            ambient = {"fraction": 0.0, "reference": "irradiance"}
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
                                                    "normal": [0, 0, 1], "size": [16, 16],
                                                    "resolution": [32, 32]},
                     "material": {"model": "Lambert", "convention": "physical",
                                  "albedo": cfg["floor_albedo"]}})
-    return scene_document(camera, objects,
-                          [{**cfg["light"], "intensity": 1.0, "solid_angle": 1.0}], wavelengths,
-                          spectra_dir, observer=colour["observer"],
-                          ambient={"fraction": cfg["ambient_fraction"], "reference": "irradiance"},
+    return scene_document(camera, objects, lights, wavelengths, spectra_dir,
+                          observer=colour["observer"], ambient=ambient,
                           display={**display_from_colour(colour, illuminant=False),
                                    **copy.deepcopy(cfg["exposure"][panel])})

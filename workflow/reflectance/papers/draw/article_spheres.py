@@ -77,35 +77,44 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         r, c = np.unravel_index(np.argmax(half), half.shape)
         peaks[cfg["spheres"][i]["name"]] = tuple(int(round(255 * v)) for v in image[:, cols][r, c])
 
+    # the spheres' pixels: the floor is spectrally flat under a D65 light and the sky black, so
+    # theirs are the pixels with chroma (8/255 between channels); the gold sphere's highlight is
+    # its pixels above half its peak luminance, its body the rest, as the caption measures them
+    def chromatic(img):
+        return (np.asarray(img).max(-1) - np.asarray(img).min(-1)) > 8 / 255
+
+    sphere, Yg = chromatic(gold_image), results["metal"].XYZ[..., 1]
+    bright = sphere & (Yg > 0.5 * Yg[sphere].max())
+    body = np.percentile(Yg[sphere & ~bright], [10, 50])
+    clipped = float(np.mean(np.round(255 * gold_image[sphere]).max(-1) >= 255))
+
+    # the sky cropped: the rows above the highest sphere go, leaving the gap between the panels
+    gap_px = max(1, round(0.02 * image.shape[1]))
+    rows = np.flatnonzero(chromatic(image).any(1) | sphere.any(1))
+    top = max(0, int(rows[0]) - gap_px) if len(rows) else 0
+    image, gold_image = image[top:], gold_image[top:]
+
     # drawn at the printed width, both renders pixel for pixel at one scale (dpi = pixels per
     # printed inch; the panels share the camera's height and field of view)
     h_px = image.shape[0]
-    gap_px = max(1, round(0.02 * image.shape[1]))
     w_px = image.shape[1] + gap_px + gold_image.shape[1]
-    title_in, label_in, margin_in = 0.62, 0.22, 0.04
+    title_in, label_in, margin_in = 0.26, 0.22, 0.04
     width_in = PRINT_WIDTH_IN
     image_h_in = width_in * h_px / w_px
     height_in = image_h_in + title_in + label_in + margin_in
     fig = new_figure(width_in, height_in)
-    names = ", ".join(pigments[s["diffuse_material"]]["notation"] for s in cfg["spheres"])
     left = 0.0
-    for img, label in ((image, f"the pair: clear coat of {cfg['material']} over pigments Munsell {names}"),
-                       (gold_image, f"{metal['name']}, on its own")):
+    for img, label in ((image, "a pair of plastic spheres: clear coat over a pigment"),
+                       (gold_image, f"{metal['name']}: the highlight takes the metal's colour")):
         w = img.shape[1] / w_px
         ax = fig.add_axes((left, margin_in / height_in, w, image_h_in / height_in))
         ax.imshow(img, interpolation="nearest")
         ax.set_axis_off()
         ax.set_title(label, size=STYLE["font.size"], pad=3)
         left += w + gap_px / w_px
-    fig.suptitle(f"Wikipedia, \u201cSpecular highlight\u201d: \u201cspecular highlights on a pair "
-                 f"of spheres\u201d, rendered, and the article's gold\n"
-                 f"Cook\u2013Torrance D F G / (4 (V\u00b7N)(N\u00b7L)), Beckmann m = {cfg['m']:g}; "
-                 f"clear coat F of {cfg['material']}\n"
-                 f"{metal['name']}: {metal['material']}, exact F, m = {metal['m']:g} (s = 1, d = 0); "
-                 + ("both panels metered on one white card"
-                    if cfg["exposure"]["pair"].get("white") == cfg["exposure"]["metal"].get("white")
-                    and "white" in cfg["exposure"]["pair"] else "each panel exposed on its own"),
-                 size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top", linespacing=1.3)
+    fig.suptitle("Wikipedia, \u201cSpecular highlight\u201d: a pair of spheres, rendered, and the "
+                 "article's gold",
+                 size=STYLE["axes.titlesize"], y=1 - 0.03 / height_in, va="top")
     savefig(fig, out.png, dpi=w_px / width_in, tight=False, tag=display_tag(results["pair"].scene.display.space))
 
     # the caption's numbers (workflow/report/article_spheres.rst), from the table as written
@@ -114,5 +123,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         "metal_F0": f"{written.clear_coat_F0_Y[metal['name']]:.2f}",
         "coat_F0": f"{written.clear_coat_F0_Y[cfg['spheres'][0]['name']]:.3f}",
         "pair_scale": f"{scale:.3g}", "gold_scale": f"{gold_scale:.3g}",
+        "gold_clipped": f"{100 * clipped:.1f}", "gold_body_spread": f"{body[1] / body[0]:.1f}",
+        "cropped_rows": f"{top}",
         "pair_peaks": "; ".join("({}, {}, {}) ".format(*rgb) + f"({name})"
                                 for name, rgb in peaks.items())})
