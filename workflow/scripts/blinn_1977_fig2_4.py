@@ -4,6 +4,7 @@ Blinn's angles a..f. Every point and number comes from the ray simulation of the
 
 import numpy as np
 import pandas as pd
+from matplotlib.lines import Line2D
 
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 from reflectance.scripting import script_log
@@ -33,7 +34,7 @@ with script_log(snakemake) as log:
     ratio_2d = V2[1] / (sim.H2 @ V2)                    # the same with its projection E'
     text = {
         "fig2": f"L\u00b7g = {r['L'] @ axis:+.4f}, E\u00b7g = {r['E'] @ axis:+.4f}: equal and opposite, "
-                f"so H lies in the N-H plane\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f};  with the "
+                f"so H is perpendicular to the groove g, in the plane of the figure\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f};  with the "
                 f"projection {V}': {ratio_2d:.4f}",
         "fig3": f"1 \u2212 m/l = 1 \u2212 {g.m_over_l_lengths:.4f} = {1 - g.m_over_l_lengths:.4f}\n"
                 f"simulated ({cfg['n_rays']:,} points on the facet): {r[sim_name]:.4f}\n"
@@ -47,9 +48,9 @@ with script_log(snakemake) as log:
     # On the figure the same numbers as text[...] (the CSV), broken into lines that fit a third of the page.
     shown = {
         "fig2": f"L\u00b7g = {r['L'] @ axis:+.4f}, E\u00b7g = {r['E'] @ axis:+.4f}:\nequal and opposite, "
-                f"so H lies in the N-H plane\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f}; with {V}': {ratio_2d:.4f}",
+                f"so H \u22a5 g\n(N\u00b7{V})/(H\u00b7{V}) = {ratio_3d:.4f}; with {V}': {ratio_2d:.4f}",
         "fig3": f"1 \u2212 m/l = 1 \u2212 {g.m_over_l_lengths:.4f} = {1 - g.m_over_l_lengths:.4f}\n"
-                f"simulated ({cfg['n_rays']:,} points): {r[sim_name]:.4f}\n"
+                f"simulated, {cfg['n_rays']:,} points: {r[sim_name]:.4f}\n"
                 f"closed form ${G_name}$ = {r[G_name]:.4f}",
         "fig4": f"m/l = sin f / sin b = {g.m_over_l_sines:.4f}\n"
                 f"(f = {deg['f']:.2f}\u00b0, b = {deg['b']:.2f}\u00b0)\n"
@@ -63,25 +64,34 @@ with script_log(snakemake) as log:
     titles = {"fig2": "Fig. 2 \u2014 top view (along N)", "fig3": f"Fig. 3 \u2014 1 \u2212 m/l {verb}",
               "fig4": "Fig. 4 \u2014 m/l, law of sines"}
     # Fig. 3: the part of the facet whose light escapes.
-    draw_groove(ax3, sim, names=True)
+    draw_groove(ax3, sim, names=False, normal_label_offset=(0.06, 0.0))
+    for P, label, dx, dy in ((g.A, "A", 0.0, 0.08), (g.B, "B", 0.14, -0.03), (g.C, "C", 0.0, 0.08)):
+        ax3.text(P[0] + dx, P[1] + dy, label, ha="center", va="center", fontsize=TEXT_SIZE["symbol"])
     draw_dimension(ax3, g.A, g.B, -sim.H2 * 0.13, "l")
     draw_dimension(ax3, g.P, g.B, -sim.H2 * 0.3, "m")
+    key = [Line2D([], [], color=COLOURS["light"], label="incident on AB"),
+           Line2D([], [], color=COLOURS["other"], label="incident on BC"),
+           Line2D([], [], color=COLOURS["eye"], label="reflected, escapes"),
+           Line2D([], [], color=COLOURS["masked"], marker="x", label="reflected, blocked")]
+    ax3.legend(handles=key, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2, frameon=False,
+               fontsize=TEXT_SIZE["annotation"], handlelength=1.4, columnspacing=0.8, borderaxespad=0.2)
     # Fig. 4: the triangle B, C, P and Blinn's angles.
     draw_groove(ax4, sim, rays=False, vectors=False, names=True)
     ax4.plot(*np.column_stack([g.P, g.C]), color=COLOURS[colour], lw=1.4)
-    ax4.plot(*np.column_stack([g.B, g.B + [0, -g.B[1]]]), color="0.4", ls="--", lw=0.8)
+    up = np.array([0.0, 1.0])
+    top = g.P[1] + (g.B[0] - g.P[0]) * (g.C[1] - g.P[1]) / (g.C[0] - g.P[0])  # the vertical at B meets PC
+    ax4.plot([g.B[0], g.B[0]], [g.B[1], top], color="0.4", ls="--", lw=0.8)
     ax4.text(*(g.P + [-0.09, 0.07]), "P", ha="center", va="center", fontsize=TEXT_SIZE["symbol"])
-    draw_arrow(ax4, g.P, 0.45 * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--")
+    draw_arrow(ax4, g.P, 0.45 * up, "N", COLOURS["normal"], ls="--")
     draw_arrow(ax4, g.P, 0.45 * sim.H2, "H", "k")
     draw_arrow(ax4, g.P, 0.55 * V2, f"{V}'", COLOURS[colour], label_offset=(0.0, 0.08))  # off line PC
-    up = np.array([0.0, 1.0])
-    for vertex, u, v, radius, label in (
-            (g.P, up, sim.H2, 0.3, "a"), (g.P, sim.H2, V2, 0.22, "e"), (g.P, g.B - g.P, V2, 0.14, "b"),
-            (g.B, g.A - g.B, g.C - g.B, 0.08, "c"), (g.B, up, g.C - g.B, 0.22, "d"),
-            (g.C, g.B - g.C, g.P - g.C, 0.35, "f")):
-        # c's bisector is the dashed vertical through B (c = 2d): its label sits off it, towards BA
-        draw_angle(ax4, vertex, u, v, radius, label, label_radius={"b": 1.9, "c": 2.0}.get(label, 1.45),
-                   label_at=0.3 if label == "c" else 0.5)
+    # Blinn: c is the triangle's angle at B (PBC, its whole arc), d the angle from the vertical to BC
+    # (c = 2d by the groove's symmetry), each on an arc of its own; b's and c's labels off the lines.
+    for vertex, u, v, radius, label, at, out in (
+            (g.P, up, sim.H2, 0.3, "a", 0.5, 1.45), (g.P, sim.H2, V2, 0.22, "e", 0.5, 1.45),
+            (g.P, g.B - g.P, V2, 0.14, "b", 0.5, 1.35), (g.B, g.A - g.B, g.C - g.B, 0.1, "c", 0.8, 1.75),
+            (g.B, up, g.C - g.B, 0.21, "d", 0.5, 1.35), (g.C, g.B - g.C, g.P - g.C, 0.35, "f", 0.5, 1.45)):
+        draw_angle(ax4, vertex, u, v, radius, label, label_radius=out, label_at=at)
     side = np.array([np.sin(sim.alpha), -np.cos(sim.alpha)]) * 0.16  # outside BC
     draw_dimension(ax4, g.B, g.C, side, "l")
     draw_dimension(ax4, g.P, g.B, -sim.H2 * 0.16, "m")
@@ -93,7 +103,7 @@ with script_log(snakemake) as log:
                  size=STYLE["axes.titlesize"])
         fig.text((box.x0 + box.x1) / 2, 0.25, shown[key], ha="center", va="top",
                  fontsize=TEXT_SIZE["annotation"], linespacing=1.4)
-    fig.suptitle(f"Blinn 1977, Figs. 2\u20134 \u2014 case {name} of Fig. 1: L (\u03b8, \u03c6) = "
+    fig.suptitle(f"Blinn 1977, Figs. 2\u20134 \u2014 Blinn's case {name} ({blocked}): L (\u03b8, \u03c6) = "
                  f"({case['light']['theta_deg']:g}\u00b0, {case['light']['phi_deg']:g}\u00b0), E = "
                  f"({case['eye']['theta_deg']:g}\u00b0, {case['eye']['phi_deg']:g}\u00b0)", y=0.99)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)

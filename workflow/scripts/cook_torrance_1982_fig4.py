@@ -36,7 +36,7 @@ with script_log(snakemake) as log:
     raw = raw[(raw.wavelength_nm >= grid[0]) & (raw.wavelength_nm <= grid[-1])]
     if "n" in raw:
         ax_a.plot(raw.wavelength_nm * scale, F0_from_nk(raw.n, raw.k), "o", ms=3,
-                  color="#5a3315", label="measured n, k")
+                  color="#5a3315", label="$F_0$ from measured n, k")
     ax_a.legend(loc="lower right")
     ax_a.set(xlabel=f"wavelength ({unit})", ylabel="normal reflectance $F_0$", ylim=(0, 1),
              title=f"(a) {name} mirror, normal incidence")
@@ -47,9 +47,9 @@ with script_log(snakemake) as log:
                      label="held constant (past the table)")
     ax_b.plot(grid * scale, reflected, color="#b3672b", label=f"reflected by {name}")
     ax_b.set(xlabel=f"wavelength ({unit})", ylabel="relative spectral energy",
-             ylim=(0, 1.45 * light.max()),
+             ylim=(0, 1.05 * max(light.max(), reflected.max())),  # fitted to the data
              title="(b) spectral energy distributions")
-    ax_b.legend(loc="upper left", bbox_to_anchor=(0.02, 1.0))  # above the curves, clear of the band
+    ax_b.legend(loc="lower right")  # below the curves (they stay above ~1/3 of the peak there)
     # the axes span the paper's "visible wavelengths" (config axis_nm), not the whole colour grid
     start, end = fig_cfg["axis_nm"]
     for ax in (ax_a, ax_b):

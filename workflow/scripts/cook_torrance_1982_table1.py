@@ -1,5 +1,5 @@
 """Cook & Torrance 1982, Table I: the six nonmetals of Fig. 7 with s, d and m as printed, the source of
-each spectrum, its F0 averaged over the visible, and the colour of R_d = F0/pi under the light."""
+each spectrum, its F0 averaged over the visible, and the colour of F0 = pi R_d under the light (the swatch: Y = F0)."""
 
 from pathlib import Path
 
@@ -48,7 +48,7 @@ with script_log(snakemake) as log:
     # Drawn at the print width, so its text prints at the table size of the figures (TEXT_SIZE)
     T = TEXT_SIZE
     headers = ["Material", "s", "d", "m", "spectrum (source)", f"mean F0\n{lo:g}-{hi:g} nm",
-               "x, y, Y", "R_d = F0/\u03c0\nunder " + colour_cfg["illuminant"]]
+               "x, y, Y", "F0 = \u03c0$R_d$\nunder " + colour_cfg["illuminant"]]  # the swatch is F0's colour (Y = F0)
     widths = [0.85, 0.35, 0.35, 0.6, 1.7, 0.85, 1.35, 0.75]  # inches
     xs = np.concatenate([[0.05], 0.05 + np.cumsum(widths)[:-1]])
     row_in, head_in, title_in = 0.36, 0.42, 0.5

@@ -78,7 +78,8 @@ def draw_dimension(ax: Axes, P0: npt.ArrayLike, P1: npt.ArrayLike, offset: float
 
 
 def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_length: float = 0.6,
-                rays: bool = True, vectors: bool = True, names: bool = False) -> None:
+                rays: bool = True, vectors: bool = True, names: bool = False,
+                normal_label_offset: Sequence[float] | None = None) -> None:
     """Cross-section of the groove in the plane of N and H, with the simulation's ray paths.
 
     Parameters
@@ -89,6 +90,9 @@ def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_
         How far incoming rays are drawn above the opening and escaping rays beyond it.
     rays, vectors, names : bool
         Draw the traced rays; the arrows N, H, L', E' at the facet's midpoint; the vertex names.
+    normal_label_offset : sequence of float, optional
+        Where N's label goes from just beyond its tip, in units of the half-width; given, N is drawn
+        as long as H (its whole shaft shows); None keeps the short N labelled beside its shaft.
     """
     A, B, C = sim.vertices
     h = abs(A[0])
@@ -121,8 +125,12 @@ def draw_groove(ax: Axes, sim: VGrooveSimulation, ray_length: float = 1.1, exit_
         # N shorter than H, L', E': its label stays clear of theirs when E' or L' lies near N
         # ... and beside its tip, on the side away from the steeper of L', E' (its shaft runs there)
         steep = max((sim.L2, sim.E2), key=lambda v: v[1])
-        draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--",
-                   label_offset=(-0.17 * np.sign(steep[0] or 1.0), -0.16))
+        if normal_label_offset is None:
+            draw_arrow(ax, M, 0.38 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--",
+                       label_offset=(-0.17 * np.sign(steep[0] or 1.0), -0.16))
+        else:
+            draw_arrow(ax, M, 0.55 * h * np.array([0.0, 1.0]), "N", COLOURS["normal"], ls="--",
+                       label_offset=h * np.asarray(normal_label_offset, float))
         draw_arrow(ax, M, 0.55 * h * sim.H2, "H", "k")
         draw_arrow(ax, M, 0.8 * h * sim.L2, "L'", COLOURS["light"])
         draw_arrow(ax, M, 0.8 * h * sim.E2, "E'", COLOURS["eye"])
