@@ -120,7 +120,8 @@ with script_log(snakemake) as log:
             feet = [np.array([*light[:2], 0.0]) / np.hypot(*light[:2]) for light in (L, L_turned)]
             for foot in feet:
                 pl.add_mesh(pv.Line((0, 0, 0), foot), color="#d98c00", line_width=2)
-            pl.add_mesh(pv.CircularArc(0.6 * feet[0], 0.6 * feet[1], (0, 0, 0)), color="#d98c00", line_width=2)
+            pl.add_mesh(pv.CircularArc(pointa=0.6 * feet[0], pointb=0.6 * feet[1], center=(0, 0, 0)),
+                        color="#d98c00", line_width=2)
             middle = 0.68 * (feet[0] + feet[1]) / np.linalg.norm(feet[0] + feet[1])
             label(pl, middle, f"{cfg['ward_turned_deg']:g} deg", "#8a5a00", size=18)
             text = (f"{title}: max f = {peak:.3g} /sr\n"
@@ -128,7 +129,8 @@ with script_log(snakemake) as log:
         else:
             text = f"{title}\nmax f = {peak:.3g} /sr"
         if key in WIDTHS:  # Phong's lobe is round about R, Blinn-Phong's (through H) is not
-            text += f"\nhalf-max width {widths[key, 'in']:.0f} deg in plane, {widths[key, 'across']:.0f} across"
+            text += (f"\nhalf-max width {widths[key, 'in']:.0f} deg in plane, "
+                     f"{widths[key, 'across']:.0f} across")
         pl.add_text(text, font_size=11, color="black", position="upper_edge",
                     font_file=font_file())  # the figures' typeface
         pl.view_vector(cfg["render_3d"]["view"], viewup=(0, 0, 1))  # one camera for every panel
