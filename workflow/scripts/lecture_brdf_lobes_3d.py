@@ -102,7 +102,8 @@ with script_log(snakemake) as log:
             lobe = pv.StructuredGrid(*(r[:last] * V[:last, :, j] for j in range(3)))
             lobe["f (1/sr)"] = f[:last].ravel(order="F")
             actor = pl.add_mesh(lobe, scalars="f (1/sr)", cmap=cmap, clim=(0, top),
-                                smooth_shading=True, show_scalar_bar=False)
+                                smooth_shading=True, show_scalar_bar=False,
+                                ambient=cfg["render_3d"]["ambient"])  # lit from the camera's side too
             # the light's arrow stops short of the lobes (the lunar lobe's spike along L shows);
             # its mirror direction R (its lobe's axis) a grey ray
             pl.add_mesh(pv.Arrow(start=ARROW[0] * light, direction=-light, scale=ARROW[0] - ARROW[1],
