@@ -448,6 +448,58 @@ def test_brdf_lobes_3d_fill_their_canvas(lobes_3d):
             assert cell.mean() > 0.005
 
 
+def _lobes_3d_cells(path):
+    """The 3-D lobes' picture (RGB, int) and its six cells, two rows of three (the last one holds the key)."""
+    from PIL import Image
+
+    image = np.asarray(Image.open(path).convert("RGB")).astype(int)
+    h, w, _ = image.shape
+    return image, [[np.s_[i * h // 2:(i + 1) * h // 2, j * w // 3:(j + 1) * w // 3] for j in range(3)]
+                   for i in range(2)]
+
+
+def test_brdf_lobes_3d_lunar_lobe_reads(lobes_3d):
+    """Issue 28: the lunar lobe, the weakest, is not near black: the coloured pixels in the middle of
+    its cell (the lobe, not the key at the cell's right) have a mean Rec. 709 luma above 95/255."""
+    _, tmp_path = lobes_3d
+    image, cells = _lobes_3d_cells(tmp_path / "l3.png")
+    R, G, B = image[..., 0], image[..., 1], image[..., 2]
+    lobe = ((G > 0.8 * R) | (B > R)) & (image.max(axis=2) - image.min(axis=2) > 30)
+    luma = 0.2126 * R + 0.7152 * G + 0.0722 * B
+    rows, cols = cells[1][2]
+    middle = np.s_[rows.start + (rows.stop - rows.start) // 4:rows.stop - (rows.stop - rows.start) // 4,
+                   cols.start + (cols.stop - cols.start) // 4:cols.stop - (cols.stop - cols.start) // 4]
+    assert lobe[middle].sum() > 1000  # the lobe is there
+    assert luma[middle][lobe[middle]].mean() > 95
+
+
+def test_brdf_lobes_3d_turned_light_reads_at_length(lobes_3d):
+    """Issue 28: Ward's turned light L' is not a stub pointing at the camera: in Ward's cell the two
+    light arrows (orange, thicker than the 2-px orange lines and the labels' strokes) are each at
+    least 0.6 times as long on the picture as the diffuse cell's one arrow L."""
+    from scipy import ndimage
+
+    _, tmp_path = lobes_3d
+    image, cells = _lobes_3d_cells(tmp_path / "l3.png")
+    R, G, B = image[..., 0], image[..., 1], image[..., 2]
+    orange = (R > 1.15 * G) & (R - B > 60)  # viridis has G > R, the disc and lines grey
+
+    def arrows(cell):
+        shafts = ndimage.binary_opening(orange[cell], np.ones((3, 3)))
+        labels, n = ndimage.label(shafts)
+        found = []
+        for k in range(1, n + 1):
+            ys, xs = np.nonzero(labels == k)
+            if len(ys) > 200:
+                found.append(float(np.hypot(np.ptp(ys), np.ptp(xs))))
+        return found
+
+    (length,) = arrows(cells[1][0])  # the diffuse lobe's cell: L alone
+    turned = arrows(cells[1][1])
+    assert len(turned) == 2
+    assert min(turned) > 0.6 * length
+
+
 # --- article: distributions ---------------------------------------------------------------------------
 
 def test_distributions_in_the_plane_of_incidence(config, tmp_path):
