@@ -240,6 +240,47 @@ def test_fig7_grazing_edge_lit_highlight_reads_at_full_view(fig7):
     assert ts["b"].max() / ts["a"].max() == pytest.approx(blinn, rel=0.05)
 
 
+def test_rim_profile_takes_the_brightest_column_and_the_object_rows():
+    """The figure's profile: the column through the brightest pixel of any render, and the rows
+    from the first to the last where any render shows the object (i > 0)."""
+    from reflectance.papers.draw.blinn77_fig7 import rim_profile
+
+    a, b = np.zeros((9, 7)), np.zeros((9, 7))
+    a[2:5, 1:6], b[3:8, 1:6] = 0.1, 0.1  # two objects, overlapping rows 3-4
+    a[2, 4], b[3, 2] = 5.0, 7.0  # the brightest pixel is b's, in column 2
+    column, rows = rim_profile([a, b])
+    assert column == 2
+    assert rows.tolist() == [2, 3, 4, 5, 6, 7]
+
+
+def _topmost_row(rgb, colour, tolerance=12):
+    """The first row (from the top) with a pixel within ``tolerance`` of ``colour`` (#rrggbb)."""
+    target = np.array([int(colour[k:k + 2], 16) for k in (1, 3, 5)])
+    hit = (np.abs(rgb.astype(int) - target) <= tolerance).all(axis=-1).any(axis=1)
+    return int(np.flatnonzero(hit)[0])
+
+
+def test_fig7_profile_draws_mgo_above_aluminium(fig7):
+    """Blinn: edge lit, MgO is "even more so [specular] than the aluminum". The default figure
+    shows it by eye in its profile plot (lower left): MgO's line (Okabe-Ito vermilion) peaks
+    higher in the PNG than aluminium's (blue), by Blinn's p_s F ratio at E.H = cos 86 deg read
+    off the pixel rows against the plot's zero line (the lowest row of both lines)."""
+    fig, Y, _, tmp = fig7
+    rgb = np.asarray(Image.open(tmp / "fig7_matched.png").convert("RGB"))
+    h, w, _ = rgb.shape
+    plot = rgb[int(0.6 * h):, : int(0.45 * w)]  # the profile's axes, under every image
+    top = {p: _topmost_row(plot, c) for p, c in (("a", "#0072b2"), ("b", "#d55e00"))}
+    assert top["b"] < top["a"], top  # MgO's peak higher up
+    q = fig["panels"]
+    c = np.cos(np.radians(fig["grazing"]["light"]["angle_deg"] / 2))
+    blinn = (q["b"]["p_s"] * fresnel_sin_tan(np.arccos(c), q["b"]["n"])
+             / (q["a"]["p_s"] * fresnel_sin_tan(np.arccos(c), q["a"]["n"])))
+    target = np.array([0xd5, 0x5e, 0x00])
+    rows = np.flatnonzero((np.abs(plot.astype(int) - target) <= 12).all(axis=-1).any(axis=1))
+    zero = rows[-1]  # the vermilion line runs along i = 0 below the object
+    assert (zero - top["b"]) / (zero - top["a"]) == pytest.approx(blinn, rel=0.1)
+
+
 @pytest.mark.parametrize("p", ["a", "b"])
 def test_fig7_front_lit_peak_is_blinns_intensity(fig7, p):
     """At N = H, Blinn's i = p_a + p_d (N.L) + p_s s with N.L = E.H = cos(angle / 2): Phong s = 1,

@@ -311,8 +311,11 @@ def mirror_highlight_Blinn1977(p_s: float, n: float,
 
     For a light at ``angle_deg`` from the direction to the eye, a facet with N = H has
     N.H = 1, E.H = N.E = N.L = cos(angle/2), D3 = 1 and G = 1 (G_b = G_c = 2), so
-    ``s = D3 G F / (N.E) = F(cos(angle/2)) / cos(angle/2)``: the brightest specular value of a
-    curved object that shows such a point.
+    ``s = D3 G F / (N.E) = F(cos(angle/2)) / cos(angle/2)``: the specular value at the mirror
+    point of a curved object that shows one. It is not the object's brightest: beyond the mirror
+    point, towards the silhouette, D3 falls slowly while N.E falls faster and G stays 1 (as long
+    as neither masking nor shadowing sets in), so ``D3 G / (N.E)`` and with it ``s`` grow past
+    this value there (fig7.csv sets it beside the renders' brightest i).
 
     Parameters
     ----------

@@ -5,15 +5,17 @@ renders and writes is declared in :mod:`reflectance.papers.figures.blinn77_fig7`
 from __future__ import annotations
 
 import logging
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 import pandas as pd
 
 from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.captions import write_caption_values
-from reflectance.io.figures import TEXT_SIZE, new_figure, savefig
+from reflectance.io.figures import OKABE_ITO, TEXT_SIZE, new_figure, savefig, text_colour
 from reflectance.render.pipeline import render, render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import blinn77_fig7 as definition
@@ -22,11 +24,22 @@ from reflectance.papers.scenes import (highlight_crossover_Blinn1977, materials_
 from reflectance.scripting import params_dict
 from reflectance.io.tables import write_csv
 
-__all__ = ["run"]
+__all__ = ["rim_profile", "run"]
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
           "b": "Figure 7b  Simulation of magnesium oxide surface"}
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}  # definition.MODELS, titled
+
+
+def rim_profile(renders: Iterable[npt.NDArray[np.floating]]
+                ) -> tuple[int, npt.NDArray[np.intp]]:
+    """The column through the brightest pixel of ``renders`` (images of i of one size), and the
+    rows of it that show the object in any of them (i >= p_a > 0 there, 0 off it): where the
+    figure draws i down the lit rim and face of each render on one axis."""
+    stack = np.stack(list(renders))
+    column = int(np.unravel_index(np.argmax(stack), stack.shape)[2])
+    rows = np.flatnonzero((stack[:, :, column] > 0).any(axis=0))
+    return column, np.arange(rows[0], rows[-1] + 1)
 
 
 def run(snakemake: Any, log: logging.Logger) -> None:
@@ -98,12 +111,14 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     h, wd = (n / DPI for n in next(iter(images.values())).shape[:2])  # inches
     gap, block = 0.05, 0.2  # between the two models of a panel; between the panels
     W = 4 * wd + 2 * gap + block + 0.12
-    # the figure's two-line title and each panel's three-line heading; column names; the line
-    # under each row (inches)
-    top, heads, foot = 1.12, 0.28, 0.3
-    plot_h, plot_foot = 1.9, 0.5
-    H = top + heads + 2 * (h + foot) + 0.3 + plot_h + plot_foot
+    # the figure's two-line title and each panel's three-line heading; column names; the two
+    # lines under each row (inches)
+    top, heads, foot = 1.0, 0.28, 0.45
+    plot_h, plot_foot = 1.75, 0.5
+    H = top + heads + 2 * (h + foot) + 0.45 + plot_h + plot_foot
     sweep = np.linspace(90.0, 178.0, 881)
+    COLOURS = {"a": OKABE_ITO[0], "b": OKABE_ITO[1]}  # aluminium, MgO: image marks and plots
+    profile_peaks = {}  # per light and panel: the brightest i of the profile (for the caption)
 
     def image(ax, key, text):
         ax.imshow(shared[key] if grazing in key else images[key], interpolation="nearest")
@@ -115,6 +130,10 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         front = definition.figure_front(fig_cfg, light)
         name = {light: light.removeprefix(definition.GRAZING),
                 front: front.removeprefix(definition.GRAZING)}
+        edge_white = white if light == grazing else 1.0  # the edge-lit images' white (an i)
+        ts_edge = {p: Y[definition.render_key(p, "torrance_sparrow", light, None)]
+                   for p in ("a", "b")}
+        column, down = rim_profile(ts_edge.values())
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
             x0 = 0.06 + k * (2 * wd + gap + block)
@@ -124,6 +143,12 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                 ax = fig.add_axes(((x0 + i * (wd + gap)) / W, y0 / H, wd / W, h / H))
                 image(ax, key, f"{name[light]} lit, {lights[light]['angle_deg']:g}\u00b0")
                 ax.set_title(MODELS[model], fontsize=T["symbol"], pad=3)
+                if model == "torrance_sparrow":  # the profile's column, marked at both edges
+                    limits = ax.get_xlim(), ax.get_ylim()
+                    for y, mark in ((0.97, "v"), (0.03, "^")):
+                        ax.plot(column, y, mark, color=COLOURS[panel], ms=5,
+                                transform=ax.get_xaxis_transform())
+                    ax.set(xlim=limits[0], ylim=limits[1])
                 if light == closeup:
                     grey = encode(np.clip(rims[key] / rim_scale, 0, 1))
                     rh, rw = rims[key].shape
@@ -133,14 +158,17 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                     inset.set_xticks([]), inset.set_yticks([])
                     for side in inset.spines.values():
                         side.set(color="#e69f00", lw=0.8, visible=True)
-                    inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}", transform=inset.transAxes,
-                               color="#e69f00", fontsize=T["annotation"], va="bottom")
+                    inset.text(0.02, 0.05, f"rim \u00d7{zoom:.0f}, white: i = {rim_scale:.1f}",
+                               transform=inset.transAxes, color="#e69f00",
+                               fontsize=T["annotation"], va="bottom")
             rows_of = table[(table.panel == panel) & (table.phong_specular == reading)]
             row = rows_of[rows_of.light == light].iloc[0]
             fig.text((x0 + wd + gap / 2) / W, (y0 - 0.04) / H,
                      f"max i: Phong {row.phong_max:.2f}, Torrance-Sparrow "
-                     f"{row.torrance_sparrow_max:.2f}", ha="center", va="top",
-                     fontsize=T["annotation"])
+                     f"{row.torrance_sparrow_max:.2f}\nwhite: i = {edge_white:.3g}"
+                     + (", one exposure for the four edge-lit images" if light == grazing
+                        else "; brighter clips"),
+                     ha="center", va="top", fontsize=T["annotation"], linespacing=1.3)
             yf = y0 - foot - h  # the front-lit image, centred under the pair
             ax = fig.add_axes(((x0 + wd / 2 + gap / 2) / W, yf / H, wd / W, h / H))
             image(ax, definition.render_key(panel, "torrance_sparrow", front, reading),
@@ -148,46 +176,67 @@ def run(snakemake: Any, log: logging.Logger) -> None:
             both = rows_of[rows_of.light == front].iloc[0]
             fig.text((x0 + wd + gap / 2) / W, (yf - 0.04) / H,
                      "Both Models Essentially Same (Blinn)\n"  # his label under the image
-                     f"max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}",
-                     ha="center", va="top", fontsize=T["annotation"])
+                     f"max |i_Phong \u2212 i_T-S| = {both.max_abs_difference:.3f}; white: i = 1",
+                     ha="center", va="top", fontsize=T["annotation"], linespacing=1.3)
             p = fig_cfg["panels"][panel]
             fig.text((x0 + wd + gap / 2) / W, (H - top + 0.02) / H,
                      f"{TITLES[panel]}\np_s = {p['p_s']:g}, p_d = {p['p_d']:g}, n = {p['n']:g}, "
                      f"c3 = {p['c3']:g}\nPhong c1 = {row.c1:.2f}, its p_s = {row.phong_s:.4g}",
                      ha="center", va="bottom", fontsize=T["annotation"], linespacing=1.3)
-        ax = fig.add_axes((0.75 / W, plot_foot / H, 3.3 / W, plot_h / H))
-        for panel, colour in (("a", "#0072b2"), ("b", "#d55e00")):
+
+        # left: the Torrance-Sparrow edge-lit i down the marked column, both materials on one axis
+        ax = fig.add_axes((0.62 / W, plot_foot / H, (W / 2 - 1.07) / W, plot_h / H))
+        for panel in ("a", "b"):
+            i = ts_edge[panel][down, column]
+            ax.plot(down - down[0], i, color=COLOURS[panel], lw=1.2, drawstyle="steps-mid",
+                    label=fig_cfg["panels"][panel]["label"])
+            peak = int(np.argmax(i))
+            profile_peaks[light, panel] = float(i[peak])
+            ax.annotate(f"{i[peak]:.2f}", (peak, i[peak]), xytext=(5, -2),  # under the white line
+                        textcoords="offset points", color=text_colour(COLOURS[panel]),
+                        fontsize=T["annotation"], va="top")
+        ax.axhline(edge_white, color="0.4", lw=0.8, ls=(0, (3, 2)))
+        ax.text(0.98, edge_white, "white of the edge-lit images", ha="right", va="bottom",
+                fontsize=T["annotation"], color="0.3", transform=ax.get_yaxis_transform())
+        ax.set(xlim=(-2, down[-1] - down[0] + 2), ylim=(0, None),
+               xlabel="pixels below the object's top edge", ylabel="i, edge lit")
+        ax.set_title("Torrance-Sparrow down the marked column (\u25bc)", fontsize=T["symbol"])
+        ax.legend(loc="center right", bbox_to_anchor=(1.0, 0.6))
+        ax.grid(True)
+
+        # right: the highlight where N = H against the light's angle
+        ax = fig.add_axes(((W / 2 + 0.47) / W, plot_foot / H, (W / 2 - 0.62) / W, plot_h / H))
+        for panel in ("a", "b"):
             p = fig_cfg["panels"][panel]
-            ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep), color=colour,
-                    label=f"{p['label']}\n(p_s = {p['p_s']:g}, n = {p['n']:g})")
+            ax.plot(sweep, mirror_highlight_Blinn1977(p["p_s"], p["n"], sweep),
+                    color=COLOURS[panel], label=f"{p['label']}, n = {p['n']:g}")
             at = table[(table.panel == panel) & (table.light == light)].iloc[0]
             ax.plot(lights[light]["angle_deg"], at.mirror_highlight, "o", mfc="none",
-                    color=colour, ms=6)
+                    color=COLOURS[panel], ms=6)
             # the renders' brightest i: G stays 1 while N.E > E.H / 2, so past N = H, s grows
-            ax.plot(lights[light]["angle_deg"], at.torrance_sparrow_max, "v", color=colour, ms=5)
+            ax.plot(lights[light]["angle_deg"], at.torrance_sparrow_max, "v", color=COLOURS[panel],
+                    ms=5)
+        ax.plot([], [], "o", mfc="none", color="0.3", ms=6, label="N = H at this light")
+        ax.plot([], [], "v", color="0.3", ms=5, label="renders' brightest i")
         if crossover is not None:  # (panels of other parameters may not cross at all)
             ax.axvline(crossover, color="0.4", lw=0.8, ls=(0, (3, 2)))
-            ax.text(crossover - 1.5, 0.97, f"crossover\n{crossover:.1f}\u00b0", ha="right",
-                    va="top", fontsize=T["annotation"], color="0.3",
+            ax.text(crossover - 1.5, 0.03, f"crossover\n{crossover:.1f}\u00b0", ha="right",
+                    va="bottom", fontsize=T["annotation"], color="0.3",
                     transform=ax.get_xaxis_transform())
         ax.set(yscale="log", xlim=(90, 178), xticks=np.arange(90, 179, 15),
                xlabel="light angle from the eye (\u00b0)", ylabel="p_s D\u2083 G F / (N\u00b7E)")
+        ax.set_title("Torrance-Sparrow highlight where N = H", fontsize=T["symbol"])
         ax.grid(True, which="major")
-        ax.legend(loc="upper left", bbox_to_anchor=(1.03, 1.0), borderaxespad=0)
-        ax.text(1.03, 0.0, "Torrance-Sparrow highlight\nwhere N = H (lines);\nthis figure's "
-                f"{name[light]} light\n(circles); its renders'\nbrightest i (triangles)",
-                transform=ax.transAxes, va="bottom",
-                fontsize=T["annotation"], linespacing=1.3)
+        ax.legend(loc="upper left", fontsize=T["annotation"])
         brighter = (table[(table.panel == "b") & (table.light == light)].mirror_highlight.iloc[0]
                     > table[(table.panel == "a") & (table.light == light)].mirror_highlight.iloc[0])
         verdict = "MgO brighter than aluminium" if brighter else "MgO dimmer than aluminium"
+        # two lines, each a phrase: the claim, then the object and the reading
         fig.suptitle(f"Blinn 1977, Fig. 7 \u2014 edge lit at {lights[light]['angle_deg']:g}\u00b0 "
-                     f"from the eye ({verdict}); Phong's p_s {reading.replace('_', ' ')}\n"
-                     + (f"{fig_cfg['grazing']['label']}; " if light == grazing
-                        else f"variant: {fig_cfg['object']['type']}; " if grazing in lights else "")
-                     + f"p_a = {fig_cfg['p_a']:g}, i = 1 is white"
-                     + (f"; close-ups: white = i {rim_scale:.1f}" if light == closeup else "")
-                     + (f"; edge lit: white = i {white:.1f}" if light == grazing else ""),
+                     f"from the eye: {verdict}\n"
+                     + (fig_cfg["grazing"]["label"] if light == grazing
+                        else f"variant: a {fig_cfg['object']['type']}")
+                     + f"; Phong's p_s {reading.replace('_', ' ')}",
                      y=1 - 0.04 / H, va="top", linespacing=1.3)
         savefig(fig, png, dpi=DPI, tight=False, tag=display_tag(scene.display.space))
 
@@ -221,6 +270,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                        "grazing_ratio": f"{ts['b'] / ts['a']:.2f}",
                        "grazing_verdict": "holds" if ts["b"] > ts["a"] else "does not hold",
                        "grazing_white": f"{white:.1f}",
+                       "a_profile_peak": f"{profile_peaks[grazing, 'a']:.2f}",
+                       "b_profile_peak": f"{profile_peaks[grazing, 'b']:.2f}",
                        "phong_grazing": f"{max(at[p, grazing].phong_max for p in 'ab'):.2f}",
                        "difference_grazing_front": f"{front_difference:.3f}"})
     write_caption_values(out.values, values)
