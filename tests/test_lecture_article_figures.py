@@ -266,7 +266,7 @@ def test_fresnel_figure_is_deterministic(config, tmp_path):
 
 def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     models, ti = fig["models"], math.radians(fig["incidence_deg"])
     above = table.theta_o_deg.abs() < 90
@@ -308,7 +308,7 @@ def test_brdf_lobes_2d_phong_adds_a_protrusion_and_ward_turns_with_the_grain(con
     by hand (H in the turned plane: H.X = -sin(turn) sin a ...), peaks as high at the mirror but spreads
     wider, its half-height width at least twice the first's."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     t = table.theta_o_deg.to_numpy()
     base = fig["models"]["diffuse"]["rho_d"] / math.pi
@@ -343,7 +343,7 @@ def test_brdf_lobes_2d_draw_nothing_past_the_max_view_angle(config, tmp_path):
     drawn beyond it, and the largest radius drawn in each panel is the largest f of the table there
     (the printed max is the drawn max); the rim is the outermost labelled ring."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"},
+    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"},
                      fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     inside = table.theta_o_deg.abs() <= fig["scale_to_deg"]
@@ -372,7 +372,7 @@ def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
     w / (8 pi cos theta_i) [(1 + B0) (1 - xi^2) / (1 + xi)^3 + H(cos theta_i)^2 - 1]; its
     Lommel-Seeliger variant has no such peak (it rises to the horizon on both sides)."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     lunar, ti = fig["models"]["lunar"], math.radians(fig["incidence_deg"])
     w, B0, xi = lunar["albedo"], lunar["B0"], lunar["xi"]
@@ -394,7 +394,7 @@ def lobes_3d(config, tmp_path_factory):
     """The 3-D lobes at the build's sampling, beside the 2-D figure's table they are checked against."""
     tmp_path = tmp_path_factory.mktemp("lobes")
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     run_script("lecture_brdf_lobes_3d", tmp_path, {"png": "l3.png", "values": "l3.values.rst"},
                inputs={"plane": str(tmp_path / "l.csv")}, fig=fig)
     return fig, tmp_path
