@@ -16,6 +16,7 @@ import yaml
 from script_runner import run_script
 
 from reflectance.config import ConfigError, validate_schema
+from reflectance.io.captions import read_caption_values
 
 ROOT = Path(__file__).resolve().parents[1]
 REPORT = ROOT / "workflow" / "report"
@@ -277,7 +278,7 @@ def test_fresnel_figure_is_deterministic(config, tmp_path):
 
 def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     models, ti = fig["models"], math.radians(fig["incidence_deg"])
     above = table.theta_o_deg.abs() < 90
@@ -289,21 +290,31 @@ def test_brdf_lobes_2d_against_closed_forms(config, tmp_path):
     assert table.phong.idxmax() == mirror.name
     assert mirror.blinn_phong == pytest.approx(bp["c_diff"] / math.pi + (bp["m"] + 8) / (8 * math.pi) * bp["c_spec"],
                                                rel=1e-5)
-    # Cook-Torrance (physical) by hand: Beckmann D / pi, V-cavity G, Fresnel of a dielectric (k = 0),
-    # the lecture's "shiny plastics: d = 0.9, s = 0.1" (issue 28): s R_s + d R_d
-    assert ct["k"] == 0 and ct["convention"] == "physical" and (ct["d"], ct["s"]) == (0.9, 0.1)
-    for theta_o in (fig["incidence_deg"], 20.0, 70.0, 85.0):
+    # Cook-Torrance as the lecture prints it (issue 28), by hand: "BRDF = sR_s + dR_d" with
+    # "R_s = DGF/(N.V)", the slide's D = e^{-(tan d/m)^2} / (4 m^2 cos^4 d), V-cavity G, Fresnel of a
+    # dielectric (k = 0), "shiny plastics: d = 0.9, s = 0.1"; the dashed variant, physical:
+    # s F D G / (4 (N.L)(N.V)) + d R_d with D over pi m^2
+    assert ct["k"] == 0 and ct["convention"] == "lecture" and (ct["d"], ct["s"]) == (0.9, 0.1)
+    assert fig["plot_2d"]["cook_torrance_variant"] == "physical"
+    for theta_o in (fig["incidence_deg"], 20.0, 55.0, 70.0, 85.0):
         to = math.radians(theta_o)
         L = np.array([-math.sin(ti), 0, math.cos(ti)])
         V = np.array([math.sin(to), 0, math.cos(to)])
         H = (L + V) / np.linalg.norm(L + V)
         a = math.acos(H[2])
+        slide_D = math.exp(-(math.tan(a) / ct["m"]) ** 2) / (4 * ct["m"] ** 2 * math.cos(a) ** 4)
         D = math.exp(-(math.tan(a) / ct["m"]) ** 2) / (math.pi * ct["m"] ** 2 * math.cos(a) ** 4)
         G = min(1, 2 * H[2] * V[2] / (V @ H), 2 * H[2] * L[2] / (V @ H))
         F = fresnel_by_hand(math.acos(V @ H), ct["n"])
         row = table.iloc[(table.theta_o_deg - theta_o).abs().argmin()]
-        assert row.cook_torrance == pytest.approx(ct["s"] * F * D * G / (4 * L[2] * V[2]) + ct["d"] * ct["R_d"],
+        assert row.cook_torrance == pytest.approx(ct["s"] * slide_D * G * F / V[2] + ct["d"] * ct["R_d"],
                                                   rel=1e-5), theta_o
+        assert row.cook_torrance_variant == pytest.approx(
+            ct["s"] * F * D * G / (4 * L[2] * V[2]) + ct["d"] * ct["R_d"], rel=1e-5), theta_o
+    # the caption's argument: at the mirror the lecture's specular term is pi (N.L) times the variant's
+    values = read_caption_values(tmp_path / "l.values.rst")
+    assert float(values["ct_specular_ratio"]) == pytest.approx(math.pi * math.cos(ti), abs=1e-3)
+    assert values["ct_max"] == f"{table.cook_torrance[table.theta_o_deg.abs() <= fig['scale_to_deg']].max():.3g}"
     # a hemisphere plus a lobe: d R_d away from the mirror, at least 1.5 times that at the mirror
     assert table.cook_torrance[(table.theta_o_deg > -40) & (table.theta_o_deg < 10)].to_numpy() == \
         pytest.approx(ct["d"] * ct["R_d"], rel=0.02)
@@ -319,7 +330,7 @@ def test_brdf_lobes_2d_phong_adds_a_protrusion_and_ward_turns_with_the_grain(con
     by hand (H in the turned plane: H.X = -sin(turn) sin a ...), peaks as high at the mirror but spreads
     wider, its half-height width at least twice the first's."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     t = table.theta_o_deg.to_numpy()
     base = fig["models"]["diffuse"]["rho_d"] / math.pi
@@ -354,13 +365,14 @@ def test_brdf_lobes_2d_draw_nothing_past_the_max_view_angle(config, tmp_path):
     drawn beyond it, and the largest radius drawn in each panel is the largest f of the table there
     (the printed max is the drawn max); the rim is the outermost labelled ring."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"},
+    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"},
                      fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     inside = table.theta_o_deg.abs() <= fig["scale_to_deg"]
     polar = [ax for ax in out["fig"].axes if ax.name == "polar"]
     assert len(polar) == 6
     tops = []
+    dashed = {"cook_torrance": "cook_torrance_variant", "ward": "ward_turned", "lunar": "lunar_lommel_seeliger"}
     for ax, key in zip(polar, ["diffuse", "phong", "blinn_phong", "cook_torrance", "ward", "lunar"]):
         drawn = []
         for line in ax.get_lines():
@@ -369,12 +381,16 @@ def test_brdf_lobes_2d_draw_nothing_past_the_max_view_angle(config, tmp_path):
             if len(theta) > 2:  # a curve, not the light's or the mirror's ray
                 drawn.append(r.max())
         assert drawn[0] == pytest.approx(table[key][inside].max(), rel=1e-5), key
-        if key == "ward":
-            assert drawn[1] == pytest.approx(table.ward_turned[inside].max(), rel=1e-5)
+        if key in dashed:
+            assert drawn[1] == pytest.approx(table[dashed[key]][inside].max(), rel=1e-5), key
         rings = ax.get_yticks()
         assert rings[-1] == pytest.approx(ax.get_ylim()[1])  # the rim is a ring, labelled
+        assert max(drawn) < ax.get_ylim()[1], key
         tops.append(ax.get_ylim()[1])
-    assert max(table[inside].drop(columns="theta_o_deg").max()) < min(tops)
+    # one scale for five panels, above every lobe; the lunar panel's magnified by plot_2d.lunar_zoom
+    assert tops[:5] == [tops[0]] * 5
+    assert max(table[inside].drop(columns="theta_o_deg").max()) < tops[0]
+    assert tops[5] == pytest.approx(tops[0] / fig["plot_2d"]["lunar_zoom"])
 
 
 def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
@@ -383,7 +399,7 @@ def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
     w / (8 pi cos theta_i) [(1 + B0) (1 - xi^2) / (1 + xi)^3 + H(cos theta_i)^2 - 1]; its
     Lommel-Seeliger variant has no such peak (it rises to the horizon on both sides)."""
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     table = pd.read_csv(tmp_path / "l.csv")
     lunar, ti = fig["models"]["lunar"], math.radians(fig["incidence_deg"])
     w, B0, xi = lunar["albedo"], lunar["B0"], lunar["xi"]
@@ -400,12 +416,49 @@ def test_brdf_lobes_2d_lunar_scatters_back_towards_the_light(config, tmp_path):
                                rtol=1e-5)
 
 
+def test_brdf_lobes_2d_lunar_panel_shows_its_variant_and_its_spike(config, tmp_path):
+    """Issue 28, a blind reviewer: the Lommel-Seeliger curve was invisible and the opposition spike
+    lay under the light's line. On the page (points at the figure's print size, through the lunar
+    panel's own transform), the dashed Lommel-Seeliger curve reaches at least 8 pt from the centre
+    and lies at least 6 pt inside the lunar curve somewhere; the light's and the mirror's lines are
+    thinner than the lobes and drawn behind them; Ward's panel marks its turned light L' and that
+    light's mirror direction at +-theta_i, in the dashed lobe's colour."""
+    fig = config["figures"]["lecture"]["brdf_lobes"]
+    out = run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv",
+                                                         "values": "l.values.rst"}, fig=fig)
+    figure = out["fig"]
+    figure.canvas.draw()
+    polar = [ax for ax in figure.axes if ax.name == "polar"]
+    ward, lunar = polar[4], polar[5]
+    curves = [line for line in lunar.get_lines() if len(line.get_xdata()) > 2]
+    rays = [line for line in lunar.get_lines() if len(line.get_xdata()) == 2]
+
+    def points(line):
+        """The curve's points on the page, in points from the panel's centre."""
+        xy = lunar.transData.transform(np.column_stack(line.get_data()))
+        centre = lunar.transData.transform([[0.0, 0.0]])
+        return np.linalg.norm(xy - centre, axis=1) * 72 / figure.dpi
+
+    hapke, lommel = points(curves[0]), points(curves[1])
+    assert curves[1].get_linestyle() != "-"  # the variant is dashed
+    assert lommel.max() >= 8
+    assert (hapke - lommel).max() >= 6
+    for ray in rays:
+        assert ray.get_zorder() < min(c.get_zorder() for c in curves)
+        assert ray.get_linewidth() < min(c.get_linewidth() for c in curves)
+    ti = math.radians(fig["incidence_deg"])
+    turned = [line for line in ward.get_lines() if len(line.get_xdata()) > 2][1]
+    marks = [line for line in ward.get_lines() if len(line.get_xdata()) == 2
+             and line.get_color() == turned.get_color()]
+    assert sorted(line.get_xdata()[0] for line in marks) == pytest.approx([-ti, ti])
+
+
 @pytest.fixture(scope="module")
 def lobes_3d(config, tmp_path_factory):
     """The 3-D lobes at the build's sampling, beside the 2-D figure's table they are checked against."""
     tmp_path = tmp_path_factory.mktemp("lobes")
     fig = config["figures"]["lecture"]["brdf_lobes"]
-    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv"}, fig=fig)
+    run_script("lecture_brdf_lobes_2d", tmp_path, {"png": "l.png", "pdf": "l.pdf", "csv": "l.csv", "values": "l.values.rst"}, fig=fig)
     run_script("lecture_brdf_lobes_3d", tmp_path, {"png": "l3.png", "values": "l3.values.rst"},
                inputs={"plane": str(tmp_path / "l.csv")}, fig=fig)
     return fig, tmp_path

@@ -48,6 +48,7 @@ rule lecture_brdf_lobes_2d:
         ),
         pdf=LECTURE_LOBES_2D.outputs["pdf"],
         csv=LECTURE_LOBES_2D.outputs["csv"],
+        values=LECTURE_LOBES_2D.outputs["values"],
     log:
         "logs/lecture/brdf_lobes_2d.log",
     benchmark:

@@ -27,6 +27,7 @@ _EXPORTS = {
     "ambient_reflectance_CookTorrance1982": "brdf",
     "intensity_CookTorrance1982": "brdf",
     "BRDF_METHODS": "brdf",
+    "COOK_TORRANCE_CONVENTIONS": "brdf",
     "directional_albedo": "brdf",
     "COS_THETA_F82": "fresnel",
     "fresnel_conductor": "fresnel",

@@ -23,6 +23,10 @@ Conventions (``convention=``), for the models with a microfacet D:
 - ``"physical"``: ``R_s = F D G / (4 (N.L)(N.V))`` with D normalised over the hemisphere
   (:mod:`reflectance.optics.microfacet`), the form of Walter et al. 2007 and of the article's
   Cook-Torrance ``k_spec``.
+- ``"lecture"`` (Cook-Torrance only): as the lecture's slides print it, ``BRDF = s R_s + d R_d``
+  with ``R_s = D G F / (N.V)`` and the slide's Beckmann ``D = exp(-(tan d / m)^2) / (4 m^2 cos^4 d)``
+  (Cook & Torrance's printed D over 4). Against ``"physical"`` its specular term is
+  ``pi (N.L)`` times larger.
 
 For the Beckmann function ``D_paper = pi D_phys``, so ``R_s(paper) = F D_phys G / ((N.L)(N.V))
 = 4 R_s(physical)``: with F = 1 the paper's directional albedo is four times the physical one.
@@ -77,6 +81,7 @@ __all__ = [
     "ambient_reflectance_CookTorrance1982",
     "intensity_CookTorrance1982",
     "BRDF_METHODS",
+    "COOK_TORRANCE_CONVENTIONS",
     "brdf",
     "directional_albedo",
 ]
@@ -105,10 +110,14 @@ def _positive(x):
     return np.where(x > 0, np.maximum(x, 1e-150), 1.0)
 
 
-def _check_convention(convention):
-    if convention not in CONVENTIONS:
+#: Cook-Torrance's conventions: the microfacet ones and the lecture's printed form
+COOK_TORRANCE_CONVENTIONS = (*CONVENTIONS, "lecture")
+
+
+def _check_convention(convention, known=CONVENTIONS):
+    if convention not in known:
         raise ValueError(
-            f"Unknown convention {convention!r}; known conventions: {', '.join(CONVENTIONS)}."
+            f"Unknown convention {convention!r}; known conventions: {', '.join(known)}."
         )
 
 
@@ -334,6 +343,10 @@ def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLik
     ``"paper"``: ``R_s = (F / pi) D G / ((N.L)(N.V))`` with D as printed (Beckmann without 1/pi).
     ``"physical"``: ``R_s = F D G / (4 (N.L)(N.V))`` with D normalised. For Beckmann, paper = 4 x
     physical.
+    ``"lecture"``: the lecture's slides, ``R_s = D G F / (N.V)`` with the slide's Beckmann
+    ``D = exp(-(tan d / m)^2) / (4 m^2 cos^4 d)`` (Beckmann only): ``pi (N.L)`` x physical. The slide
+    calls ``s R_s + d R_d`` the BRDF; its ``R_s`` is Blinn's ``s = D G F / (N.E)`` (an intensity
+    factor), not divided by ``N.L`` here, so that the lecture's printed expression is what is drawn.
 
     Parameters
     ----------
@@ -352,7 +365,7 @@ def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLik
         ``"VCavity_Blinn1977"`` (as printed) or ``"Smith_Beckmann_Walter2007"`` (needs a Beckmann
         ``m``).
     convention : str
-        ``"paper"`` or ``"physical"``.
+        ``"paper"``, ``"physical"`` or ``"lecture"``.
     **distribution_parameters
         The distribution's parameters (``m=0.15`` ...).
 
@@ -361,6 +374,8 @@ def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLik
     - Cook & Torrance 1982, "The reflectance model" (R = sR_s + dR_d) and "Directional distribution
       of the reflected light" (R_s, G, D).
     - Walter et al. 2007 (normalised microfacet BRDF, 1/4 Jacobian).
+    - Lecture, "Cook and Torrance Reflection Model (1982)" (R_s = DGF/(N.V), BRDF = sR_s + dR_d)
+      and "Distribution of Microfacet Orientations" (its Beckmann D with 4 m^2).
 
     Examples
     --------
@@ -369,13 +384,23 @@ def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLik
     >>> physical = brdf_CookTorrance1982(0.8, 0.7, 0.95, 0.9, 0.5, m=0.3, convention="physical")
     >>> print(f"{paper / physical:.6f}")
     4.000000
+    >>> lecture = brdf_CookTorrance1982(0.8, 0.7, 0.95, 0.9, 0.5, m=0.3, convention="lecture")
+    >>> print(f"{lecture / physical / (np.pi * 0.8):.6f}")  # pi (N.L) x physical
+    1.000000
     """
-    _check_convention(convention)
+    _check_convention(convention, COOK_TORRANCE_CONVENTIONS)
     s, d = np.asarray(s, dtype=np.float64), np.asarray(d, dtype=np.float64)
     if np.any(np.abs(s + d - 1.0) > 1e-9):
         raise ValueError(f"Cook & Torrance 1982 require s + d = 1, got s = {s!r}, d = {d!r}.")
     NL, NV, NH, VH = _cosines(NL, NV, NH, VH)
-    D = _distribution_values(NH, distribution, convention, distribution_parameters)
+    if convention == "lecture":
+        if distribution != "Beckmann1963":
+            raise ValueError("convention='lecture' is the slides' form, with their Beckmann D only: "
+                             f"it needs distribution='Beckmann1963', got {distribution!r}.")
+        # Lecture, "Distribution of microfacet orientations": e^{-(tan d/m)^2} / (4 m^2 cos^4 d)
+        D = _distribution_values(NH, distribution, "paper", distribution_parameters) / 4.0
+    else:
+        D = _distribution_values(NH, distribution, convention, distribution_parameters)
     shadowing_parameters = {}
     if shadowing_method == "Smith_Beckmann_Walter2007":
         if distribution != "Beckmann1963":
@@ -389,7 +414,9 @@ def brdf_CookTorrance1982(NL: npt.ArrayLike, NV: npt.ArrayLike, NH: npt.ArrayLik
     # G vanishes at least as fast as N.L and N.V (G <= G_b, G_c for the V-cavity; G1 ~ cot for
     # Smith), so dividing one cosine at a time stays bounded at grazing angles.
     G_over_NL_NV = G / _positive(NL) / _positive(NV)
-    if convention == "paper":
+    if convention == "lecture":
+        R_s = D * G * F / _positive(NV)  # Lecture, "Cook and Torrance": R_s = DGF/(N.V)
+    elif convention == "paper":
         R_s = F / np.pi * D * G_over_NL_NV  # Cook & Torrance 1982, R_s = (F/pi) D G / ((N.L)(N.V))
     else:
         R_s = F * D * G_over_NL_NV / 4.0  # Walter et al. 2007, F D G / (4 (N.L)(N.V))
