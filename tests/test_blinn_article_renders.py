@@ -243,12 +243,12 @@ def test_fig7_grazing_edge_lit_highlight_reads_at_full_view(fig7):
 def test_rim_profile_takes_the_brightest_column_and_the_object_rows():
     """The figure's profile: the column through the brightest pixel of any render, and the rows
     from the first to the last where any render shows the object (i > 0)."""
-    from reflectance.papers.draw.blinn77_fig7 import rim_profile
+    from reflectance.papers.draw.blinn77_fig7 import _rim_profile
 
     a, b = np.zeros((9, 7)), np.zeros((9, 7))
     a[2:5, 1:6], b[3:8, 1:6] = 0.1, 0.1  # two objects, overlapping rows 3-4
     a[2, 4], b[3, 2] = 5.0, 7.0  # the brightest pixel is b's, in column 2
-    column, rows = rim_profile([a, b])
+    column, rows = _rim_profile([a, b])
     assert column == 2
     assert rows.tolist() == [2, 3, 4, 5, 6, 7]
 

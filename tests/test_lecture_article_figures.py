@@ -501,6 +501,36 @@ def test_brdf_lobes_3d_fill_their_canvas(lobes_3d):
             assert cell.mean() > 0.005
 
 
+def test_brdf_lobes_3d_phong_and_blinn_phong_widths(lobes_3d):
+    """Issue 28: the titles' half-maximum widths, on the great circles through R in the plane of
+    incidence and across it, agree (to a degree) with the lecture's two formulas evaluated here by
+    hand on a 0.01-degree grid; Phong's lobe is round about R, Blinn-Phong's narrower across."""
+    from reflectance.io.captions import read_caption_values
+
+    fig, tmp_path = lobes_3d
+    values = read_caption_values(tmp_path / "l3.values.rst")
+    ti = math.radians(fig["incidence_deg"])
+    L = np.array([-math.sin(ti), 0.0, math.cos(ti)])
+    R = np.array([math.sin(ti), 0.0, math.cos(ti)])
+    t = np.radians(np.arange(-90.0, 90.0, 0.01))
+    across = np.cross(R, [0.0, 1.0, 0.0])  # in the plane of incidence, at right angles to R
+    circles = {"in": np.cos(t)[:, None] * R + np.sin(t)[:, None] * across,
+               "across": np.cos(t)[:, None] * R + np.sin(t)[:, None] * [0.0, 1.0, 0.0]}
+    ph, bp = fig["models"]["phong"], fig["models"]["blinn_phong"]
+    for way, V in circles.items():
+        V = V[V[:, 2] >= math.cos(math.radians(fig["scale_to_deg"]))]
+        H = (V + L) / np.linalg.norm(V + L, axis=1)[:, None]
+        f = {"phong": ph["p_d"] + ph["p_s"] * np.maximum(V @ R, 0) ** ph["c1"] / L[2],
+             "blinn_phong": bp["c_diff"] / math.pi
+             + (bp["m"] + 8) / (8 * math.pi) * H[:, 2] ** bp["m"] * bp["c_spec"]}
+        for key, fk in f.items():
+            above = V[fk >= fk.max() / 2]
+            width = math.degrees(math.acos(np.clip(above[0] @ above[-1], -1, 1)))
+            assert abs(float(values[f"{key}_width_{way}"]) - width) <= 1, (key, way, width)
+    assert abs(float(values["phong_width_in"]) - float(values["phong_width_across"])) <= 1
+    assert float(values["blinn_phong_width_across"]) < 0.8 * float(values["blinn_phong_width_in"])
+
+
 def _lobes_3d_cells(path):
     """The 3-D lobes' picture (RGB, int) and its six cells, two rows of three (the last one holds the key)."""
     from PIL import Image

@@ -71,7 +71,7 @@ rule blinn77_fig7:
         "benchmarks/blinn_1977/fig7.tsv"
     threads: 1
     resources:
-        mem_mb=2400,
+        mem_mb=2500,
         runtime=15,
     params:
         **B77_FIG7_PARAMS,

@@ -160,6 +160,8 @@ with script_log(snakemake) as log:
         "ward_drawn_to": found["ward"]["drawn_to"], "ward_turned_max": f"{turned_peak:.3g}",
         "lunar_max": found["lunar"]["max"], "lunar_max_plane": found["lunar"]["plane"],
         "lunar_max_at": found["lunar"]["at"], "scale": f"{top:.2g}",
-        **{f"{key}_width_{way}": f"{w:.0f}" for (key, way), w in widths.items()},
+        "phong_width_in": f"{widths['phong', 'in']:.0f}", "phong_width_across": f"{widths['phong', 'across']:.0f}",
+        "blinn_phong_width_in": f"{widths['blinn_phong', 'in']:.0f}",
+        "blinn_phong_width_across": f"{widths['blinn_phong', 'across']:.0f}",
     })
     save_plotter(pl, snakemake.output.png, margin=cfg["render_3d"]["margin"])

@@ -24,14 +24,14 @@ from reflectance.papers.scenes import (highlight_crossover_Blinn1977, materials_
 from reflectance.scripting import params_dict
 from reflectance.io.tables import write_csv
 
-__all__ = ["rim_profile", "run"]
+__all__ = ["run"]
 
 TITLES = {"a": "Figure 7a  Simulation of aluminium surface",
           "b": "Figure 7b  Simulation of magnesium oxide surface"}
 MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}  # definition.MODELS, titled
 
 
-def rim_profile(renders: Iterable[npt.NDArray[np.floating]]
+def _rim_profile(renders: Iterable[npt.NDArray[np.floating]]
                 ) -> tuple[int, npt.NDArray[np.intp]]:
     """The column through the brightest pixel of ``renders`` (images of i of one size), and the
     rows of it that show the object in any of them (i >= p_a > 0 there, 0 off it): where the
@@ -133,7 +133,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         edge_white = white if light == grazing else 1.0  # the edge-lit images' white (an i)
         ts_edge = {p: Y[definition.render_key(p, "torrance_sparrow", light, None)]
                    for p in ("a", "b")}
-        column, down = rim_profile(ts_edge.values())
+        column, down = _rim_profile(ts_edge.values())
         fig = new_figure(W, H)
         for k, panel in enumerate(("a", "b")):
             x0 = 0.06 + k * (2 * wd + gap + block)
