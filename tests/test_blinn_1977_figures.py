@@ -162,15 +162,17 @@ def test_fig5_6_numbers(tmp, fig):
         assert marked == pytest.approx(np.degrees(tr[shown]), abs=0.06)
         if fig == "fig6" and s is sets[0]:
             assert len(marked) == 1 and 80 < marked[0] < 86
-        # issue 28: one radial scale for Figs. 5 and 6: at least every value drawn at either angle
-        # (by hand, Phong as printed and Torrance-Sparrow at both), and at most 10 % more
+        # issue 28: one radial scale for Figs. 5 and 6: its outer ring the first ring at or beyond
+        # every value drawn at either angle (by hand, Phong as printed and Torrance-Sparrow at both)
         both = []
         for angle in CONFIG["fig5_6"]["incidence_deg"].values():
             _, ph, ts = blinn_curves(angle, s)
             t = np.radians(np.arange(-90 + 0.05, 90, 0.05))
             NH_a = np.cos((np.radians(angle) - t) / 2)
             both += [ts.max(), (s["p_d"] * np.cos(np.radians(angle)) + s["p_s"] * NH_a**c1).max()]
-        assert max(both) <= row.polar_scale <= 1.1 * max(both)
+        rings = [float(r) for r in str(row.polar_rings).split()]
+        assert rings == sorted(rings) and row.polar_scale == rings[-1]
+        assert rings[-2] < max(both) <= rings[-1]
         # issue 28: "coincides" in the legend when Phong as printed lies within a line width of the
         # matched curve; their gap is p_s (1 - F(0)) at the mirror (D1 = 1)
         gap = s["p_s"] * (1 - F0) / row.polar_scale

@@ -354,7 +354,7 @@ def expose_key(XYZ: npt.NDArray[np.float64], percentile: float = 50.0,
 #: ``tanh`` reaches 1 - 1e-3 at x = 3.8 (a highlight 3.8 (1 - k) above the knee is white);
 #: ``Reinhard2002``, x / (1 + x) (Reinhard et al. 2002, "Photographic tone reproduction for
 #: digital images", eq. 3, L / (1 + L)), only at x = 999: a bright highlight keeps a gradient.
-HIGHLIGHT_ROLLOFFS = {
+HIGHLIGHT_ROLLOFFS: dict[str, Callable[[npt.NDArray[np.float64]], npt.NDArray[np.float64]]] = {
     "tanh": np.tanh,
     "Reinhard2002": lambda x: x / (1.0 + x),
 }
