@@ -198,6 +198,16 @@ def test_fig5_6_numbers(tmp, fig):
     assert peak_deg == pytest.approx(t_default[np.argmax(ts_default)], abs=0.06)
     beyond = float(values_rst["chosen_ts_beyond_mirror"])
     assert beyond == pytest.approx(peak_deg - np.degrees(ti), abs=0.06)
+    # the caption says where the peak's direction is drawn: an inset magnifying the mirror +- the
+    # configured half-width when that window holds both peaks (by hand), else an arrow
+    _, ph_default, _ = blinn_curves(np.degrees(ti), sets[0])
+    half = CONFIG["fig5_6"]["zoom_half_width_deg"]
+    peaks = (t_default[np.argmax(ph_default)], t_default[np.argmax(ts_default)])
+    if all(abs(p - np.degrees(ti)) <= half - 0.1 for p in peaks):
+        assert f"views {np.degrees(ti) - half:g} to {np.degrees(ti) + half:g} degrees" in \
+            values_rst["chosen_peak_mark"]
+    elif any(abs(p - np.degrees(ti)) > half + 0.1 for p in peaks):
+        assert "arrow" in values_rst["chosen_peak_mark"]
     if fig == "fig6":
         assert 1 < beyond < 10  # "not in quite the same direction"
     if fig == "fig5":

@@ -278,6 +278,12 @@ with script_log(snakemake) as log:
         "chosen_torrance_sparrow_peak": f"{default.torrance_sparrow_max:.3f}",
         "chosen_torrance_sparrow_deg": f"{default.torrance_sparrow_max_deg:.1f}",
         "chosen_ts_beyond_mirror": f"{default.torrance_sparrow_max_deg - default.theta_i_deg:.1f}",
+        # where the drawing marks the peak's direction: the inset's line, or (no inset) an arrow
+        "chosen_peak_mark": (
+            "the thin orange arrow in the Torrance-Sparrow panel" if np.isnan(default.zoom_from_deg)
+            else f"the thin orange line in the inset over i(theta), which magnifies the views "
+                 f"{default.zoom_from_deg:g} to {default.zoom_to_deg:g} degrees"),
+        "chosen_outer_ring": str(default.polar_rings).split()[-1],
         "set1_difference": f"{first.max_difference_ts_matched:.0%}".replace("%", " %"),
         "set2_difference": f"{second.max_difference_ts_matched:.0%}".replace("%", " %"),
         "set1_F0": f"{first.F0:.2f}", "set2_F0": f"{second.F0:.3f}",
