@@ -8,6 +8,7 @@ the paper's formulas say they must show (computed here, not taken from the scrip
 
 import copy
 import json
+import re
 import runpy
 from pathlib import Path
 from types import SimpleNamespace
@@ -353,6 +354,36 @@ def test_sweep_frames_labels_true_of_pixels_and_unclipped(tmp_path):
         ts_a, ts_b = rows.torrance_sparrow_max["a"], rows.torrance_sparrow_max["b"]
         if abs(ts_b / ts_a - 1) > 0.05:
             assert (cell["b", 1].max() > cell["a", 1].max()) == (ts_b > ts_a), f
+
+
+def test_sweep_rim_closeup_holds_each_materials_brightest_pixel(tmp_path):
+    """Past the crossover the lit rim is about a pixel thick: the contact sheet magnifies one crop
+    of the last frame's Torrance-Sparrow images. The crop the caption names holds, in the GIF's
+    last frame, the brightest pixel of each material's Torrance-Sparrow image."""
+    sweep, out = _run_sweep(tmp_path, n_frames=4)
+    assert sweep["angles_deg"][1] > highlight_crossover(B77)  # the default draws the close-up
+    values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", out["values"].read_text()))
+    r0, r1, c0, c1 = (int(v) for v in re.search(r"rows (\d+) to (\d+), columns (\d+) to (\d+)",
+                                                 values["closeup"]).groups())
+    with Image.open(out["gif"]) as gif:
+        frames = [np.asarray(frame.convert("L")).copy() for frame in ImageSequence.Iterator(gif)]
+    label_w, head, gap = 96, 20, 4  # the GIF's layout
+    w = (frames[-1].shape[1] - label_w - gap) // 2
+    h = (frames[-1].shape[0] - head - 22 - 2 * gap) // 2
+    assert (r1 - r0 + 1, c1 - c0 + 1) == (min(sweep["rim_closeup"]["height_px"], h),
+                                          min(sweep["rim_closeup"]["width_px"], w))
+    assert 0 <= r0 and r1 < h and 0 <= c0 and c1 < w
+    for r, key in enumerate(sweep["panels"]):
+        ts = frames[-1][head + r * (h + gap):head + r * (h + gap) + h,
+                        label_w + w + gap:label_w + 2 * w + gap]
+        assert ts.max() > 0, key
+        assert ts[r0:r1 + 1, c0:c1 + 1].max() == ts.max(), key
+
+
+def highlight_crossover(config):
+    from reflectance.papers.scenes import highlight_crossover_Blinn1977
+
+    return highlight_crossover_Blinn1977(config["fig7"]["panels"]["a"], config["fig7"]["panels"]["b"])
 
 
 def test_mgo_passes_aluminium_only_near_grazing_light():

@@ -16,7 +16,9 @@ from PIL import Image, ImageDraw, ImageFont
 from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.atomic import atomic_write
 from reflectance.io.captions import write_caption_values
-from reflectance.io.figures import PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
+from matplotlib.patches import Rectangle
+
+from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.integrator import shade_samples
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import blinn77_fig7_sweep as definition
@@ -53,6 +55,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                  if len(panels) == 2 else None)
     font = ImageFont.load_default(size=13)
     frames, rows, greys, labels = [], [], {}, []  # greys: the frame's images without text, for the contact sheet
+    brightest: dict[int, tuple[int, int]] = {}  # per frame, (row, column) of the brightest Torrance-Sparrow pixel of either material
     h, w = cam["height"], cam["width"]
     label_w, head, foot, gap = 96, 20, 22, 4
     for f, angle in enumerate(angles):
@@ -70,6 +73,9 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                 one = dataclasses.replace(scene, lights=(scene.lights[f],))
                 Y[key, model] = samples.to_pixels(shade_samples(one, samples, shadowed[f:f + 1]))[..., 1]
         white = max(y.max() for y in Y.values())
+        ts_top = np.max([Y[key, "torrance_sparrow"] for key in cfg["panels"]], axis=0)
+        top_row, top_column = np.unravel_index(np.argmax(ts_top), ts_top.shape)
+        brightest[f] = int(top_row), int(top_column)
         for r, (key, p) in enumerate(zip(cfg["panels"], panels)):
             for k, model in enumerate(MODELS):
                 grey = encode(compress_highlights(np.repeat(Y[key, model][..., None], 3, -1) / white,
@@ -115,7 +121,15 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     wi, hi = w / DPI, h / DPI
     bw = 2 * wi + gap  # a block: Phong and Torrance-Sparrow side by side
     W = label_in + cols * bw + (cols - 1) * block_gap
-    H = top + 2 * (head + len(panels) * (hi + gap)) + 0.05
+    # past the computed crossover the lit rim is about a pixel thick: the last frame's
+    # Torrance-Sparrow rim magnified in a strip below (fig7_sweep.rim_closeup pixels around the
+    # frame's brightest Torrance-Sparrow pixel, the same crop of each material)
+    last = picks[-1]
+    closeup = crossover is not None and angles[last] > crossover
+    cw, ch = min(cfg["rim_closeup"]["width_px"], w), min(cfg["rim_closeup"]["height_px"], h)
+    zw = (W - label_in - (len(panels) - 1) * block_gap) / len(panels)  # inches per close-up
+    zh, z_head = zw * ch / cw, 0.5
+    H = top + 2 * (head + len(panels) * (hi + gap)) + 0.05 + (z_head + zh + 0.1) * closeup
     fig = new_figure(W, H, facecolor="black")
     for n, f in enumerate(picks):
         c, r = n % cols, n // cols
@@ -132,10 +146,37 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                 ax.imshow(greys[f, key, model], cmap="gray", vmin=0, vmax=255,
                           interpolation="nearest")
                 ax.set_axis_off()
+                if closeup and f == last and model == "torrance_sparrow":  # the crop, boxed
+                    r0, c0 = _crop_origin(brightest[f], (h, w), (ch, cw))
+                    ax.add_patch(Rectangle((c0 - 0.5, r0 - 0.5), cw, ch, fill=False,
+                                           edgecolor=OKABE_ITO[1], lw=0.8))
                 if c == 0 and k == 0:
                     fig.text((label_in - 0.06) / W, (y + hi / 2) / H,
                              panels[j]["label"].replace(" ", "\n", 1), ha="right", va="center",
                              color="white", fontsize=T["annotation"])
+    values = {}
+    if closeup:
+        r0, c0 = _crop_origin(brightest[last], (h, w), (ch, cw))
+        magnification = zw * DPI / cw / (wi * DPI / w)  # against the sheet's own renders
+        y = 0.08
+        fig.text((label_in + (W - label_in) / 2) / W, (y + zh + z_head - 0.04) / H,
+                 f"light {angles[last]:.0f}°, Torrance-Sparrow: the lit rim in the boxes "
+                 f"({cw} × {ch} pixels), magnified {magnification:.0f} times, same exposure",
+                 ha="center", va="top", color="white", fontsize=T["annotation"])
+        for j, key in enumerate(cfg["panels"]):
+            x = label_in + j * (zw + block_gap)
+            ax = fig.add_axes((x / W, y / H, zw / W, zh / H))
+            ax.imshow(greys[last, key, "torrance_sparrow"][r0:r0 + ch, c0:c0 + cw], cmap="gray",
+                      vmin=0, vmax=255, interpolation="nearest", aspect="auto")
+            ax.set_xticks([]), ax.set_yticks([])
+            for side in ax.spines.values():  # boxed like the crops on the sheet
+                side.set(visible=True, color=OKABE_ITO[1])
+            row = table[(table.frame == last) & (table.panel == key)].iloc[0]
+            ax.set_title(f"{panels[j]['label']}: brightest i {row.torrance_sparrow_max:.2f}",
+                         color="white", fontsize=T["annotation"], pad=3)
+        values = {"closeup_angle": f"{angles[last]:.0f}",
+                  "closeup_magnification": f"{magnification:.0f}",
+                  "closeup_rows": f"{r0} to {r0 + ch - 1}", "closeup_columns": f"{c0} to {c0 + cw - 1}"}
     cross = "" if crossover is None else (f";\nMgO's highlight passes aluminium's beyond "
                                           f"{crossover:.1f}\u00b0 from the eye")
     fig.suptitle(f"Blinn 1977, Fig. 7 as a movie (Phong p_s {cfg['phong_specular'].replace('_', ' ')})"
@@ -150,7 +191,22 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     angle = written[written.panel == "a"].light_angle_deg.to_numpy()
     write_caption_values(out.values, {
         "crossover": f"{written.crossover_deg.iloc[0]:.1f}",
-        "rendered_mgo_brighter": ", ".join(f"{a:.0f}" for a in angle[brighter]) or "none"})
+        "rendered_mgo_brighter": ", ".join(f"{a:.0f}" for a in angle[brighter]) or "none",
+        "closeup": (f"Below the sheet, the {values['closeup_angle']}-degree frame's Torrance-Sparrow "
+                    f"images are magnified {values['closeup_magnification']} times in the boxed "
+                    f"{cw} by {ch} pixels "
+                    f"(rows {values['closeup_rows']}, columns {values['closeup_columns']} of each "
+                    f"render) around the frame's brightest Torrance-Sparrow pixel, the rim where "
+                    f"N = H, each titled with its brightest i.") if values else
+                   "No frame shown lies past the crossover, so no rim close-up is drawn."})
+
+
+def _crop_origin(centre: tuple[int, int], shape: tuple[int, int],
+                 size: tuple[int, int]) -> tuple[int, int]:
+    """The top-left pixel of a ``size`` (rows, columns) crop centred on ``centre`` and inside an
+    image of ``shape``."""
+    (r, c), (h, w), (sh, sw) = centre, shape, size
+    return int(np.clip(r - sh // 2, 0, h - sh)), int(np.clip(c - sw // 2, 0, w - sw))
 
 
 def _claim(rows: list[dict], angle: float, crossover: float | None) -> str:
