@@ -279,6 +279,34 @@ def test_errata_lecture_specular_term_is_blinns_not_cook_torrances():
     assert ratios[0] / ratios[1] == pytest.approx(np.cos(0.2) / np.cos(1.2), rel=1e-12)
 
 
+def test_errata_lecture_specular_term_with_its_own_D_is_pi_NL_times_the_normalised_brdf():
+    """With the lecture's own D, exp(-(tan d/m)^2) / (4 m^2 cos^4 d), its DGF/(N.V) is pi (N.L)
+    times the normalised microfacet BRDF D' F G / (4 (N.L)(N.V)), D' = exp(..)/(pi m^2 cos^4 d)
+    (the integral of D' cos d over the hemisphere is 1, checked here by quadrature): a radiance per
+    E_L/pi, consistent, only misnamed; and pi (N.L)/4 times Cook & Torrance's R_s."""
+    from scipy.integrate import quad
+
+    from reflectance.papers.errata import ERRATA
+
+    m = 0.3
+    normalised = lambda c: beckmann_by_hand(c, m) / np.pi  # noqa: E731
+    total, _ = quad(lambda a: normalised(np.cos(a)) * np.cos(a) * np.sin(a) * 2 * np.pi, 0, np.pi / 2)
+    assert total == pytest.approx(1.0, rel=1e-6)
+    for L, V in [(direction(0.2), direction(0.5, np.pi)), (direction(1.2), direction(0.9, np.pi))]:
+        H = half(L, V)
+        G, F = vcavity_by_hand(L, V), 0.7
+        lecture = beckmann_by_hand(N @ H, m) / 4 * G * F / (N @ V)
+        assert lecture == pytest.approx(np.pi * (N @ L) * normalised(N @ H) * F * G
+                                        / (4 * (N @ L) * (N @ V)), rel=1e-12)
+        assert lecture / brdf(L, V, N, "CookTorrance1982", F=F, m=m) == pytest.approx(
+            np.pi * (N @ L) / 4, rel=1e-12)
+    # the errata row's number: at the mirror, incidence 60 degrees, F = 1
+    result = ERRATA["lecture-specular-term"](theta_deg=60.0, m=m)
+    mu = np.cos(np.radians(60.0))
+    # at the mirror N.H = 1 and E.H = N.E, so G_b = G_c = 2 and G = 1; D = 1/(4 m^2)
+    assert result.numbers["own_D"] == pytest.approx(1 / (4 * m**2) / mu, rel=1e-12)
+
+
 def test_blinn_torrance_sparrow_against_the_printed_equations():
     # Blinn Fig. 7a aluminium: p_s = .4, p_d = .6, n = 200, c3 = .5; s = D3 G F / (N.E)
     L, E = direction(1.2, 0.0), direction(0.4, np.pi)

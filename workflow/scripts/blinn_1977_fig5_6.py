@@ -67,7 +67,8 @@ def draw_zoom(cart, values, row, tr_deg, window):
         inset.plot([row[f"{key}_max_deg"]], [row[f"{key}_max"]], "o", color=CURVES[key][1], ms=3.5)
     low = min(values[k][near].min() for k in ("phong_matched", "torrance_sparrow"))
     high = max(row[f"{k}_max"] for k in ("phong_matched", "torrance_sparrow"))
-    inset.set(xlim=window[::-1], ylim=(low, high + 0.1 * (high - low)), yticks=[],
+    # a margin below as above, so a peak at the window's lowest value is not cut by the frame
+    inset.set(xlim=window[::-1], ylim=(low - 0.08 * (high - low), high + 0.1 * (high - low)), yticks=[],
               xticks=[round(row["theta_i_deg"] + d) for d in (-0.4, 0, 0.4) * np.diff(window)])
     inset.tick_params(labelsize=TEXT_SIZE["table"], pad=1)
     inset.axvline(row["theta_i_deg"], color="0.5", lw=0.8, ls=(0, (3, 2)))

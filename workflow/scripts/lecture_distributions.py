@@ -72,8 +72,11 @@ with script_log(snakemake) as log:
     # is the flattest curve, said beside the curve (in the empty lower right, clear of every curve)
     smooth = min(cfg["m"])
     flat = curves[f"gaussian_slide_m{smooth:g}"][-1]
-    note = axes[0].annotate(f"slide, m = {smooth:g}\n(\u201cnearly smooth\u201d):\nD = {flat:.2f} at "
-                            f"{np.degrees(alpha[-1]):.0f}\u00b0",
+    # (the slide says "nearly smooth" of Cook & Torrance's m, not of this one: the note quotes
+    # nothing; in the slide's Gaussian, m in the numerator, that m is the flattest: the erratum
+    # lecture-gaussian-m, workflow/reflectance/papers/errata.py)
+    note = axes[0].annotate(f"slide, m = {smooth:g}:\nD = {flat:.2f} at "
+                            f"{np.degrees(alpha[-1]):.0f}\u00b0,\nnearly flat",
                             xy=(np.degrees(alpha[-1]) - 1, flat), xytext=(1.0, 0.16), textcoords="axes fraction",
                             ha="right", va="bottom", fontsize="small", color=OKABE_ITO[1], zorder=5,
                             arrowprops=dict(arrowstyle="->", color=OKABE_ITO[1], lw=0.8,

@@ -258,12 +258,17 @@ def lecture_specular_term(*, theta_deg, m, **_):
     V = np.array([np.sqrt(1 - mu * mu), 0.0, mu])
     N = np.array([0.0, 0.0, 1.0])
     ct = brdf(L, V, N, "CookTorrance1982", F=1.0, m=m)
-    lecture = distribution_Beckmann1963(1.0, m) * shadowing_VCavity_Blinn1977(mu, mu, 1.0, mu) * 1.0 / mu
+    G = shadowing_VCavity_Blinn1977(mu, mu, 1.0, mu)
+    lecture = distribution_Beckmann1963(1.0, m) * G * 1.0 / mu  # DGF/(N.V), C&T's D
+    # the same with the lecture's own D, printed with 4 m^2 below the bar (slide 'Distribution of
+    # Microfacet Orientations'): a quarter of C&T's D at every angle
+    own_D = lecture / 4
     ratio = lecture / ct
     return _result(f"mirror direction, incidence {theta_deg:g} deg, m = {m:g}, F = 1: "
-                   f"{lecture:.4g} (lecture) against {ct:.4g} (C&T): a factor {ratio:.4g} = "
-                   f"pi cos(theta_i), which changes with the light", ratio,
-                   ct=ct, lecture=lecture, ratio=ratio)
+                   f"DGF/(N.V) {lecture:.4g} with C&T's D against their R_s {ct:.4g}: a factor "
+                   f"{ratio:.4g} = pi cos(theta_i), which changes with the light; with the "
+                   f"lecture's own D (4 m^2) {own_D:.4g}, pi cos(theta_i)/4 of C&T's R_s", ratio,
+                   ct=ct, lecture=lecture, own_D=own_D, ratio=ratio)
 
 
 @_erratum("lecture-blinn-phong-factor")
