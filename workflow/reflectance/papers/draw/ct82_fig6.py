@@ -50,7 +50,7 @@ def title_of(item, fig_cfg):
         return TITLES[part]
     # the departure: not the paper's panel, so not labelled as it ("(a)" twice misled a reader)
     printed = {k: fig_cfg["panels"][part][k] for k in departure}
-    return (f"({part}\u2032) variant, not in the paper:\n{departure_text(departure)} "
+    return (f"({part}\u2032) variant, not in the paper:\n{departure_text(departure)}\n"
             f"(printed: {departure_text(printed)})")
 
 
