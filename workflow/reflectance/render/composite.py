@@ -167,7 +167,7 @@ def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], s
         ``L99``: the 10th, 50th and 99th percentile of L*; ``body_chroma``: median C*ab;
         ``body_hue_deg``: CIELAB hue of the median a*, b*;
         ``highlight_chroma_ratio``: median C*ab of the pixels at or above the
-        ``highlight_percentile`` of L*, over the body's;
+        ``highlight_percentile`` of L*, over the body's (NaN where the body has no chroma);
         ``highlight_hue_deg``: CIELAB hue of the mean of the 1 % brightest pixels without a
         channel at 255 (NaN if none); ``clipped``: fraction of object pixels with a channel at 255.
     """
@@ -198,5 +198,7 @@ def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], s
             "body_chroma": float(np.median(C)),
             "body_hue_deg": float(np.degrees(np.arctan2(np.median(Lab[:, 2]),
                                                         np.median(Lab[:, 1]))) % 360),
-            "highlight_chroma_ratio": float(np.median(C[highlight]) / np.median(C)),
+            # NaN for a grey object (no body chroma to compare with), without a divide warning
+            "highlight_chroma_ratio": (float(np.median(C[highlight]) / np.median(C))
+                                       if np.median(C) > 0 else np.nan),
             "highlight_hue_deg": hue, "clipped": float((~unclipped).mean())}
