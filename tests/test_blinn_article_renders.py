@@ -296,9 +296,10 @@ def test_fig7_front_lit_peak_is_blinns_intensity(fig7, p):
 
 # --- the light sweep --------------------------------------------------------------------------
 
-def _run_sweep(tmp, n_frames=5):
+def _run_sweep(tmp, n_frames=5, **changes):
     fig7 = _fig7_config()
-    sweep = dict(B77["fig7_sweep"], n_frames=n_frames, size=64, supersample=1, contact_frames=4)
+    sweep = dict(B77["fig7_sweep"], n_frames=n_frames, size=64, supersample=1, contact_frames=4,
+                 **changes)
     out = {"gif": str(tmp / "sweep.gif"), "contact": str(tmp / "sweep.png"), "csv": str(tmp / "sweep.csv"),
            "values": str(tmp / "sweep.values.rst")}
     run_script("blinn_1977_fig7_sweep.py", tmp,
@@ -358,9 +359,10 @@ def test_sweep_frames_labels_true_of_pixels_and_unclipped(tmp_path):
 
 def test_sweep_rim_closeup_holds_each_materials_brightest_pixel(tmp_path):
     """Past the crossover the lit rim is about a pixel thick: the contact sheet magnifies one crop
-    of the last frame's Torrance-Sparrow images. The crop the caption names holds, in the GIF's
-    last frame, the brightest pixel of each material's Torrance-Sparrow image."""
-    sweep, out = _run_sweep(tmp_path, n_frames=4)
+    of the last frame's Torrance-Sparrow images of the torus (view fig7). The crop the caption
+    names holds, in the GIF's last frame, the brightest pixel of each material's Torrance-Sparrow
+    image."""
+    sweep, out = _run_sweep(tmp_path, n_frames=4, view="fig7", angles_deg=[5, 170])
     assert sweep["angles_deg"][1] > highlight_crossover(B77)  # the default draws the close-up
     values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", out["values"].read_text()))
     r0, r1, c0, c1 = (int(v) for v in re.search(r"rows (\d+) to (\d+), columns (\d+) to (\d+)",

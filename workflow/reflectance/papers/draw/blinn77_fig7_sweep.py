@@ -41,7 +41,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     params = params_dict(snakemake.params)
     cfg, fig7, out = params["sweep"], params["fig7"], snakemake.output
     panels = [fig7["panels"][key] for key in cfg["panels"]]
-    cam = sweep_camera_Blinn1977(fig7, cfg)
+    cam = sweep_camera_Blinn1977(definition.seen(params), cfg)
     angles = np.linspace(*cfg["angles_deg"], cfg["n_frames"])
     scenes = {}
     for item in definition.scenes(params):  # the scenes the config check validated
@@ -121,11 +121,11 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     wi, hi = w / DPI, h / DPI
     bw = 2 * wi + gap  # a block: Phong and Torrance-Sparrow side by side
     W = label_in + cols * bw + (cols - 1) * block_gap
-    # past the computed crossover the lit rim is about a pixel thick: the last frame's
-    # Torrance-Sparrow rim magnified in a strip below (fig7_sweep.rim_closeup pixels around the
+    # past the computed crossover the torus's lit rim (view fig7) is about a pixel thick: the last
+    # frame's Torrance-Sparrow rim magnified in a strip below (fig7_sweep.rim_closeup pixels around the
     # frame's brightest Torrance-Sparrow pixel, the same crop of each material)
     last = picks[-1]
-    closeup = crossover is not None and angles[last] > crossover
+    closeup = crossover is not None and angles[last] > crossover and cfg["view"] == "fig7"
     cw, ch = min(cfg["rim_closeup"]["width_px"], w), min(cfg["rim_closeup"]["height_px"], h)
     zw = (W - label_in - (len(panels) - 1) * block_gap) / len(panels)  # inches per close-up
     zh, z_head = zw * ch / cw, 0.5
@@ -198,7 +198,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
                     f"(rows {values['closeup_rows']}, columns {values['closeup_columns']} of each "
                     f"render) around the frame's brightest Torrance-Sparrow pixel, the rim where "
                     f"N = H, each titled with its brightest i.") if values else
-                   "No frame shown lies past the crossover, so no rim close-up is drawn."})
+                   "No rim close-up is drawn: the view is not the torus, or no frame shown lies "
+                   "past the crossover."})
 
 
 def _crop_origin(centre: tuple[int, int], shape: tuple[int, int],

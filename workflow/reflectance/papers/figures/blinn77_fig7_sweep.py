@@ -16,7 +16,7 @@ RULE = "blinn77_fig7_sweep"
 OUT = "results/blinn_1977"
 _FIG7 = "figures.blinn_1977.fig7"
 PARAMS = {"sweep": "figures.blinn_1977.fig7_sweep",
-          "fig7": tuple(f"{_FIG7}.{key}" for key in ("object", "camera", "p_a", "panels")),
+          "fig7": tuple(f"{_FIG7}.{key}" for key in ("object", "camera", "p_a", "panels", "grazing")),
           "wavelengths": "wavelengths"}
 MODELS = ("phong", "torrance_sparrow")
 
@@ -38,9 +38,18 @@ def frame_lights(sweep):
     return [{"angle_deg": float(a), "azimuth_deg": sweep["azimuth_deg"]} for a in angles]
 
 
+def seen(params):
+    """fig7 with the object and eye the sweep shows (``fig7_sweep.view``): fig7's own (the torus)
+    or ``fig7.grazing``'s (the default figure's flat bar, seen along its top face)."""
+    fig7 = params["fig7"]
+    if params["sweep"]["view"] == "grazing":
+        return {**fig7, "object": fig7["grazing"]["object"], "camera": fig7["grazing"]["camera"]}
+    return fig7
+
+
 def scenes(params, spectra_dir=None):
     """One scene per panel and model; its lights are the frames' (rendered, not written)."""
-    sweep, fig7, w = params["sweep"], params["fig7"], params["wavelengths"]
+    sweep, fig7, w = params["sweep"], seen(params), params["wavelengths"]
     camera, lights = sweep_camera_Blinn1977(fig7, sweep), frame_lights(sweep)
     out = []
     for key in sweep["panels"]:
