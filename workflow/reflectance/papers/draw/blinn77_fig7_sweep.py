@@ -134,7 +134,12 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     for n, f in enumerate(picks):
         c, r = n % cols, n // cols
         x0, y_top = label_in + c * (bw + block_gap), H - top - r * (head + len(panels) * (hi + gap))
+        # the frame lit as the default Fig. 7's edge-lit images are (same object, eye and light)
+        as_fig7 = cfg["view"] == "grazing" and (
+            (angles[f], cfg["azimuth_deg"]) == (fig7["grazing"]["light"]["angle_deg"],
+                                                fig7["grazing"]["light"]["azimuth_deg"]))
         fig.text((x0 + bw / 2) / W, (y_top - 0.02) / H, f"light {angles[f]:.0f}\u00b0"
+                 + (" (Fig. 7's)" if as_fig7 else "")
                  + (labels[f] and ": " + labels[f]), ha="center", va="top", color="white",
                  fontsize=T["symbol"])
         for k, (model, name) in enumerate(MODELS.items()):
