@@ -394,8 +394,8 @@ def article_heidrich_seidel_t(**_):
     T_unit = (D - (D @ N) * N) / np.linalg.norm(D - (D @ N) * N)
     T_printed = (D - (D @ N) * N) / np.linalg.norm(D - (D @ T_unit) * N)
     length = np.linalg.norm(T_printed)
-    return _result(f"D = (0.6, 0, 0.8): the printed T has length {length:.4f}, not 1", length,
-                   length=length)
+    return _result(f"D = (0.6, 0, 0.8), N = (0, 0, 1): with the true unit T put in its own "
+                   f"denominator, the printed T has length {length:.4f}, not 1", length, length=length)
 
 
 # -- the table ----------------------------------------------------------------------------------
