@@ -307,6 +307,22 @@ def _run_sweep(tmp, n_frames=5, **changes):
     return sweep, {k: Path(v) for k, v in out.items()}
 
 
+def _gif_frames(path):
+    with Image.open(path) as gif:
+        return [np.asarray(frame.convert("L")).copy() for frame in ImageSequence.Iterator(gif)]
+
+
+def _gif_cells(frame, panels):
+    """A GIF frame's images by (panel, model index): 0 Phong, 1 Torrance-Sparrow (its layout: a
+    96-px label column, a 20-px head, a 22-px foot, 4-px gaps)."""
+    label_w, head, gap = 96, 20, 4
+    w = (frame.shape[1] - label_w - gap) // 2
+    h = (frame.shape[0] - head - 22 - 2 * gap) // 2
+    return {(key, k): frame[head + r * (h + gap):head + r * (h + gap) + h,
+                            label_w + k * (w + gap):label_w + k * (w + gap) + w]
+            for r, key in enumerate(panels) for k in range(2)}
+
+
 def test_sweep_gif_frames_and_determinism(tmp_path):
     (tmp_path / "1").mkdir(), (tmp_path / "2").mkdir()
     sweep, first = _run_sweep(tmp_path / "1")
@@ -339,15 +355,9 @@ def test_sweep_frames_labels_true_of_pixels_and_unclipped(tmp_path):
     aluminium's exactly where the table (and so the "MgO > Al" label) says so."""
     sweep, out = _run_sweep(tmp_path, n_frames=8)
     table = pd.read_csv(out["csv"])
-    with Image.open(out["gif"]) as gif:
-        frames = [np.asarray(frame.convert("L")).copy() for frame in ImageSequence.Iterator(gif)]
-    label_w, head, gap = 96, 20, 4  # the GIF's layout
-    w = (frames[0].shape[1] - label_w - gap) // 2
-    h = (frames[0].shape[0] - head - 22 - 2 * gap) // 2
+    frames = _gif_frames(out["gif"])
     for f, frame in enumerate(frames):
-        cell = {(key, k): frame[head + r * (h + gap):head + r * (h + gap) + h,
-                                label_w + k * (w + gap):label_w + k * (w + gap) + w]
-                for r, key in enumerate(sweep["panels"]) for k in range(2)}
+        cell = _gif_cells(frame, sweep["panels"])
         obj = np.concatenate([c[c > 0] for c in cell.values()])
         assert (obj == 255).mean() < 0.02, f
         rows = table[table.frame == f].set_index("panel")
@@ -367,17 +377,13 @@ def test_sweep_rim_closeup_holds_each_materials_brightest_pixel(tmp_path):
     values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", out["values"].read_text()))
     r0, r1, c0, c1 = (int(v) for v in re.search(r"rows (\d+) to (\d+), columns (\d+) to (\d+)",
                                                  values["closeup"]).groups())
-    with Image.open(out["gif"]) as gif:
-        frames = [np.asarray(frame.convert("L")).copy() for frame in ImageSequence.Iterator(gif)]
-    label_w, head, gap = 96, 20, 4  # the GIF's layout
-    w = (frames[-1].shape[1] - label_w - gap) // 2
-    h = (frames[-1].shape[0] - head - 22 - 2 * gap) // 2
+    cell = _gif_cells(_gif_frames(out["gif"])[-1], sweep["panels"])
+    h, w = cell[sweep["panels"][0], 1].shape
     assert (r1 - r0 + 1, c1 - c0 + 1) == (min(sweep["rim_closeup"]["height_px"], h),
                                           min(sweep["rim_closeup"]["width_px"], w))
     assert 0 <= r0 and r1 < h and 0 <= c0 and c1 < w
-    for r, key in enumerate(sweep["panels"]):
-        ts = frames[-1][head + r * (h + gap):head + r * (h + gap) + h,
-                        label_w + w + gap:label_w + 2 * w + gap]
+    for key in sweep["panels"]:
+        ts = cell[key, 1]  # the Torrance-Sparrow image
         assert ts.max() > 0, key
         assert ts[r0:r1 + 1, c0:c1 + 1].max() == ts.max(), key
 

@@ -192,13 +192,14 @@ def appearance(encoded: npt.NDArray[np.float64], XYZ: npt.NDArray[np.float64], s
         top = unclipped & (L >= np.percentile(L[unclipped], 99))
         a, b = Lab[top, 1].mean(), Lab[top, 2].mean()
         hue = float(np.degrees(np.arctan2(b, a)) % 360)
+    body_chroma = float(np.median(C))
     return {"visible": float((codes.max(axis=-1) >= 20).mean()),
             "L10": float(np.percentile(L, 10)), "L50": float(np.percentile(L, 50)),
             "L99": float(np.percentile(L, 99)),
-            "body_chroma": float(np.median(C)),
+            "body_chroma": body_chroma,
             "body_hue_deg": float(np.degrees(np.arctan2(np.median(Lab[:, 2]),
                                                         np.median(Lab[:, 1]))) % 360),
             # NaN for a grey object (no body chroma to compare with), without a divide warning
-            "highlight_chroma_ratio": (float(np.median(C[highlight]) / np.median(C))
-                                       if np.median(C) > 0 else np.nan),
+            "highlight_chroma_ratio": (float(np.median(C[highlight])) / body_chroma
+                                       if body_chroma > 0 else np.nan),
             "highlight_hue_deg": hue, "clipped": float((~unclipped).mean())}

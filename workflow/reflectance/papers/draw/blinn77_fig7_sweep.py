@@ -11,13 +11,12 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+from matplotlib.patches import Rectangle
 from PIL import Image, ImageDraw, ImageFont
 
 from reflectance.colour.display import compress_highlights, display_tag, encode
 from reflectance.io.atomic import atomic_write
 from reflectance.io.captions import write_caption_values
-from matplotlib.patches import Rectangle
-
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.render.integrator import shade_samples
 from reflectance.render.scene import scene_from_dict
@@ -162,11 +161,11 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     values = {}
     if closeup:
         r0, c0 = _crop_origin(brightest[last], (h, w), (ch, cw))
-        magnification = zw * DPI / cw / (wi * DPI / w)  # against the sheet's own renders
+        magnification = (zw / cw) / (wi / w)  # inches per pixel, against the sheet's renders
         y = 0.08
         fig.text((label_in + (W - label_in) / 2) / W, (y + zh + z_head - 0.04) / H,
-                 f"light {angles[last]:.0f}°, Torrance-Sparrow: the lit rim in the boxes "
-                 f"({cw} × {ch} pixels), magnified {magnification:.0f} times, same exposure",
+                 f"light {angles[last]:.0f}\u00b0, Torrance-Sparrow: the lit rim in the boxes "
+                 f"({cw} \u00d7 {ch} pixels), magnified {magnification:.0f} times, same exposure",
                  ha="center", va="top", color="white", fontsize=T["annotation"])
         for j, key in enumerate(cfg["panels"]):
             x = label_in + j * (zw + block_gap)
