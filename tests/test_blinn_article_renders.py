@@ -639,15 +639,38 @@ def _gold_sphere(out):
 
 def test_article_spheres_gold_reads_as_metal_not_a_flat_disc(spheres):
     """The review: outside its highlight the gold sphere was one flat colour (113, 95, 68), a
-    khaki disc. Mirroring a sky (config metal_sphere.environment), its body outside the highlight
-    (luminance under half the peak) spans a luminance range: its median over its 10th percentile
-    above 3 (a flat fill covering most of the body gives 1)."""
+    khaki disc. Mirroring a sky and the floor (config metal_sphere.environment), its body outside
+    the highlight (luminance under half the peak) spans a luminance range: its median over its
+    10th percentile above 2 (a flat fill covering most of the body gives 1)."""
     fig, out, _, _ = spheres
     _, sphere, Y = _gold_sphere(out)
     body = Y[sphere & (Y < 0.5 * Y[sphere].max())]
     assert body.size > 200
     p10, p50 = np.percentile(body, [10, 50])
-    assert p50 > 3.0 * p10, (p10, p50)
+    assert p50 > 2.0 * p10, (p10, p50)
+
+
+def test_article_spheres_gold_mirrors_the_floor_below_its_horizon(spheres):
+    """The review: the gold sphere's lower half was black (it mirrored nothing below the horizon).
+    With the floor's ground lights, the lower half of its disc (inside 0.9 of the radius, the
+    disc fitted to its chromatic pixels' extent) has under 10 % of its pixels below 30/255 and a
+    median above 0.4 times the upper half's; and its darkest band is at the bottom, where it
+    mirrors its own shadow and the floor it rests on."""
+    fig, out, _, _ = spheres
+    image, sphere, _ = _gold_sphere(out)
+    cols, rows = np.flatnonzero(sphere.any(0)), np.flatnonzero(sphere.any(1))
+    r, cx = (cols[-1] - cols[0] + 1) / 2, (cols[0] + cols[-1]) / 2
+    cy = rows[0] + r  # the top of the sphere is lit, so chromatic
+    yy, xx = np.mgrid[:image.shape[0], :image.shape[1]] + 0.5
+    disc = (xx - cx) ** 2 + (yy - cy) ** 2 < (0.9 * r) ** 2
+    value = image.max(-1)
+    lower, upper = value[disc & (yy > cy)], value[disc & (yy < cy)]
+    assert lower.size > 500
+    assert (lower < 30).mean() < 0.10, (lower < 30).mean()
+    assert np.median(lower) > 0.4 * np.median(upper), (np.median(lower), np.median(upper))
+    bands = [np.mean(value[disc & (yy > cy + f * r) & (yy < cy + (f + 0.2) * r)])
+             for f in (0.0, 0.2, 0.4, 0.7)]
+    assert bands[-1] == min(bands), bands
 
 
 def test_article_spheres_gold_highlight_has_a_gradient_and_gold_hue(spheres):

@@ -14,6 +14,7 @@ mean / 0.52 p95 at 64 spp and 0.056 / 0.25 at 256 spp (falling as 1/sqrt(spp): M
 not a bias); the test, at 256 spp, allows 0.15 / 0.6.
 """
 
+import dataclasses
 import os
 import subprocess
 import sys
@@ -155,6 +156,16 @@ def test_export_refuses_ambient_light(root, tmp_path):
     scene = sphere_scene(root, COPPER, ambient={"fraction": 0.01})
     with pytest.raises(ValueError, match="ambient"):
         scene_to_mitsuba(scene, tmp_path)
+
+
+def test_export_refuses_a_light_without_shadows(root, tmp_path):
+    scene = sphere_scene(root, COPPER)
+    light = scene.lights[0]
+    scene = dataclasses.replace(scene, lights=[light, dataclasses.replace(light, shadows=False)])
+    with pytest.raises(ValueError, match=r"lights\[1\].*shadows: false") as err:
+        scene_to_mitsuba(scene, tmp_path)
+    assert "\n" not in str(err.value)
+    assert not list(tmp_path.iterdir())
 
 
 def test_equal_error_seconds_interpolates_a_power_law_exactly():

@@ -136,6 +136,44 @@ def test_sphere_casts_its_analytic_shadow_on_a_plane(spectra):
     assert np.allclose(Y[outside], 1.0 / np.pi, rtol=1e-12)
 
 
+def test_a_light_without_shadows_passes_the_plane_that_would_block_it(spectra):
+    """A light's ``shadows: false`` (a fill light, e.g. a floor's bounce): a light from straight
+    below a sphere resting over a plane lights the sphere's underside through the plane, by
+    Lambert's cosine written out here; with shadows the plane blocks it and the underside is
+    black. Neither changes the plane, which faces away from it (N.L < 0)."""
+    cam = camera((0, -6, 0.9), (0, 0, 0.9), 64, 48, fov=15)  # level with it, a little below
+    centre, radius = np.array([0, 0, 1.0]), 0.5
+    d = pixel_rays(cam)
+    origin = np.asarray(cam["position"], float)
+    t = hit_sphere(origin, d, centre, radius)
+    # pixels well inside the sphere's image (their centre ray is not near grazing)
+    oc = origin - centre
+    miss = np.sqrt(np.maximum(0.0, oc @ oc - (d @ oc) ** 2))  # ray's distance from the centre
+    inner = np.isfinite(t) & (miss < 0.95 * radius)
+    normal_z = ((origin + t[..., None] * d)[..., 2] - centre[2]) / radius
+    images = {}
+    for shadows in (True, False):
+        doc = {"camera": cam,
+               "objects": [{"geometry": {"type": "sphere", "center": centre.tolist(),
+                                         "radius": radius}, "material": lambert(0.5)},
+                           {"geometry": {"type": "plane", "center": [0, 0, 0],
+                                         "normal": [0, 0, 1], "size": [8, 8]},
+                            "material": lambert(1.0)}],
+               "lights": [{"type": "directional", "direction": [0, 0, 1], "solid_angle": 1.0},
+                          {"type": "directional", "direction": [0, 0, -1], "solid_angle": 1.0,
+                           "shadows": shadows}]}
+        images[shadows] = render(scene_from_dict(doc, spectra_dir=spectra)).XYZ[..., 1]
+    below = inner & (normal_z < -0.05)
+    above = inner & (normal_z > 0.05)
+    assert below.sum() > 50 and above.sum() > 50
+    assert np.allclose(images[False][below], 0.5 / np.pi * -normal_z[below], rtol=1e-9)
+    assert np.all(images[True][below] == 0.0)
+    for image in images.values():  # the light from above, as before
+        assert np.allclose(image[above], 0.5 / np.pi * normal_z[above], rtol=1e-9)
+    plane = ~np.isfinite(t)
+    assert np.array_equal(images[True][plane], images[False][plane])
+
+
 def test_supersampling_converges(spectra):
     reference = render(lambert_sphere(spectra, 24, 20, 12)[0]).XYZ[..., 1]
     errors = [np.abs(render(lambert_sphere(spectra, 24, 20, n)[0]).XYZ[..., 1]

@@ -41,7 +41,8 @@ def test_defaults_are_filled_in(spectra):
     assert doc["wavelengths"] == {"start_nm": 360, "end_nm": 830, "step_nm": 5}
     assert doc["camera"]["up"] == [0, 0, 1] and doc["camera"]["supersample"] == 1
     assert doc["lights"][0] == {"type": "directional", "direction": [0, -1, 1],
-                                "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0}
+                                "spectrum": "D65", "intensity": 1.0, "solid_angle": 1.0,
+                                "shadows": True}
     assert doc["ambient"] == {"fraction": 0.0, "reference": "intensity"}
     assert doc["display"]["gamut_clip"] == "dominant-wavelength"
     m = doc["objects"][0]["material"]

@@ -215,6 +215,9 @@ def scene_to_mitsuba(scene: Scene, folder: str | os.PathLike[str], spp: int = 64
         _refuse("ambient", "ambient light (Cook & Torrance's I_ia R_a)")
     if not scene.shadows:
         _refuse("shadows", "lights without cast shadows")
+    for i, light in enumerate(scene.lights):
+        if not light.shadows:
+            _refuse(f"lights[{i}]", "a light the objects do not shadow (shadows: false)")
     if scene.observer != "CIE 1931 2 Degree Standard Observer":
         _refuse("observer", f"the observer {scene.observer!r} (Mitsuba's film: CIE 1931 "
                             "2-degree)")

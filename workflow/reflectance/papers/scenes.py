@@ -53,6 +53,7 @@ from reflectance.io.paths import package_data
 
 __all__ = [
     "sky_dome_lights",
+    "ground_lights",
     "CONFIG_PATH",
     "PHONG_SPECULAR_READINGS",
     "display_from_colour",
@@ -557,14 +558,72 @@ def sky_dome_lights(environment: Mapping[str, Any], spectrum: str) -> list[dict[
     >>> print(len(dome), f"{z.min():.4f} {z.max():.4f}", f"{sum(d['solid_angle'] for d in dome):.4f}")
     64 0.0078 0.9922 6.2832
     """
-    n = int(environment["lights"])
+    directions = _hemisphere_lattice(int(environment["lights"]))
+    z = directions[:, 2]
+    radiance = environment["horizon"] + (environment["zenith"] - environment["horizon"]) * z
+    return [{"direction": [float(x) for x in d], "spectrum": spectrum,
+             "intensity": float(L), "solid_angle": float(2.0 * np.pi / len(z))}
+            for d, L in zip(directions, radiance)]
+
+
+def _hemisphere_lattice(n: int) -> npt.NDArray[np.float64]:
+    """(n, 3) unit vectors of a Fibonacci lattice on the upper hemisphere: ``z_i = (i + 1/2) / n``,
+    azimuth ``i`` golden angles; each stands for the solid angle ``2 pi / n`` (equal zones)."""
     z = (np.arange(n) + 0.5) / n
     phi = np.arange(n) * np.pi * (3.0 - np.sqrt(5.0))  # the golden angle
     r = np.sqrt(1.0 - z**2)
-    radiance = environment["horizon"] + (environment["zenith"] - environment["horizon"]) * z
-    return [{"direction": [float(r[i] * np.cos(phi[i])), float(r[i] * np.sin(phi[i])),
-                           float(z[i])], "spectrum": spectrum, "intensity": float(radiance[i]),
-             "solid_angle": float(2.0 * np.pi / n)} for i in range(n)]
+    return np.stack([r * np.cos(phi), r * np.sin(phi), z], axis=1)
+
+
+def ground_lights(n: int, albedo: float, lights: Sequence[Mapping[str, Any]], spectrum: str,
+                  sphere: tuple[Sequence[float], float] | None = None) -> list[dict[str, Any]]:
+    """A grey Lambertian floor (the plane z = 0, ``albedo``) as ``n`` directional lights over the
+    lower hemisphere: what a sphere above it mirrors below its horizon.
+
+    Ground light ``j`` (the lattice of :func:`sky_dome_lights` mirrored below the horizon, each
+    ``2 pi / n`` sr) has the radiance of the floor point it meets from the sphere's centre,
+    ``albedo / pi * sum_l I_l d omega_l max(0, L_l . z)`` over the directional ``lights`` that
+    reach that point (Lambert: L = rho E / pi); ``sphere`` = (centre, radius) blocks those whose
+    ray from the point meets it (its shadow on the floor and the sky it hides), None: nothing
+    does. The lights cast no shadow (``shadows: false``): the floor they stand for would block
+    them, and a convex object above it shades itself through N.L alone. (A choice: one bounce,
+    the floor seen from the centre, not from each point of the sphere.)
+
+    Examples
+    --------
+    >>> sky = sky_dome_lights({"lights": 256, "zenith": 1.0, "horizon": 1.0}, "D65")
+    >>> [g] = ground_lights(1, 0.5, sky, "D65")  # a uniform sky of radiance 1: E = pi
+    >>> print(f"{g['intensity']:.4f}", g["direction"][2], g["shadows"])
+    0.5000 -0.5 False
+
+    A unit sphere resting on the floor hides the sky's cap of half-angle asin(1 / D) from a floor
+    point at distance ``a`` from where it rests (D^2 = 1 + a^2), the cap's irradiance
+    ``pi sin^3`` of that angle (a sphere's form factor; the cap touches the horizon): the
+    ground light nearest straight below sees the floor at 0.5 (1 - D^-3), up to the sky's
+    256 lights:
+
+    >>> under = ground_lights(64, 0.5, sky, "D65", sphere=([0, 0, 1], 1.0))
+    >>> a = np.hypot(*under[-1]["direction"][:2]) / -under[-1]["direction"][2]
+    >>> print(f"{under[-1]['intensity']:.3f} {0.5 * (1 - (1 + a * a) ** -1.5):.3f}")
+    0.012 0.012
+    """
+    directions = _hemisphere_lattice(int(n)) * np.array([1.0, 1.0, -1.0])
+    toward = np.array([unit_vector(light["direction"], "light direction") for light in lights])
+    energy = np.array([light["intensity"] * light["solid_angle"] for light in lights])
+    reach = np.ones((len(directions), len(lights)), bool)
+    if sphere is not None:
+        centre, radius = np.asarray(sphere[0], np.float64), float(sphere[1])
+        # the floor point each direction meets from the centre: centre + t d, t = c_z / -d_z
+        point = centre + (centre[2] / -directions[:, 2])[:, None] * directions
+        offset = point - centre  # a ray point + s L meets the sphere where s solves
+        b = offset @ toward.T  # s^2 + 2 b s + c = 0, c = |offset|^2 - r^2: a root s > 0
+        c = np.einsum("ij,ij->i", offset, offset)[:, None] - radius**2
+        reach = ~((b < 0) & (b * b > c))
+    irradiance = (reach * energy * np.maximum(toward[:, 2], 0.0)).sum(axis=1)
+    radiance = albedo * irradiance / np.pi
+    return [{"direction": [float(x) for x in d], "spectrum": spectrum, "intensity": float(L),
+             "solid_angle": float(2.0 * np.pi / len(directions)), "shadows": False}
+            for d, L in zip(directions, radiance)]
 
 
 def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, Any],
@@ -600,7 +659,12 @@ def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, 
                                  "convention": cfg["convention"], "m": metal["m"], "s": 1.0,
                                  "d": 0.0, "fresnel": "exact", "shadowing": "v-cavity"}}]
         if "environment" in metal:  # a sky the metal mirrors: it stands in for the ambient term
-            lights += sky_dome_lights(metal["environment"], cfg["light"]["spectrum"])
+            environment = metal["environment"]
+            lights += sky_dome_lights(environment, cfg["light"]["spectrum"])
+            if environment.get("ground_lights", 0):  # and the lit floor below its horizon
+                lights += ground_lights(environment["ground_lights"], cfg["floor_albedo"],
+                                        lights, cfg["light"]["spectrum"],
+                                        (metal["center"], metal["radius"]))
             ambient = {"fraction": 0.0, "reference": "irradiance"}
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
                                                    "normal": [0, 0, 1], "size": [16, 16],

@@ -597,7 +597,7 @@ def scene_from_dict(document: Mapping[str, Any], source: str = "<scene>",
             continue
         solid_angle = spec.get("solid_angle", None if "area" in spec else 1.0)
         light = check.run(path, Light, source_light, spec["spectrum"], spec["intensity"],
-                          solid_angle, spec.get("area"))
+                          solid_angle, spec.get("area"), spec["shadows"])
         if light is not None:
             lights.append(light)
 

@@ -74,7 +74,8 @@ class RenderSession:
         """``(primitives, renderer)`` of the scene, made on the first call."""
         if self._tools is None:
             primitives = Primitives(self.scene.mesh)
-            if self.threads > 1 and self.scene.shadows and self.scene.lights:
+            if self.threads > 1 and self.scene.shadows and any(
+                    light.shadows for light in self.scene.lights):
                 edges = Tasks(self.threads)
                 edges.submit(lambda: primitives.neighbours)
                 self._stack.callback(edges.results)

@@ -192,7 +192,9 @@ class Light:
 
     ``solid_angle`` is Cook & Torrance's d omega, constant over the scene ("can be treated as a
     constant for a distant light source"); a point light may give ``area`` instead, and then
-    ``d omega = area / distance^2`` per sample.
+    ``d omega = area / distance^2`` per sample. ``shadows``: whether the scene's objects shadow
+    this light (False: a fill light that stands for light the scene does not model, such as a
+    floor's bounce, which the floor itself would otherwise block; N.L still clips it).
     """
 
     source: DirectionalLight | PointLight
@@ -200,6 +202,7 @@ class Light:
     intensity: float = 1.0
     solid_angle: float | None = 1.0
     area: float | None = None
+    shadows: bool = True
 
     def __post_init__(self):
         if not isinstance(self.source, (DirectionalLight, PointLight)):

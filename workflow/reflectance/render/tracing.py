@@ -92,21 +92,23 @@ def trace(scene: Scene, rows: tuple[int, int] | None = None, primitives: Any = N
                          select, renderer, threads)
     t1 = time.perf_counter()
     progress("shadows")
-    if scene.shadows and scene.lights:
-        shadowed = shadow_masks(samples, scene.mesh, [light.source for light in scene.lights],
-                                map_size or light_map_size(scene.camera, rows), renderer, threads)
-    else:
-        shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
+    shadowed = np.zeros((len(scene.lights), len(samples.hit)), bool)
+    casting = [i for i, light in enumerate(scene.lights) if light.shadows] if scene.shadows else []
+    if casting:  # (a light with shadows: false is a fill light nothing blocks; N.L clips it)
+        shadowed[casting] = shadow_masks(samples, scene.mesh,
+                                         [scene.lights[i].source for i in casting],
+                                         map_size or light_map_size(scene.camera, rows),
+                                         renderer, threads)
     t2 = time.perf_counter()
     return samples, shadowed, {"visibility": t1 - t0, "shadows": t2 - t1}
 
 
 def trace_key(scene: Scene, rows: tuple[int, int] | None = None) -> str:
     """What :func:`trace` depends on, as a SHA-256 hex digest: the composed mesh (points, faces,
-    every point and cell array), the camera, the lights' directions or positions, whether shadows
-    are cast, and the band of rows (None: the whole grid, the same trace as its one band). Two
-    scenes with the same key are traced identically (the trace never looks at materials,
-    spectra, intensities or the ambient term)."""
+    every point and cell array), the camera, the lights' directions or positions and whether
+    each is shadowed, whether the scene casts shadows, and the band of rows (None: the whole
+    grid, the same trace as its one band). Two scenes with the same key are traced identically
+    (the trace never looks at materials, spectra, intensities or the ambient term)."""
     rows = (0, scene.camera.shape[0]) if rows is None else (int(rows[0]), int(rows[1]))
     digest = hashlib.sha256()
     mesh = scene.mesh
@@ -117,8 +119,8 @@ def trace_key(scene: Scene, rows: tuple[int, int] | None = None) -> str:
         array = np.ascontiguousarray(array)
         digest.update(f"{name} {array.dtype.str} {array.shape}\n".encode())
         digest.update(array.tobytes())
-    digest.update(repr((scene.camera, [light.source for light in scene.lights], bool(scene.shadows),
-                        rows)).encode())
+    digest.update(repr((scene.camera, [(light.source, light.shadows) for light in scene.lights],
+                        bool(scene.shadows), rows)).encode())
     return digest.hexdigest()
 
 

@@ -87,6 +87,10 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     bright = sphere & (Yg > 0.5 * Yg[sphere].max())
     body = np.percentile(Yg[sphere & ~bright], [10, 50])
     clipped = float(np.mean(np.round(255 * gold_image[sphere]).max(-1) >= 255))
+    # the floor the gold sphere mirrors (reflectance.papers.scenes.ground_lights): the radiance
+    # of its ground lights, the one nearest the horizon and the one nearest straight below
+    ground = sorted((light["direction"][2], light["intensity"])
+                    for light in gold.document["lights"] if not light.get("shadows", True))
 
     # the sky cropped: the rows above the highest sphere go, leaving the gap between the panels
     gap_px = max(1, round(0.02 * image.shape[1]))
@@ -125,5 +129,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         "pair_scale": f"{scale:.3g}", "gold_scale": f"{gold_scale:.3g}",
         "gold_clipped": f"{100 * clipped:.1f}", "gold_body_spread": f"{body[1] / body[0]:.1f}",
         "cropped_rows": f"{top}",
+        "ground_radiance": f"{ground[-1][1]:.2g}" if ground else "none",
+        "ground_contact": f"{ground[0][1]:.2g}" if ground else "none",
         "pair_peaks": "; ".join("({}, {}, {}) ".format(*rgb) + f"({name})"
                                 for name, rgb in peaks.items())})
