@@ -4,6 +4,7 @@ row's function in reflectance.papers.errata, and the test that shows it (in the 
 for a paper's reader, leave the test paths out)."""
 
 import textwrap
+from pathlib import Path
 
 from reflectance.papers.errata import errata_table
 
@@ -19,9 +20,10 @@ def wrap(text, width):
     return lines
 
 
-def render(table, title, png, pdf):
+def render(table, title, png, pdf, elsewhere):
     """The rows as a figure at print width, under one heading per kind: per row, where it is
-    (left) and what it is (right). The test that shows each row is in the CSV, not the figure."""
+    (left) and what it is (right), and under them the line ``elsewhere`` (where the other rows
+    are). The test that shows each row is in the CSV, not the figure."""
     from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, TEXT_SIZE, new_figure, savefig
 
     x_where, x_label, x_text = 0.005, 0.215, 0.335  # column edges, fractions of the width
@@ -40,11 +42,11 @@ def render(table, title, png, pdf):
     gap = 0.7  # lines between rows
     total = sum(h for *_, h in blocks) + gap * len(blocks)
     line_in = 1.4 * TEXT_SIZE["table"] / 72
-    fig = new_figure(PRINT_WIDTH_IN, (total + 3.5) * line_in + 0.3)
+    fig = new_figure(PRINT_WIDTH_IN, (total + 4.5) * line_in + 0.3)
     ax = fig.add_axes((0.0, 0.0, 1.0, 1.0 - 0.3 / fig.get_figheight()))
     ax.set_axis_off()
     ax.set_xlim(0, 1)
-    ax.set_ylim(total + 1.5, -2.4)
+    ax.set_ylim(total + 2.5, -2.4)
     ax.text(x_where, -1.2, "Text, location", fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
     ax.text(x_label, -1.2, "What the text prints, what it should, what follows (computed)",
             fontsize=TEXT_SIZE["annotation"], fontweight="bold", va="center")
@@ -67,6 +69,8 @@ def render(table, title, png, pdf):
         y += h + gap
     sources = sorted(set(table.text[table.text.str.contains(" (", regex=False)]))
     ax.text(x_where, total + 0.6, "; ".join(sources), fontsize=TEXT_SIZE["table"], color="0.3", va="center")
+    ax.text(x_where, total + 1.6, elsewhere, fontsize=TEXT_SIZE["table"], color="0.3", va="center",
+            fontstyle="italic")
     fig.suptitle(title, size=STYLE["axes.titlesize"], y=0.998, va="top")
     savefig(fig, png, pdf)
 
@@ -82,9 +86,16 @@ if "snakemake" in globals():
         # errata.png: the errata; errata_other.png: the rows of other kinds (naming, convention
         # mismatch, possible transcription artefacts), each under its own heading
         is_erratum = table.kind == "erratum"
+
+        def rows_of(part):  # "naming (1), convention mismatch (1)", in the table's order
+            return ", ".join(f"{kind} ({n})" for kind, n in part.kind.value_counts(sort=False).items())
+
+        other_png, png = Path(snakemake.output.other_png).name, Path(snakemake.output.png).name
         render(table[is_erratum], "Errata: where Blinn 1977, Cook & Torrance 1982, the lecture and the article\n"
-               "disagree with each other or with arithmetic", snakemake.output.png, snakemake.output.pdf)
+               "disagree with each other or with arithmetic", snakemake.output.png, snakemake.output.pdf,
+               f"Rows of other kinds, in {other_png}: {rows_of(table[~is_erratum])}.")
         render(table[~is_erratum], "Not errata: naming, a convention mismatch and possible transcription\n"
-               "artefacts in the four texts", snakemake.output.other_png, snakemake.output.other_pdf)
+               "artefacts in the four texts", snakemake.output.other_png, snakemake.output.other_pdf,
+               f"The {int(is_erratum.sum())} errata: {png}.")
         for r in table.itertuples():
             log.info("%s | %s | %s", r.text, r.location, r.consequence)
