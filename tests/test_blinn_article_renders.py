@@ -706,6 +706,11 @@ def test_article_spheres_sky_cropped(spheres):
     assert rows > 0.1 * render.shape[0]
     top = np.flatnonzero((render.max(-1) - render.min(-1) > 8).any(1))[0]
     assert rows <= top  # nothing of a sphere is cropped
+    # the second review: a black band of empty space lay behind the spheres (the floor ended in
+    # the frame); the floor (config floor_size) now fills every pixel of each render's top row
+    for name in ("render", "gold_render"):
+        first = np.asarray(Image.open(out[name]).convert("RGB"))[0]
+        assert first.min() > 40, (name, first.min())
 
 
 def test_config_check_builds_the_scenes_the_scripts_render(fig8):

@@ -667,7 +667,7 @@ def spheres_scene_article(spheres: Mapping[str, Any], wavelengths: Mapping[str, 
                                         (metal["center"], metal["radius"]))
             ambient = {"fraction": 0.0, "reference": "irradiance"}
     objects.append({"name": "floor", "geometry": {"type": "plane", "center": [0, 0, 0],
-                                                   "normal": [0, 0, 1], "size": [cfg.get("floor_size", 16)] * 2,
+                                                   "normal": [0, 0, 1], "size": [cfg["floor_size"]] * 2,
                                                    "resolution": [32, 32]},
                     "material": {"model": "Lambert", "convention": "physical",
                                  "albedo": cfg["floor_albedo"]}})

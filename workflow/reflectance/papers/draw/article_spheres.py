@@ -92,7 +92,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     ground = sorted((light["direction"][2], light["intensity"])
                     for light in gold.document["lights"] if not light.get("shadows", True))
 
-    # the sky cropped: the rows above the highest sphere go, leaving the gap between the panels
+    # the rows above the highest sphere cropped (floor or sky), leaving the gap between the panels
     gap_px = max(1, round(0.02 * image.shape[1]))
     rows = np.flatnonzero(chromatic(image).any(1) | sphere.any(1))
     top = max(0, int(rows[0]) - gap_px) if len(rows) else 0
