@@ -82,8 +82,11 @@ def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
                      for key, ext in (("exr", "exr"), ("png", "png"), ("scene", "scene.yaml"))})
     reference, published, readings = reading_params(reading)
     files = prefixed(vars(out), reading)
-    if published and "display_variant" in published:  # the default figure shown otherwise
-        name = published["display_variant"]["name"]
+    # the default figure shown otherwise, and with its panels as printed
+    names = [published["display_variant"]["name"]] if published and "display_variant" in published \
+        else []
+    names += [published["printed_variant"]] if published and "printed_variant" in published else []
+    for name in names:
         files.update({f"{name}_png": str(tmp / f"fig6_{name}.png"),
                       f"{name}_csv": str(tmp / f"fig6_{name}.csv"), **{
                           f"{name}_{p}_{key}": str(tmp / f"fig6{p}_{name}.{ext}") for p in "ab"
@@ -98,7 +101,7 @@ def run_fig6(tmp, reading="published", width=192, height=256, supersample=2):
         log=[str(tmp / "fig6.log")], rule="ct82_fig6")
     runpy.run_path(str(ROOT / "workflow/scripts/cook_torrance_1982_fig6.py"),
                    init_globals={"snakemake": snakemake})
-    return Output(**{**vars(out), **files})  # the display variant's files too
+    return Output(**{**vars(out), **files})  # the display and printed variants' files too
 
 
 def run_fig8(tmp, width=320, height=256, supersample=1):
@@ -518,6 +521,30 @@ def test_fig6a_default_departure_is_labelled(fig6_published):
     printed, departed = CT82["fig6"]["panels"]["a"], PUBLISHED["departures"]["a"]
     assert a.loc[False, "s"] == printed["s"] and a.loc[True, "s"] == departed["s"]
     assert a.loc[True, "highlight_chroma_ratio"] < a.loc[False, "highlight_chroma_ratio"]
+
+
+def test_fig6_default_pairs_the_two_vases_and_the_printed_panel_is_its_variant(fig6_published):
+    """Review of issue 28: the default figure showed (a) as printed, its departure and (b), three
+    vases, breaking the paper's pair. It shows two, (a) as departed and (b), each drawn pixel for
+    pixel (its written PNG's middle row is in the figure); the variant ``printed_variant`` shows
+    (a) with the printed s and d beside the same (b), and its table says so."""
+    from PIL import Image
+
+    name = PUBLISHED["printed_variant"]
+    for figure, a_png, s in ((fig6_published.png, fig6_published.a_png, PUBLISHED["departures"]["a"]["s"]),
+                             (fig6_published[f"{name}_png"], fig6_published[f"{name}_a_png"],
+                              CT82["fig6"]["panels"]["a"]["s"])):
+        image = np.asarray(Image.open(figure).convert("RGB"), dtype=int)
+        with Image.open(a_png) as vase:
+            assert round(image.shape[1] / vase.width) == 2, (figure, image.shape, vase.size)
+        assert row_misfit(image, a_png) <= 2
+    printed = pd.read_csv(fig6_published[f"{name}_csv"]).set_index("panel")
+    assert printed.loc["a", "s"] == CT82["fig6"]["panels"]["a"]["s"] and printed.written.all()
+    # the printed (a) is the default table's unwritten row, pixel for pixel the same render
+    default = pd.read_csv(fig6_published.csv)
+    unwritten = default[(default.panel == "a") & ~default.written].iloc[0]
+    assert unwritten.highlight_chroma_ratio == pytest.approx(
+        printed.loc["a", "highlight_chroma_ratio"], rel=1e-12)
 
 
 @pytest.mark.parametrize("vase", VASES)

@@ -140,6 +140,8 @@ def ct82_caption(fig, reading):
         return f"../report/ct82_{fig}_published.rst"
     if reading == CT82["fig6"]["published"].get("display_variant", {}).get("name"):
         return f"../report/ct82_{fig}_display.rst"  # the default figure, shown otherwise
+    if reading == CT82["fig6"]["published"].get("printed_variant"):
+        return f"../report/ct82_{fig}_printed.rst"  # the default figure, its panels as printed
     return f"../report/ct82_{fig}_{CT82['fig6']['ambient_readings'][reading]}.rst"
 
 

@@ -41,25 +41,25 @@ def departure_text(change):
     return ", ".join(f"{k} = {v:g}" for k, v in change.items())
 
 
-def title_of(item, fig_cfg):
-    """The panel's title: a departed panel's two renders say which is which."""
+def title_of(item, fig_cfg, printed_name):
+    """The panel's title: a departed panel says what it changes, what the paper prints and
+    which figure shows the panel as printed (``printed_name``, a variant's file suffix)."""
     part, departure = item.tags["part"], item.tags["departure"]
-    if item.written and departure is None:
+    if departure is None:
         return TITLES[part]
-    if not item.written:  # the paper's panel, as printed
-        return TITLES[part]
-    # the departure: not the paper's panel, so not labelled as it ("(a)" twice misled a reader)
     printed = {k: fig_cfg["panels"][part][k] for k in departure}
-    return (f"({part}\u2032) variant, not in the paper:\n{departure_text(departure)}\n"
-            f"(printed: {departure_text(printed)})")
+    where = f", fig6_{printed_name}" if printed_name else ""
+    return (f"{TITLES[part]}\nnot as printed: {departure_text(departure)}\n"
+            f"(printed {departure_text(printed)}{where})")
 
 
 def variant(snakemake, log, out, reference, published, items):
     """One variant of the figure (its scenes ``items``): panels, table and figure to ``out``."""
     fig_cfg, colour_cfg = snakemake.params.fig, snakemake.params.colour
     spectra_dir = str(Path(snakemake.input.spectra[0]).parent)
-    renders = [(item.tags["part"], title_of(item, fig_cfg), item.tags["panel"], item.written,
-                item) for item in items]
+    printed_name = (published or {}).get("printed_variant")
+    renders = [(item.tags["part"], title_of(item, fig_cfg, printed_name), item.tags["panel"],
+                item.written, item) for item in items]
     rows, images, covered = [], [], []
     for part, title, panel, written, item in renders:
         scene = scene_from_dict(item.document, source=f"config.yaml figures.cook_torrance_1982.fig6 "
@@ -68,7 +68,8 @@ def variant(snakemake, log, out, reference, published, items):
                                   out[f"{part}_png"], components=True, keep_trace=True)
                   if written else render(scene, components=True, keep_trace=True))
         rgb, scale = result.display or display_image(result)  # as written, or not written
-        images.append((title, rgb)), covered.append(result.XYZ)
+        if written:  # a departed panel as printed is in the table, not the figure
+            images.append((title, rgb)), covered.append(result.XYZ)
         Y = {name: value[..., 1] for name, value in result.components.items()}
         direct = Y["diffuse"] + Y["specular"]
         I_ia = ambient_intensity(scene.ambient, scene.lights)
@@ -100,6 +101,8 @@ def variant(snakemake, log, out, reference, published, items):
     title = "Cook & Torrance 1982, Fig. 6"
     if published and published.get("variant"):
         title += f" \u2014 {DISPLAYS[published['exposure'].get('transfer', 'display')]}"
+    if published and published.get("printed"):
+        title += " \u2014 the panels as printed"
     if not published:
         reading = READINGS[reference].format(f=f"{fig_cfg['ambient_fraction']:g}")
         title += f" \u2014 {reading}".replace(": I_ia", ":\nI_ia")
@@ -142,6 +145,8 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     values = {}
     colour_cfg = snakemake.params.colour
     for prefix, reference, published in variants:
+        if published and published.get("printed"):  # its panels are the default's as printed
+            continue
         table = pd.read_csv(getattr(snakemake.output, prefix + "csv"))
         first = table.drop_duplicates("panel").set_index("panel")
         a, b = first.loc["a"], first.loc["b"]

@@ -1,7 +1,8 @@
 """Cook & Torrance 1982, Fig. 6: (a) a copper-coloured plastic vase, (b) a copper vase.
 
 One job writes the default figure (``fig6.published``: the reading that gives the published look,
-metered, with Fig. 6a's labelled departure beside its printed panel) and one figure per reading of
+metered, with Fig. 6a's labelled departure in place of its printed panel), the same with the panels
+as printed (``published.printed_variant``), its display variant, and one figure per reading of
 the ambient term (``fig6.ambient_readings``), its outputs prefixed ``<reading>_``.
 """
 
@@ -24,11 +25,17 @@ FILES = {"png": "fig6{}.png", "csv": "fig6{}.csv",
 
 def variants(params):
     """``[(output prefix, ambient reference, published settings or None), ...]``: the default
-    figure first (unprefixed), then each of its display variants (its exposure replaced, the
-    settings' ``variant`` naming it), prefixed ``<variant>_``, then each reading of the ambient
-    term, prefixed ``<reading>_`` (C&T Figs. 6 and 7 alike)."""
+    figure first (unprefixed), then, if it departs from the print, the same with the departures
+    undone (``printed_variant``, its settings' ``printed`` True), then each of its display
+    variants (its exposure replaced, the settings' ``variant`` naming it), each prefixed
+    ``<name>_``, then each reading of the ambient term, prefixed ``<reading>_`` (C&T Figs. 6
+    and 7 alike)."""
     published = params["published"]
     default = [("", params["reference"], published)] if published else []
+    # the default figure with its departures undone: the paper's panels as printed, its display
+    if published and published.get("departures") and published.get("printed_variant"):
+        default.append((f"{published['printed_variant']}_", params["reference"],
+                        {**published, "departures": {}, "printed": True}))
     # the default figure again with another display (fig6.published.display_variant)
     shown = [(f"{v['name']}_", params["reference"],
               {**published, "exposure": v["exposure"], "panel_exposure": v.get("panel_exposure", {}),
@@ -66,7 +73,7 @@ def outputs(params):
 
 def scenes(params, spectra_dir):
     """Per variant and panel: the vase; a departed panel of the default figure is rendered as
-    printed beside its departure (only the departure is written, as ``<panel>_*``)."""
+    printed too, for its table (only the departure is written, as ``<panel>_*``, and drawn)."""
     fig, files = params["fig"], outputs(params)
     out = []
     for prefix, reference, published in variants(params):

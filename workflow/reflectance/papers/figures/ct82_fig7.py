@@ -37,8 +37,10 @@ RGB_AUDIT_PARAMS = {"audit": "audits.rgb_rendering", "fig7": f"{_CT}.fig7",
 
 def variants(params):
     """Fig. 6's variants (the default figure, then each ambient reading), without Fig. 6's
-    display variant (``fig6.published.display_variant``: Fig. 6's alone)."""
-    return [v for v in ct82_fig6.variants(params) if not (v[2] or {}).get("variant")]
+    display and printed variants (``fig6.published.display_variant``, ``printed_variant``:
+    Fig. 6's alone)."""
+    return [v for v in ct82_fig6.variants(params)
+            if not (v[2] or {}).get("variant") and not (v[2] or {}).get("printed")]
 
 
 def vases(params):
