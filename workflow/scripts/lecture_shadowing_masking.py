@@ -12,6 +12,8 @@ from matplotlib.collections import LineCollection
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
 from reflectance.papers.polar import plane_of_incidence_vectors
 from reflectance.papers.profile import blocking_point, gaussian_profile, masking_G1, trace_window, visible_fraction_by_slope
+from reflectance.papers.vgroove_derivation import vgroove_case
+from reflectance.papers.vgroove_plot import COLOURS, draw_groove
 from reflectance.scripting import script_log
 from reflectance.optics.shadowing import G1_Smith_Beckmann_Walter2007
 from reflectance.io.tables import write_csv
@@ -32,9 +34,19 @@ with script_log(snakemake) as log:
     NH, NV, NL, VH = H[:, 2], V[:, 2], L[2], np.einsum("ij,ij->i", V, H)
     G_slide = np.minimum(1.0, np.minimum(2 * NH * NL / VH, 2 * NH * NV / VH))
     G2_smith = G1_Smith_Beckmann_Walter2007(np.cos(ti), m) * smith  # Smith, uncorrelated L and V
+    # ... and the same G found by tracing rays through Blinn's V-groove (Blinn 1977 Fig. 1, the
+    # slide's source: "Blinn described dependence of this ratio on L, V, H"), light from the left
+    vg = cfg["vgroove"]
+    light = {"theta_deg": cfg["incidence_deg"], "phi_deg": 180.0}
+    G_traced = np.array([vgroove_case(light, {"theta_deg": float(np.degrees(a)), "phi_deg": 0.0},
+                                      n_rays=vg["n_rays"], n_keep=1)[1]["G_simulated"]
+                         for a in angles])
+    G2_profile = masking_G1(h, p, -ti)[0] * sim[:, 0]  # the profile's G1(L) G1(V), simulated
     pd.DataFrame({"angle_deg": np.degrees(angles), "G1_simulated": sim[:, 0], "G1_Smith": smith,
                   "visible_projected_over_n_cos": sim[:, 1], "G_slide_light_at_incidence": G_slide,
-                  "G1L_G1V_Smith_light_at_incidence": G2_smith}).pipe(
+                  "G1L_G1V_Smith_light_at_incidence": G2_smith,
+                  "G_vgroove_traced_light_at_incidence": G_traced,
+                  "G1L_G1V_profile_light_at_incidence": G2_profile}).pipe(
         write_csv, snakemake.output.g1, float_format="%.6g")
 
     # Shadowing (light at -theta_i) and masking (view at +theta_o), overall and by facet slope
@@ -59,11 +71,54 @@ with script_log(snakemake) as log:
     log.info("rays traced to the viewer agree with visible_fraction for %d of %d rays",
              np.sum(rays.escaped == (rays.seen[hit_segment] > 0.5)), hit_x.size)
 
-    # drawn at the print width, so its text prints at the figures' sizes
-    fig = new_figure(PRINT_WIDTH_IN, 7.0)
-    grid = fig.add_gridspec(2, 3, height_ratios=[1.15, 1], hspace=0.62, wspace=0.42, top=0.87,
-                            bottom=0.2, left=0.08, right=0.99)
-    ax = fig.add_subplot(grid[0, :])
+    # drawn at the print width, so its text prints at the figures' sizes: the slide's two sketches
+    # (Shadowing, Masking) on Blinn's V-groove, its G against the groove traced, then the effects
+    # on a random surface
+    fig = new_figure(PRINT_WIDTH_IN, 7.4)
+    grid = fig.add_gridspec(2, 3, height_ratios=[1, 1.0], hspace=0.42, wspace=0.32, top=0.88,
+                            bottom=0.13, left=0.07, right=0.99)
+    other = {"theta_deg": vg["other_deg"], "phi_deg": 0.0}
+    sketches = (("Shadowing", light, other, "c"),
+                ("Masking", {**other, "phi_deg": 180.0}, {"theta_deg": cfg["view_deg"], "phi_deg": 0.0}, "b"))
+    for k, (name, L_dir, E_dir, case) in enumerate(sketches):
+        groove, row = vgroove_case(L_dir, E_dir, n_rays=vg["n_rays"], n_keep=vg["n_drawn_rays"])
+        if row["case"] != case:
+            raise ValueError(f"figures.lecture.shadowing_masking.vgroove.other_deg: "
+                             f"{vg['other_deg']:g} degrees gives Blinn's case {row['case']!r} in the "
+                             f"{name.lower()} sketch, not {case!r}")
+        ax = fig.add_subplot(grid[0, k])
+        draw_groove(ax, groove)
+        lost = row["G_shadowing_simulated"] if case == "c" else row["G_masking_simulated"]
+        ax.set_title(f"({'ab'[k]}) {name}: light {L_dir['theta_deg']:g}\u00b0, view "
+                     f"{E_dir['theta_deg']:g}\u00b0\nG traced {row['G_simulated']:.3f}, "
+                     f"min{{1, G$_s$, G$_m$}} {row['G_closed']:.3f}", fontsize=TEXT_SIZE["annotation"],
+                     linespacing=1.3)
+        log.info("%s sketch: case %s, G traced %.6f (%s %.6f), closed %.6f", name, row["case"],
+                 row["G_simulated"], name.lower(), lost, row["G_closed"])
+    handles = [fig.axes[0].plot([], [], color=COLOURS[key], lw=w)[0] for key, w in
+               (("light", 1), ("eye", 1), ("masked", 1), ("shadowed", 4), ("masked", 4))]
+    fig.legend(handles, ["incident ray", "reflected ray, seen", "reflected ray, masked",
+                         "facet part shadowed", "facet part masked"],
+               loc="upper left", bbox_to_anchor=(0.03, 0.585), ncol=3, frameon=False,
+               fontsize=TEXT_SIZE["annotation"], handlelength=1.6, columnspacing=1.0)
+    ax = fig.add_subplot(grid[0, 2])
+    step = max(1, int(round(vg["step_deg"] / cfg["angle_step_deg"])))
+    ax.plot(np.degrees(angles), G_slide, color="#d55e00", label="slide: min{1, G$_s$, G$_m$}")
+    ax.plot(np.degrees(angles)[::step], G_traced[::step], "o", ms=3.5, mfc="none", color="#d55e00",
+            label="V-groove, traced")
+    ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.2, ls="--",
+            label="(d): Smith G1(L) G1(V),\nnot in the lecture")
+    ax.plot(np.degrees(angles)[::step], G2_profile[::step], ".", ms=4, color="k",
+            label="(d), simulated")
+    ax.set(xlabel="view \u03b8o, mirror side (\u00b0)", ylabel="G", ylim=(0, 1.05),
+           xticks=[0, 30, 60, 90])
+    ax.set_title(f"(c) G, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0",
+                 fontsize=TEXT_SIZE["annotation"])
+    ax.legend(loc="lower left", fontsize=TEXT_SIZE["annotation"], frameon=False, labelspacing=0.4,
+              handlelength=1.5, borderaxespad=0.2)
+    ax.grid(True)
+
+    ax = fig.add_subplot(grid[1, :])
     top, keep = hs.max() + 0.15 * (w1 - w0), (xs[:-1] >= w0) & (xs[1:] <= w1)
     # the facets by what happens to them: cast shadow (facing the light, blocked) apart from
     # facing away from the light; masked (lit, facing the viewer, blocked) apart from facing away
@@ -98,33 +153,15 @@ with script_log(snakemake) as log:
         ax.plot([], [], color=c, lw=3.5, label=label)
     ax.set(xlim=(w0, w1), ylim=(hs.min() - 0.05 * (w1 - w0), top), aspect="equal",
            xlabel="x (samples)", ylabel="height")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=3, frameon=False)
-    ax.set_title(f"(a) light from the left at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid), viewer on the "
-                 f"right at \u03b8o = {cfg['view_deg']:g}\u00b0 (dashed)\nx: the facet that blocks a shadowed "
-                 "(dotted) or a masked (red dashed) point", fontsize=TEXT_SIZE["symbol"], linespacing=1.3)
-    ax = fig.add_subplot(grid[1, 0])
-    ax.plot(np.degrees(angles), smith, color="k", lw=1.5, label=f"Smith G1, m = {m:.3g}\n(not in the lecture)")
-    ax.plot(np.degrees(angles), sim[:, 0], "o", ms=2.5, color=OKABE_ITO[0], label="simulated profile")
-    ax.set(xlabel="\u03b8 from the normal (\u00b0)", ylabel="G1", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
-           title="(b) G1 of the profile")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
-    ax = fig.add_subplot(grid[1, 1])
-    for name, c, lab in (("view", "#d62728", "masking, \u03b8o"), ("light", "#e69f00", "shadowing, \u03b8i")):
-        ax.plot((edges[1:] + edges[:-1]) / (2 * sigma), by[f"visible_{name}"], "o-", ms=3, color=c,
-                label=f"{lab}: simulated")
-        ax.axhline(g1[name][1], color=c, ls="--", lw=1, label=f"{lab}: Smith")
-    ax.set(xlabel="facet slope / rms slope", ylabel="visible fraction", ylim=(0, 1.02),
-           title="(c) visibility by slope")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3))
-    ax = fig.add_subplot(grid[1, 2])
-    ax.plot(np.degrees(angles), G_slide, color="#d55e00",
-            label="slide: min{1, G$_s$, G$_m$}\n(V-cavity)")
-    ax.plot(np.degrees(angles), G2_smith, color="k", lw=1.5, label="Smith G1(L) G1(V)\n(not in the lecture)")
-    ax.set(xlabel="view \u03b8o, mirror side (\u00b0)", ylabel="G", ylim=(0, 1.02), xticks=[0, 30, 60, 90],
-           title=f"(d) G, light at \u03b8i = {cfg['incidence_deg']:g}\u00b0")
-    ax.legend(loc="upper left", bbox_to_anchor=(-0.3, -0.3), labelspacing=0.9)
-    ax.grid(True)
-    fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d,\non a simulated "
-                 f"Gaussian surface profile (seed {cfg['seed']})", y=0.995, va="top", linespacing=1.3)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=3, frameon=False,
+              fontsize=TEXT_SIZE["annotation"])
+    ax.set_title(f"(d) a random surface (Gaussian heights, seed {cfg['seed']}): light from the left "
+                 f"at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid),\nviewer on the right at "
+                 f"\u03b8o = {cfg['view_deg']:g}\u00b0 (dashed); x: the facet that blocks a shadowed "
+                 "(dotted) or a masked (red dashed) point", fontsize=TEXT_SIZE["annotation"],
+                 linespacing=1.3)
+    fig.suptitle("Lecture (Russin, Module 3B), \u201cShadowing and masking effects\u201d: "
+                 "the geometrical attenuation G\nof Blinn's V-groove, as the slide gives it, "
+                 "and on a random surface", y=0.995, va="top", linespacing=1.3)
     savefig(fig, snakemake.output.png, snakemake.output.pdf)
     log.info("visible projected / (n cos) in [%.12f, %.12f]", sim[:, 1].min(), sim[:, 1].max())
