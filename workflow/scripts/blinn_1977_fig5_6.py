@@ -30,10 +30,10 @@ BLINN_SAYS = {"5": "Blinn at 30\u00b0: \u201cthe functions are almost identical\
 
 
 def plot_curve(ax, x, y, key):
-    """One curve in its style; Phong as printed dashed with open circles, seen where it coincides."""
+    """One curve in its style; Phong as printed thin and dashed over the matched curve, so that it
+    shows where it lies on it (open circles there read as beads: reviews of issue 28)."""
     label, colour, style = CURVES[key]
-    marks = dict(marker="o", ms=3.2, mfc="white", mew=0.8, markevery=0.07) if style != "-" else {}
-    ax.plot(x, y, color=colour, ls=style, lw=LINE_PT if style == "-" else 1.0, label=label, **marks)
+    ax.plot(x, y, color=colour, ls=style, lw=LINE_PT if style == "-" else 1.0, label=label)
 
 
 def rings(top):
@@ -207,7 +207,7 @@ def draw(sets, results, theta_i, theta_r, title, scales, number, half_width):
     handles, labels = axes[0, 2].get_legend_handles_labels()
     printed = labels.index(CURVES["phong_as_printed"][0])
     on = [(s["label"], row["F0"]) for s, (_, row), c in zip(sets, results, coincide) if c]
-    if on:  # the open circles show it where it lies on the matched curve
+    if on:  # its dashes show it where it lies on the matched curve
         labels[printed] += ": on the p_s F(0) curve, " + "; ".join(
             (f"{name}, " if len(sets) > 1 else "") + f"F(0) = {F0:.2f}" for name, F0 in on)
     handles += [Line2D([], [], color=CURVES["torrance_sparrow"][1], lw=0.8)]
