@@ -349,6 +349,23 @@ def test_sweep_gif_frames_and_determinism(tmp_path):
                                    rtol=1e-5)
 
 
+def test_sweep_contact_sheet_shows_the_frame_before_the_crossover():
+    """The review: no frame of the contact sheet lay between 137 degrees and the 172-degree frame,
+    so the computed crossover could not be seen. The sheet's frames: contact_frames of them, the
+    sweep's first and last, and the last frame before the crossover (aluminium still the
+    brighter), the others evenly spaced; without a crossover, all evenly spaced."""
+    from reflectance.papers.draw.blinn77_fig7_sweep import _contact_picks
+
+    sweep = B77["fig7_sweep"]
+    angles = np.linspace(*sweep["angles_deg"], sweep["n_frames"])
+    crossover = highlight_crossover(B77)
+    picks = _contact_picks(angles, sweep["contact_frames"], crossover)
+    assert len(picks) == sweep["contact_frames"] and picks[0] == 0 and picks[-1] == len(angles) - 1
+    assert angles[picks[-2]] < crossover < angles[picks[-2] + 1]
+    np.testing.assert_array_equal(_contact_picks(angles, 6, None),
+                                  np.round(np.linspace(0, len(angles) - 1, 6)).astype(int))
+
+
 def test_sweep_frames_labels_true_of_pixels_and_unclipped(tmp_path):
     """Each GIF frame's four images share one exposure (so grey order is i order), no object pixel
     sits at 255, and MgO's Torrance-Sparrow peak, measured on the frame's pixels, is above

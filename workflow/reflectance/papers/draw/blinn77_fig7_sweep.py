@@ -33,6 +33,15 @@ MODELS = {"phong": "Phong", "torrance_sparrow": "Torrance-Sparrow"}
 __all__ = ["run"]
 
 
+def _contact_picks(angles, n, crossover):
+    """The contact sheet's frames (indices into ``angles``): ``n`` evenly spaced, first and last
+    among them, one of them traded for the last frame before the ``crossover`` angle (None: none),
+    so that the sheet shows aluminium's highlight still the brighter just before it."""
+    picks = np.round(np.linspace(0, len(angles) - 1, max(n - (crossover is not None), 2)))
+    before = [i for i, a in enumerate(angles) if crossover is not None and a < crossover]
+    return np.unique(np.append(picks.astype(int), before[-1:]))
+
+
 def run(snakemake: Any, log: logging.Logger) -> None:
     """Shade every frame of the light sweep from one trace, write the GIF, the table and the
     contact sheet and the caption's value: ``snakemake`` is the rule's job (its params and
@@ -113,7 +122,7 @@ def run(snakemake: Any, log: logging.Logger) -> None:
 
     # The contact sheet drawn at the print width (its text at the figures' sizes, not the GIF's
     # pixel font): a block of frames per light angle, the renders pixel for pixel at DPI.
-    picks = np.unique(np.round(np.linspace(0, len(frames) - 1, cfg["contact_frames"])).astype(int))
+    picks = _contact_picks(angles, cfg["contact_frames"], crossover)
     cols, T = int(np.ceil(len(picks) / 2)), TEXT_SIZE
     label_in, gap, block_gap, top, head = 0.75, 0.03, 0.12, 0.5, 0.42  # inches
     DPI = 2 * w * cols / (PRINT_WIDTH_IN - label_in - (cols - 1) * block_gap - cols * gap)
