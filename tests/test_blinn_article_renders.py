@@ -627,7 +627,7 @@ def test_article_spheres_gold_in_its_own_panel(spheres):
     """The gold sphere alone in its panel, exposed on its own: its highlight has gold's colour (F0
     from measured n, k, written out here), not the light's white (the article: "the color of the
     specular highlight will reflect the color of the material"), and is bright (a channel at
-    250/255 or more)."""
+    240/255 or more; the second review: not a plateau, under 0.5 % of the sphere at 250 or more)."""
     fig, out, pair, XYZ = spheres
     xy_of, xy = _xy_tools(), _xy(XYZ)
     white = xy_of(np.ones(95))
@@ -640,7 +640,9 @@ def test_article_spheres_gold_in_its_own_panel(spheres):
     assert np.linalg.norm(xy[peak] - white) > 0.6 * np.linalg.norm(gold - white)
     image = np.asarray(Image.open(out["gold_render"]).convert("RGB"), dtype=float)
     assert len(_spheres_in(image)) == 1
-    assert image.reshape(-1, 3)[np.argmax(XYZ[..., 1].ravel())].max() >= 250
+    assert image.reshape(-1, 3)[np.argmax(XYZ[..., 1].ravel())].max() >= 240
+    sphere = image.max(-1) - image.min(-1) > 8
+    assert (image[sphere].max(-1) >= 250).mean() < 0.005
     # and no gold in the pair's panel: nowhere there is the colour of gold's highlight
     pxy = _xy(pair)
     bright = pair[..., 1] > 0.5 * pair[..., 1].max()

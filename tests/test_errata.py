@@ -283,6 +283,44 @@ def test_errata_blinn_projects_E_not_B():
     assert numbers["off_plane_deg"] > 20
 
 
+def test_errata_blinn_vectors_are_unit():
+    """Blinn: N, L, H and E 'are assumed to be nonnormalized'; his D3 and G read N.H as cos(alpha)
+    and E.H as c, so they hold for unit vectors only: G_b = 2(N.H)(N.E)/(E.H), written out here,
+    changes when N and E are lengthened (it is of degree 2 in N, 0 in E), and so does D3 of 'N.H'.
+    The erratum's numbers say the same."""
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        L, E = direction(rng.uniform(0.0, 1.2), np.pi), direction(rng.uniform(0.2, 1.4), 0.0)
+        H = (L + E) / np.linalg.norm(L + E)
+        k = rng.uniform(1.5, 3.0)
+        unit = 2 * (N_Z @ H) * (N_Z @ E) / (E @ H)
+        longer = 2 * ((k * N_Z) @ H) * ((k * N_Z) @ (k * E)) / ((k * E) @ H)
+        assert longer == pytest.approx(k * k * unit, rel=1e-12)
+        def D3(cos_alpha, c3=0.3):
+            return (c3**2 / (cos_alpha**2 * (c3**2 - 1) + 1)) ** 2
+
+        assert abs(D3((k * N_Z) @ H) - D3(N_Z @ H)) > 1e-3 * D3(N_Z @ H)
+    numbers = ERRATA["blinn-nonnormalized-vectors"]().numbers
+    assert numbers["long"] == pytest.approx(4 * numbers["unit"], rel=1e-12)
+    assert numbers["long_NH"] == pytest.approx(2 * numbers["cos_alpha"], rel=1e-12)
+
+
+def test_errata_lecture_beckmann_4m2_puts_cook_torrances_factor_4_in_D():
+    """The factor-4 row: C&T's R_s = (F/pi) D G / ((N.L)(N.V)) with the lecture's D (4 m^2 below
+    the bar) equals the article's D F G / (4 (V.N)(N.L)) with its normalised Beckmann D (1/(pi m^2
+    cos^4)), each written out here, for any angles and m; with C&T's own D it is 4 times that."""
+    rng = np.random.default_rng(11)
+    for _ in range(20):
+        m, a = rng.uniform(0.1, 0.6), rng.uniform(0.0, 1.2)
+        NL, NV, F, G = rng.uniform(0.1, 1.0), rng.uniform(0.1, 1.0), rng.uniform(0, 1), rng.uniform(0, 1)
+        e = np.exp(-(np.tan(a) / m) ** 2)
+        lecture_D, ct_D, article_D = (e / (4 * m * m * np.cos(a) ** 4), e / (m * m * np.cos(a) ** 4),
+                                      e / (np.pi * m * m * np.cos(a) ** 4))
+        article = article_D * F * G / (4 * NV * NL)
+        assert F / np.pi * lecture_D * G / (NL * NV) == pytest.approx(article, rel=1e-12)
+        assert F / np.pi * ct_D * G / (NL * NV) == pytest.approx(4 * article, rel=1e-12)
+
+
 # --- the lecture ------------------------------------------------------------------------------------
 
 def test_errata_lecture_gaussian_puts_m_in_the_numerator():

@@ -155,6 +155,27 @@ def blinn_projection_of_B(**_):
                    HE_p=HE_p, error=error, G_b=G_b, simulated=simulated)
 
 
+@_erratum("blinn-nonnormalized-vectors")
+def blinn_nonnormalized_vectors(**_):
+    """Blinn: the Torrance-Sparrow function 'in terms of the vectors N, L, H and E, all of which
+    are assumed to be nonnormalized'; his derivation reads N.H as cos(alpha) and E.H as c, true of
+    unit vectors only (his introduction normalises them 'to a length of 1'): most likely
+    'normalized'. Computed: G_b = 2(N.H)(N.E)/(E.H) of unit vectors, and of the same directions
+    with N and E twice as long (H = (L + E)/len(L + E) stays unit)."""
+    from reflectance.optics.shadowing import shadowing_VCavity_Blinn1977
+
+    L, E, N = _direction(30.0, 180.0), _direction(75.0, 0.0), np.array([0.0, 0.0, 1.0])
+    H = (L + E) / np.linalg.norm(L + E)
+    unit = 2 * (N @ H) * (N @ E) / (E @ H)  # Blinn's G_b (case b: the eye grazing)
+    long_N, long_E = 2 * N, 2 * E
+    long = 2 * (long_N @ H) * (long_N @ long_E) / (long_E @ H)
+    G = shadowing_VCavity_Blinn1977(N @ L, N @ E, N @ H, E @ H)
+    return _result(f"light 30 deg, eye 75 deg from N: with unit vectors G_b = {unit:.4f} (G = "
+                   f"{G:.4f}); with N and E of length 2, 'N.H' = {long_N @ H:.4f} is not cos(alpha) "
+                   f"= {N @ H:.4f} and G_b = {long:.4f}, 4 times as large", long / unit,
+                   unit=unit, long=long, G=G, cos_alpha=N @ H, long_NH=long_N @ H)
+
+
 @_erratum("blinn-division-free-grouping")
 def blinn_division_free_grouping(**_):
     """Blinn's last branch G := 2(N.H)(N.L)/(E.H)(N.E) read left to right (as transcribed; most
