@@ -96,10 +96,12 @@ with script_log(snakemake) as log:
         log.info("%s sketch: case %s, G traced %.6f (%s %.6f), closed %.6f", name, row["case"],
                  row["G_simulated"], name.lower(), lost, row["G_closed"])
     handles = [fig.axes[0].plot([], [], color=COLOURS[key], lw=w)[0] for key, w in
-               (("light", 1), ("eye", 1), ("masked", 1), ("shadowed", 4), ("masked", 4))]
+               (("light", 1), ("eye", 1), ("masked", 1), ("other", 1), ("shadowed", 4),
+                ("masked", 4))]
     fig.legend(handles, ["incident ray", "reflected ray, seen", "reflected ray, masked",
-                         "facet part shadowed", "facet part masked"],
-               loc="upper left", bbox_to_anchor=(0.03, 0.585), ncol=3, frameon=False,
+                         "ray landing on the other facet", "facet part shadowed",
+                         "facet part masked"],
+               loc="upper left", bbox_to_anchor=(0.03, 0.59), ncol=2, frameon=False,
                fontsize=TEXT_SIZE["annotation"], handlelength=1.6, columnspacing=1.0)
     ax = fig.add_subplot(grid[0, 2])
     step = max(1, int(round(vg["step_deg"] / cfg["angle_step_deg"])))
@@ -155,7 +157,8 @@ with script_log(snakemake) as log:
            xlabel="x (samples)", ylabel="height")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.22), ncol=3, frameon=False,
               fontsize=TEXT_SIZE["annotation"])
-    ax.set_title(f"(d) a random surface (Gaussian heights, seed {cfg['seed']}): light from the left "
+    ax.set_title(f"(d) a random surface (Gaussian heights, seed {cfg['seed']}, rms slope "
+                 f"{sigma:.3g}, correlation length {cfg['correlation_length']:g}): light from the left "
                  f"at \u03b8i = {cfg['incidence_deg']:g}\u00b0 (solid),\nviewer on the right at "
                  f"\u03b8o = {cfg['view_deg']:g}\u00b0 (dashed); x: the facet that blocks a shadowed "
                  "(dotted) or a masked (red dashed) point", fontsize=TEXT_SIZE["annotation"],
