@@ -210,6 +210,18 @@ def test_fig5_6_numbers(tmp, fig):
         assert "arrow" in values_rst["chosen_peak_mark"]
     if fig == "fig6":
         assert 1 < beyond < 10  # "not in quite the same direction"
+    # the caption's argument against Blinn's "typically 50 or 60": c3 of the same beta as
+    # cos^c1 (root-found here), then both figures' curves by hand at that c3
+    c1 = CONFIG["fig5_6"]["typical_c1"]
+    c3 = float(values_rst["typical_c3"])
+    assert beta_and_c1_by_hand(c3)[1] == pytest.approx(c1, rel=5e-3)  # (c3 printed to 3 decimals)
+    typical = {**sets[0], "c3": c3}
+    angles = CONFIG["fig5_6"]["incidence_deg"]
+    _, ph5, ts5 = blinn_curves(angles["fig5"], typical)
+    assert values_rst["typical_difference"] == f"{np.abs(ts5 - ph5).max() / ph5.max():.0%}".replace("%", " %")
+    _, _, ts6 = blinn_curves(angles["fig6"], typical)
+    assert float(values_rst["typical_beyond"]) == pytest.approx(
+        t_default[np.argmax(ts6)] - angles["fig6"], abs=0.1)
     if fig == "fig5":
         mgo = summary[summary.n == 1.8].iloc[0]
         assert abs(mgo.peak_ratio_ts_to_matched - 1) < 0.05

@@ -12,6 +12,7 @@ from matplotlib.ticker import MaxNLocator
 
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
+from reflectance.optics.microfacet import beta_to_c3_Blinn1977
 from reflectance.papers.blinn_comparison import compare_in_plane_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -263,10 +264,24 @@ with script_log(snakemake) as log:
     pd.concat(curves).pipe(write_csv, snakemake.output.csv, float_format="%.6g")
     pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")
 
+    # Blinn's "typically 50 or 60": the chosen set at typical_c1 (c3 of the same beta, Blinn's
+    # equal-beta rule: cos^c1(beta) = 1/2), at Fig. 5's and Fig. 6's incidences
+    beta = np.arccos(0.5 ** (1.0 / cfg["typical_c1"]))
+    typical = {**cfg["chosen"], "c3": float(beta_to_c3_Blinn1977(beta))}
+    at = {k: compare_in_plane_Blinn1977(typical, np.radians(float(a)), theta_r,
+                                         cfg["corner_min_fraction"])[1]
+          for k, a in cfg["incidence_deg"].items()}
+
     # the caption's numbers (workflow/report/blinn77_fig5_6*.rst): the default set, then the
     # variants in config order, from the summary as written
     default, first, second = pd.read_csv(snakemake.output.summary).itertuples()
     write_caption_values(snakemake.output.values, {
+        "typical_beta": f"{np.degrees(beta):.1f}", "typical_c3": f"{typical['c3']:.3f}",
+        "typical_difference": f"{at['fig5']['max_difference_ts_matched']:.0%}".replace("%", " %"),
+        "typical_beyond": f"{at['fig6']['torrance_sparrow_max_deg'] - at['fig6']['theta_i_deg']:.1f}",
+        "typical_at_corner": "at a corner of G" if any(
+            abs(at["fig6"]["torrance_sparrow_max_deg"] - np.degrees(theta_r[i])) < 0.2
+            for i in at["fig6"]["G_corners"]) else "not at a corner of G",
         "chosen_difference": f"{default.max_difference_ts_matched:.0%}".replace("%", " %"),
         "chosen_bump_matched": f"{default.bump_to_hemisphere_matched:.2f}",
         "chosen_bump_ts": f"{default.bump_to_hemisphere_ts:.2f}",

@@ -24,8 +24,8 @@ DEFINITIONS = {figure.RULE: figure for figure in (
     # the default figure draws the chosen set; {fig}_fig7_materials, Fig. 7's measured sets
     # (fig carries both angles: Figs. 5 and 6 share one radial scale)
     Figure("blinn77_fig5_6", _OUT, {"fig": _keys("fig5_6", "n_directions", "corner_min_fraction",
-                                                 "zoom_half_width_deg", "incidence_deg", "chosen",
-                                                 "parameter_sets"),
+                                                 "zoom_half_width_deg", "typical_c1", "incidence_deg",
+                                                 "chosen", "parameter_sets"),
                                     "incidence_deg": f"{_B77}.fig5_6.incidence_deg"},
            {"png": "{fig}.png", "pdf": "{fig}.pdf", "variant_png": "{fig}_fig7_materials.png",
             "variant_pdf": "{fig}_fig7_materials.pdf", "csv": "{fig}.csv",
