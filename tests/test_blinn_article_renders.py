@@ -713,6 +713,15 @@ def test_article_spheres_gold_highlight_has_a_gradient_and_gold_hue(spheres):
     XYZ = colour.sRGB_to_XYZ(image[bright].mean(0) / 255)
     hue = [colour.Lab_to_LCHab(colour.XYZ_to_Lab(v, d65))[2] for v in (XYZ, gold)]
     assert abs((hue[0] - hue[1] + 180) % 360 - 180) < 10.0, hue
+    # the caption's F0 colour (L*, C*, hue), against colour-science's integration of F0 under D65
+    shape = colour.SpectralShape(360, 830, 5)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
+    F0 = colour.SpectralDistribution(dict(zip(nm, ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))))
+    with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
+        LCh = colour.Lab_to_LCHab(colour.XYZ_to_Lab(colour.sd_to_XYZ(
+            F0, cmfs, colour.SDS_ILLUMINANTS["D65"], shape=shape) / 100, d65))
+    values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", Path(out["values"]).read_text()))
+    assert [float(values[f"gold_F0_{q}"]) for q in ("L", "C", "hue")] == pytest.approx(LCh, abs=1.0)
 
 
 def test_article_spheres_sky_cropped(spheres):

@@ -12,10 +12,11 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from reflectance.colour.colorimetry import tristimulus_weights
+from reflectance.colour.colorimetry import XYZ_to_Lab, XYZ_to_xy, tristimulus_weights, white_XYZ
 from reflectance.colour.display import display_tag
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import PRINT_WIDTH_IN, STYLE, new_figure, savefig
+from reflectance.render.composite import appearance
 from reflectance.render.pipeline import render_to_files
 from reflectance.render.scene import scene_from_dict
 from reflectance.papers.figures import article_spheres as definition
@@ -87,6 +88,12 @@ def run(snakemake: Any, log: logging.Logger) -> None:
     bright = sphere & (Yg > 0.5 * Yg[sphere].max())
     body = np.percentile(Yg[sphere & ~bright], [10, 50])
     clipped = float(np.mean(np.round(255 * gold_image[sphere]).max(-1) >= 255))
+    # how gold reads: its F0 in CIELAB under the light (L* of the F0 luminance, a white of Y = 1),
+    # against the gold sphere as the PNG shows it (its pixels alone: the floor's XYZ set to 0)
+    white = XYZ_to_xy(white_XYZ(cfg["light"]["spectrum"], colour["observer"]))
+    F0_Lab = XYZ_to_Lab(F0 @ W / W[:, 1].sum(), white)
+    shown = appearance(gold_image, np.where(sphere[..., None], results["metal"].XYZ, 0.0),
+                       colour["space"])
     # the floor the gold sphere mirrors (reflectance.papers.scenes.ground_lights): the radiance
     # of its ground lights, the one nearest the horizon and the one nearest straight below
     ground = sorted((light["direction"][2], light["intensity"])
@@ -129,6 +136,11 @@ def run(snakemake: Any, log: logging.Logger) -> None:
         "pair_scale": f"{scale:.3g}", "gold_scale": f"{gold_scale:.3g}",
         "gold_clipped": f"{100 * clipped:.1f}", "gold_body_spread": f"{body[1] / body[0]:.1f}",
         "cropped_rows": f"{top}",
+        "gold_F0_L": f"{F0_Lab[0]:.0f}", "gold_F0_C": f"{np.hypot(*F0_Lab[1:]):.0f}",
+        "gold_F0_hue": f"{np.degrees(np.arctan2(F0_Lab[2], F0_Lab[1])) % 360:.0f}",
+        "gold_body_L": f"{shown['L50']:.0f}", "gold_body_C": f"{shown['body_chroma']:.0f}",
+        "gold_body_hue": f"{shown['body_hue_deg']:.0f}",
+        "gold_highlight_C": f"{shown['body_chroma'] * shown['highlight_chroma_ratio']:.0f}",
         "ground_radiance": f"{ground[-1][1]:.2g}" if ground else "none",
         "ground_contact": f"{ground[0][1]:.2g}" if ground else "none",
         "pair_peaks": "; ".join("({}, {}, {}) ".format(*rgb) + f"({name})"
