@@ -113,6 +113,12 @@ rule ct82_fig5bc:
             subcategory="Fig. 5",
         ),
         pdf=CT82_FIG5BC.outputs["pdf"],
+        why_png=report(
+            CT82_FIG5BC.outputs["why_png"],
+            caption="../report/ct82_fig5bc_why.rst",
+            category="Cook & Torrance 1982",
+            subcategory="Fig. 5",
+        ),
         variants_png=report(
             CT82_FIG5BC.outputs["variants_png"],
             caption="../report/ct82_fig5bc_variants.rst",

@@ -114,48 +114,63 @@ with script_log(snakemake) as log:
     name, tag = paper_name(material.name), display_tag(colour_cfg["space"])
     fine_from, fine_step = st["fine_from_deg"], st["fine_step_deg"]
     ratios = [len(angles) * 0.5, 2.2, 2.2]
-    # --- the default figure: the paper's rows, and why (c) stays copper ---
-    fig = new_figure(PRINT_WIDTH_IN, 1.5 + 0.42 * len(rows) + 1.9)
-    cells = fig.add_gridspec(2, 3, width_ratios=ratios, height_ratios=[0.42 * len(rows), 1.9],
-                             wspace=0.14, hspace=0.42, left=0.14, right=0.995, top=0.83, bottom=0.1)
-    strips = draw_rows(fig, [cells[0, k] for k in range(3)], table, strip, rows, angles,
-                       fine_from, fine_step)
+    # --- the default figure: the paper's two rows, (b) and (c), and in the title what they show ---
+    title = (f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {name} against the incidence "
+             f"angle ({colour_cfg['illuminant']}, {colour_cfg['space']})\n(c) is within \u0394E$_{{00}}$ "
+             f"{written.agreement_dE00:g} of (b) up to {written.agree_deg:g}\u00b0; above, (c) keeps its "
+             f"0\u00b0 colour while (b) whitens (\u0394E$_{{00}}$ up to {written.worst_dE00:.1f}, "
+             f"at {written.worst_deg:.1f}\u00b0),\nbecause F of the k = 0 index fitted to F$_0$ stays "
+             f"below F$_0$ until {written.onset_deg:.2f}\u00b0 (why: "
+             f"{Path(snakemake.output.why_png).name})")
+    fig = new_figure(PRINT_WIDTH_IN, 1.35 + 0.42 * len(rows))
+    cells = fig.add_gridspec(1, 3, width_ratios=ratios, wspace=0.14, left=0.14, right=0.995,
+                             top=1 - 0.82 / fig.get_figheight(), bottom=0.45 / fig.get_figheight())
+    strips = draw_rows(fig, list(cells), table, strip, rows, angles, fine_from, fine_step)
+    for sax in strips:
+        sax.set_xlabel("\u03b8 (\u00b0)")
+    fig.suptitle(title, y=0.995, va="top", fontsize=TEXT_SIZE["annotation"] + 1)
+    savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=tag)
+
+    # --- why (c) stays copper: F of the k = 0 fit against F0, on the strips' two angle axes ---
     n, F0 = written.n_average, written.F0_average
     lo, hi = fig_cfg["average_F0_range_nm"]
     exact, ax = strip[strip.method == "exact"], None
-    for k, sax in enumerate(strips):
-        ax = fig.add_subplot(cells[1, k + 1], sharex=sax, sharey=ax if k else None)
-        theta = np.linspace(sax.get_xlim()[0], 90.0, 4001)
+    fig = new_figure(PRINT_WIDTH_IN, 2.9)  # the legend in a narrower first column
+    cells = fig.add_gridspec(1, 3, width_ratios=[3.6, 2.2, 2.2], wspace=0.22, left=0.02, right=0.995,
+                             top=1 - 0.62 / fig.get_figheight(), bottom=0.5 / fig.get_figheight())
+    for k, (left, ticks) in enumerate(((0.0, 30), (fine_from, 5))):
+        ax = fig.add_subplot(cells[k + 1], sharey=ax)
+        theta = np.linspace(left, 90.0, 4001)
         F = fresnel_dielectric_CookTorrance1982(np.cos(np.radians(theta)), n)  # C&T 1982 eq. (Fresnel), k = 0
-        ax.axvspan(sax.get_xlim()[0], written.onset_deg, color="0.92", lw=0,
+        ax.axvspan(left, written.onset_deg, color="0.92", lw=0,
                    label=f"max(0, F \u2212 F$_0$) = 0: (c) keeps the 0\u00b0 colour")
         ax.fill_between(theta, F, F0, where=F < F0, color=OKABE_ITO[5], alpha=0.35, lw=0,
                         label="F below F$_0$ (the dip towards Brewster's angle)")
         ax.axhline(F0, color="0.3", lw=0.8, ls=(0, (4, 2)),
                    label=f"F$_0$ = {F0:.2f}, {name}'s mean over {lo:g}\u2013{hi:g} nm")
         ax.plot(theta, F, color=OKABE_ITO[0], lw=1.2, label=f"F, k = 0 and n = {n:.1f} (C&T's fit to F$_0$)")
-        ax.plot(exact.angle_deg, exact.Y, color=OKABE_ITO[1], lw=1.2,
+        part = exact[exact.angle_deg >= left]
+        ax.plot(part.angle_deg, part.Y, color=OKABE_ITO[1], lw=1.2,
                 label=f"{name}, exact n, k: F weighted by luminance (Y)")
-        ax.set(ylim=(0.4, 1.02), xlabel="\u03b8 (\u00b0)")
+        ax.set(xlim=(left, 90), ylim=(0.4, 1.02), xlabel="\u03b8 (\u00b0)",
+               xticks=np.arange(left, 90.1, ticks))
         ax.set_ylabel("F" if k == 0 else None)
         ax.tick_params(axis="y", labelleft=k == 0)
+        ax.set_title(f"{left:g}\u201390\u00b0", fontsize=TEXT_SIZE["annotation"], pad=3)
         if k == 1:
             ax.axvline(written.onset_deg, color="0.3", lw=0.6)
             ax.annotate(f"F = F$_0$ at {written.onset_deg:.2f}\u00b0", (written.onset_deg, F0),
                         xytext=(-6, 18), textcoords="offset points", ha="right",
                         fontsize=TEXT_SIZE["annotation"], arrowprops=dict(arrowstyle="-", lw=0.5))
     handles, labels = ax.get_legend_handles_labels()
-    key = fig.add_subplot(cells[1, 0])
+    key = fig.add_subplot(cells[0])
     key.axis("off")
     key.legend(handles, labels, loc="center left", frameon=False, fontsize=TEXT_SIZE["table"],
                borderaxespad=0, handlelength=1.6)
-    fig.suptitle(f"Cook & Torrance 1982, Fig. 5b/5c \u2014 the colour of {name} against the incidence "
-                 f"angle ({colour_cfg['illuminant']}, {colour_cfg['space']})\n(c) is within \u0394E$_{{00}}$ "
-                 f"{written.agreement_dE00:g} of (b) up to {written.agree_deg:g}\u00b0; above, (c) keeps its "
-                 f"0\u00b0 colour while (b) whitens (\u0394E$_{{00}}$ up to {written.worst_dE00:.1f}, "
-                 f"at {written.worst_deg:.1f}\u00b0),\nbecause F of the k = 0 index fitted to F$_0$ stays below F$_0$ until "
-                 f"{written.onset_deg:.2f}\u00b0", y=0.995, va="top", fontsize=TEXT_SIZE["annotation"] + 1)
-    savefig(fig, snakemake.output.png, snakemake.output.pdf, tag=tag)
+    fig.suptitle(f"Cook & Torrance 1982, Fig. 5c: why the approximation keeps {name}'s 0\u00b0 colour "
+                 f"up to {written.onset_deg:.2f}\u00b0", y=0.995, va="top",
+                 fontsize=TEXT_SIZE["annotation"] + 1)
+    savefig(fig, snakemake.output.why_png, tag=tag)
 
     # --- the variant figure: every row, the paper's and the later shortcuts ---
     fig = new_figure(PRINT_WIDTH_IN, 0.9 + 0.42 * len(every))

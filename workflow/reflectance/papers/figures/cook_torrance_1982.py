@@ -41,7 +41,8 @@ DEFINITIONS = {figure.RULE: figure for figure in (
     Figure("ct82_fig5bc", _OUT, {"fig": tuple(f"{_CT}.fig5.{key}" for key in (
         "material", "angles_deg", "average_F0_range_nm", "rows", "variant_rows", "agreement_dE00",
         "strip")), **_SPECTRAL},
-           {"png": "fig5bc.png", "pdf": "fig5bc.pdf", "variants_png": "fig5bc_variants.png", "csv": "fig5bc.csv", "exr": "fig5bc.exr",
+           {"png": "fig5bc.png", "pdf": "fig5bc.pdf", "why_png": "fig5bc_why.png",
+            "variants_png": "fig5bc_variants.png", "csv": "fig5bc.csv", "exr": "fig5bc.exr",
             "strip": "fig5bc_strip.csv", "approximation": "fig5bc_approximation.csv",
             "values": "fig5bc.values.rst"}, lambda params: [params["fig"]["material"]]),
     Figure("ct82_table1", _OUT, {"fig": f"{_CT}.table1", "spectra": f"{_CT}.fig7.table1_spectra",
