@@ -88,7 +88,7 @@ def draw_zoom(cart, values, row, tr_deg, window):
         line.set_visible(i == 0)
 
 
-def draw(sets, results, theta_i, theta_r, title, scales, number, half_width):
+def draw(sets, results, theta_i, theta_r, title, scales, number, half_width, every=None):
     """One row per parameter set: the two polar plots on one scale (``scales``, rings by label: the
     same for Figs. 5 and 6), cropped above the highest curve or arrow, and i(theta) with an inset at
     the peaks. Returns the figure, per row whether Phong as printed lies under the matched curve
@@ -172,14 +172,19 @@ def draw(sets, results, theta_i, theta_r, title, scales, number, half_width):
                    f"Here: bumps' ratio {row['bump_ratio_ts_to_matched']:.2f} (peaks' "
                    f"{row['peak_ratio_ts_to_matched']:.2f}); Torrance-Sparrow peak "
                    f"{beyond:.1f}\u00b0 beyond the mirror")
+        base = [v for v in snakemake.params.fig["parameter_sets"]
+                if all(v[k] == s[k] for k in ("p_s", "p_d", "n")) and v["c3"] != s["c3"]]
+        name = (f"{base[0]['label']}, c\u2083 narrower; Blinn prints none for Figs. 5, 6:" if base
+                else f"{s['label']}:")
+        if base and every:  # why narrower: the printed c3's Torrance-Sparrow peak, from its results
+            printed = every[base[0]["label"]][1]
+            numbers += (f";\nprinted c\u2083 = {base[0]['c3']:g}: Torrance-Sparrow peak "
+                        f"{printed['torrance_sparrow_max']:.2f} at \u03b8 = "
+                        f"{printed['torrance_sparrow_max_deg']:.0f}\u00b0, no bump at the mirror")
         row_axes[0].annotate(f"{BLINN_SAYS[number]}\n{numbers}.".replace("%", " %"),
                              xy=(1.08, 0), xycoords="axes fraction", xytext=(0, -16),
                              textcoords="offset points", ha="center", va="top", linespacing=1.3,
                              fontsize=TEXT_SIZE["annotation"], color="0.2")
-        base = [v["label"] for v in snakemake.params.fig["parameter_sets"]
-                if all(v[k] == s[k] for k in ("p_s", "p_d", "n")) and v["c3"] != s["c3"]]
-        name = (f"{base[0]}, c\u2083 narrower; Blinn prints none for Figs. 5, 6:" if base
-                else f"{s['label']}:")
         row_axes[0].annotate(f"{name}\np_s = {s['p_s']:g}, p_d = {s['p_d']:g}, n = {s['n']:g}, "
                              f"F(0) = {F0:.3g}, c\u2083 = {s['c3']:g}, \u03b2 = {row['beta_deg']:.1f}"
                              f"\u00b0, c\u2081 = {row['c1']:.3g}",
@@ -241,7 +246,7 @@ with script_log(snakemake) as log:
             (variants, f"Blinn 1977, Fig. {number}, variant: Fig. 7's measured materials,\n{incidence}",
              snakemake.output.variant_png, snakemake.output.variant_pdf)):
         fig, flags, zooms = draw(sets, [results[s["label"]] for s in sets], theta_i, theta_r, title,
-                                 scales, str(number), cfg["zoom_half_width_deg"])
+                                 scales, str(number), cfg["zoom_half_width_deg"], results)
         coincide.update({s["label"]: c for s, c in zip(sets, flags)})
         windows.update({s["label"]: w or (np.nan, np.nan) for s, w in zip(sets, zooms)})
         savefig(fig, png, pdf)
