@@ -391,7 +391,7 @@ def test_sweep_rim_closeup_holds_each_materials_brightest_pixel(tmp_path):
     image."""
     sweep, out = _run_sweep(tmp_path, n_frames=4, view="fig7", angles_deg=[5, 170])
     assert sweep["angles_deg"][1] > highlight_crossover(B77)  # the default draws the close-up
-    values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", out["values"].read_text()))
+    values = _caption_values(out["values"])
     r0, r1, c0, c1 = (int(v) for v in re.search(r"rows (\d+) to (\d+), columns (\d+) to (\d+)",
                                                  values["closeup"]).groups())
     cell = _gif_cells(_gif_frames(out["gif"])[-1], sweep["panels"])
@@ -547,19 +547,36 @@ def spheres(tmp_path_factory):
     return fig, out, read_exr(out["exr"])[0], read_exr(out["gold_exr"])[0]
 
 
-def _xy_tools():
+def _XYZ_of(values):
+    """XYZ (Y = 1 for a white of reflectance 1) of a reflectance on 360-830 nm by 5 nm under D65,
+    CIE 15:2004 tristimulus integration by colour-science."""
     import colour
 
     shape = colour.SpectralShape(360, 830, 5)
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
     d65 = colour.SDS_ILLUMINANTS["D65"].copy().align(shape)
+    sd = colour.SpectralDistribution(dict(zip(range(360, 835, 5), values)))
+    with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
+        return colour.sd_to_XYZ(sd, cmfs, d65, shape=shape) / 100
 
-    def xy_of(values):  # CIE 15:2004 tristimulus integration, by colour-science
-        sd = colour.SpectralDistribution(dict(zip(range(360, 835, 5), values)))
-        with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
-            return colour.XYZ_to_xy(colour.sd_to_XYZ(sd, cmfs, d65, shape=shape))
 
-    return xy_of
+def _xy_tools():
+    import colour
+
+    return lambda values: colour.XYZ_to_xy(_XYZ_of(values))
+
+
+def _gold_F0(fig):
+    """The metal sphere's F0 on 360-830 nm by 5 nm from its measured n, k (spectra/), by hand."""
+    au = pd.read_csv(ROOT / "spectra" / f"{fig['metal_sphere']['material']}.csv")
+    nm = np.arange(360, 835, 5)
+    n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
+    return ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2)
+
+
+def _caption_values(path):
+    """The |name| replace:: value pairs of a figure's values file."""
+    return dict(re.findall(r"\|(\w+)\| replace:: (.*)", Path(path).read_text()))
 
 
 def _xy(XYZ):
@@ -631,10 +648,7 @@ def test_article_spheres_gold_in_its_own_panel(spheres):
     fig, out, pair, XYZ = spheres
     xy_of, xy = _xy_tools(), _xy(XYZ)
     white = xy_of(np.ones(95))
-    au = pd.read_csv(ROOT / "spectra" / f"{fig['metal_sphere']['material']}.csv")
-    nm = np.arange(360, 835, 5)
-    n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
-    gold = xy_of(((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))
+    gold = xy_of(_gold_F0(fig))
     peak = np.unravel_index(np.argmax(XYZ[..., 1]), XYZ.shape[:2])
     assert np.linalg.norm(xy[peak] - gold) < 0.35 * np.linalg.norm(gold - white)
     assert np.linalg.norm(xy[peak] - white) > 0.6 * np.linalg.norm(gold - white)
@@ -703,24 +717,16 @@ def test_article_spheres_gold_highlight_has_a_gradient_and_gold_hue(spheres):
     image, sphere, Y = _gold_sphere(out)
     clipped = (image[sphere].max(-1) >= 255).mean()
     assert clipped < 0.02, clipped
-    xy_of = _xy_tools()
-    au = pd.read_csv(ROOT / "spectra" / f"{fig['metal_sphere']['material']}.csv")
-    nm = np.arange(360, 835, 5)
-    n, k = (np.interp(nm, au.wavelength_nm, au[q]) for q in ("n", "k"))
     d65 = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]["D65"]
-    gold = colour.xyY_to_XYZ([*xy_of(((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2)), 0.5])
+    F0 = _XYZ_of(_gold_F0(fig))
+    gold = colour.xyY_to_XYZ([*colour.XYZ_to_xy(F0), 0.5])
     bright = sphere & (Y > 0.5 * Y[sphere].max())
     XYZ = colour.sRGB_to_XYZ(image[bright].mean(0) / 255)
     hue = [colour.Lab_to_LCHab(colour.XYZ_to_Lab(v, d65))[2] for v in (XYZ, gold)]
     assert abs((hue[0] - hue[1] + 180) % 360 - 180) < 10.0, hue
     # the caption's F0 colour (L*, C*, hue), against colour-science's integration of F0 under D65
-    shape = colour.SpectralShape(360, 830, 5)
-    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy().align(shape)
-    F0 = colour.SpectralDistribution(dict(zip(nm, ((n - 1) ** 2 + k**2) / ((n + 1) ** 2 + k**2))))
-    with colour.utilities.suppress_warnings(colour_runtime_warnings=True):
-        LCh = colour.Lab_to_LCHab(colour.XYZ_to_Lab(colour.sd_to_XYZ(
-            F0, cmfs, colour.SDS_ILLUMINANTS["D65"], shape=shape) / 100, d65))
-    values = dict(re.findall(r"\|(\w+)\| replace:: (.*)", Path(out["values"]).read_text()))
+    LCh = colour.Lab_to_LCHab(colour.XYZ_to_Lab(F0, d65))
+    values = _caption_values(out["values"])
     assert [float(values[f"gold_F0_{q}"]) for q in ("L", "C", "hue")] == pytest.approx(LCh, abs=1.0)
 
 

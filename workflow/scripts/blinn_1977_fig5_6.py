@@ -12,7 +12,7 @@ from matplotlib.ticker import MaxNLocator
 
 from reflectance.io.captions import write_caption_values
 from reflectance.io.figures import OKABE_ITO, PRINT_WIDTH_IN, TEXT_SIZE, new_figure, savefig
-from reflectance.optics.microfacet import beta_to_c3_Blinn1977
+from reflectance.optics.microfacet import beta_to_c3_Blinn1977, c1_to_beta_Blinn1977
 from reflectance.papers.blinn_comparison import compare_in_plane_Blinn1977
 from reflectance.scripting import script_log
 from reflectance.io.tables import write_csv
@@ -270,8 +270,8 @@ with script_log(snakemake) as log:
     pd.DataFrame(summary).pipe(write_csv, snakemake.output.summary, float_format="%.6g")
 
     # Blinn's "typically 50 or 60": the chosen set at typical_c1 (c3 of the same beta, Blinn's
-    # equal-beta rule: cos^c1(beta) = 1/2), at Fig. 5's and Fig. 6's incidences
-    beta = np.arccos(0.5 ** (1.0 / cfg["typical_c1"]))
+    # equal-beta rule), at Fig. 5's and Fig. 6's incidences
+    beta = c1_to_beta_Blinn1977(cfg["typical_c1"])
     typical = {**cfg["chosen"], "c3": float(beta_to_c3_Blinn1977(beta))}
     at = {k: compare_in_plane_Blinn1977(typical, np.radians(float(a)), theta_r,
                                          cfg["corner_min_fraction"])[1]

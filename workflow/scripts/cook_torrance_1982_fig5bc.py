@@ -34,6 +34,12 @@ def _bare(ax, keep=("bottom",)):
     ax.tick_params(axis="y", length=0)
 
 
+def angle_ticks(lo):
+    """Ticks of an angle axis from ``lo`` to 90 degrees: every 30 from 0, else every 5 (the fine
+    strip's and its F panel's)."""
+    return np.arange(lo, 90.1, 30 if lo == 0 else 5)
+
+
 def draw_rows(fig, cells, table, strip, rows, angles, fine_from, fine_step):
     """Swatches at ``angles`` and two strips, one line per row; under every row but (b), its
     CIEDE2000 from (b). Returns the two strip axes."""
@@ -64,7 +70,7 @@ def draw_rows(fig, cells, table, strip, rows, angles, fine_from, fine_step):
                            shading="flat", rasterized=True)
             sax.add_patch(Rectangle((lo, y + 0.3), 90 - lo, 0.65, fill=False, **EDGE))
         sax.set(xlim=(lo, 90), ylim=(0, len(rows)), yticks=[])
-        sax.set_xticks(np.arange(lo, 90.1, 30 if lo == 0 else 5))
+        sax.set_xticks(angle_ticks(lo))
         _bare(sax)
         sax.set_title(f"{lo:g}\u201390\u00b0" + (f", step {fine_step:g}\u00b0" if lo > 0 else ""),
                       fontsize=TEXT_SIZE["annotation"], pad=3)
@@ -138,7 +144,7 @@ with script_log(snakemake) as log:
     fig = new_figure(PRINT_WIDTH_IN, 2.9)  # the legend in a narrower first column
     cells = fig.add_gridspec(1, 3, width_ratios=[3.6, 2.2, 2.2], wspace=0.22, left=0.02, right=0.995,
                              top=1 - 0.62 / fig.get_figheight(), bottom=0.5 / fig.get_figheight())
-    for k, (left, ticks) in enumerate(((0.0, 30), (fine_from, 5))):
+    for k, left in enumerate((0.0, fine_from)):  # the strips' two angle axes
         ax = fig.add_subplot(cells[k + 1], sharey=ax)
         theta = np.linspace(left, 90.0, 4001)
         F = fresnel_dielectric_CookTorrance1982(np.cos(np.radians(theta)), n)  # C&T 1982 eq. (Fresnel), k = 0
@@ -152,8 +158,7 @@ with script_log(snakemake) as log:
         part = exact[exact.angle_deg >= left]
         ax.plot(part.angle_deg, part.Y, color=OKABE_ITO[1], lw=1.2,
                 label=f"{name}, exact n, k: F weighted by luminance (Y)")
-        ax.set(xlim=(left, 90), ylim=(0.4, 1.02), xlabel="\u03b8 (\u00b0)",
-               xticks=np.arange(left, 90.1, ticks))
+        ax.set(xlim=(left, 90), ylim=(0.4, 1.02), xlabel="\u03b8 (\u00b0)", xticks=angle_ticks(left))
         ax.set_ylabel("F" if k == 0 else None)
         ax.tick_params(axis="y", labelleft=k == 0)
         ax.set_title(f"{left:g}\u201390\u00b0", fontsize=TEXT_SIZE["annotation"], pad=3)

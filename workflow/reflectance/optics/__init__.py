@@ -51,6 +51,7 @@ _EXPORTS = {
     "distribution_Gaussian_CookTorrance1982": "microfacet",
     "distribution_mixture": "microfacet",
     "beta_to_c1_Blinn1977": "microfacet",
+    "c1_to_beta_Blinn1977": "microfacet",
     "beta_to_c2_Blinn1977": "microfacet",
     "beta_to_c3_Blinn1977": "microfacet",
     "C3_MAX_FOR_BETA": "microfacet",

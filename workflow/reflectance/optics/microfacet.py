@@ -68,6 +68,7 @@ __all__ = [
     "distribution_Gaussian_CookTorrance1982",
     "distribution_mixture",
     "beta_to_c1_Blinn1977",
+    "c1_to_beta_Blinn1977",
     "beta_to_c2_Blinn1977",
     "beta_to_c3_Blinn1977",
     "C3_MAX_FOR_BETA",
@@ -428,6 +429,28 @@ def beta_to_c1_Blinn1977(beta: npt.ArrayLike) -> npt.NDArray[np.float64] | np.fl
     """
     beta = _check_beta(beta)
     return _out(-np.log(2.0) / np.log(np.cos(beta)))  # Blinn 1977, c1(beta)
+
+
+def c1_to_beta_Blinn1977(c1: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
+    """Half-value angle beta of D1 = cos^c1(alpha), the inverse of :func:`beta_to_c1_Blinn1977`:
+    ``beta = arccos(2^(-1/c1))``.
+
+    References
+    ----------
+    - Blinn 1977, "Facet distribution functions".
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> print(f"{np.degrees(c1_to_beta_Blinn1977(1.0)):.4f}")  # cos beta = 1/2
+    60.0000
+    >>> print(f"{beta_to_c1_Blinn1977(c1_to_beta_Blinn1977(50.0)):.6f}")
+    50.000000
+    """
+    c1 = np.asarray(c1, dtype=np.float64)
+    if not np.all(np.isfinite(c1) & (c1 > 0)):
+        raise ValueError(f"c1 must be positive and finite, got {c1!r}")
+    return _out(np.arccos(0.5 ** (1.0 / c1)))  # Blinn 1977, D1(beta) = 1/2
 
 
 def beta_to_c2_Blinn1977(beta: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:

@@ -166,9 +166,12 @@ def blinn_nonnormalized_vectors(**_):
 
     L, E, N = _direction(30.0, 180.0), _direction(75.0, 0.0), np.array([0.0, 0.0, 1.0])
     H = (L + E) / np.linalg.norm(L + E)
-    unit = 2 * (N @ H) * (N @ E) / (E @ H)  # Blinn's G_b (case b: the eye grazing)
-    long_N, long_E = 2 * N, 2 * E
-    long = 2 * (long_N @ H) * (long_N @ long_E) / (long_E @ H)
+
+    def G_b(N, E):  # Blinn's masking term 2(N.H)(N.E)/(E.H), read with the vectors as given
+        return 2 * (N @ H) * (N @ E) / (E @ H)
+
+    long_N = 2 * N
+    unit, long = G_b(N, E), G_b(long_N, 2 * E)  # (case b: the eye grazing)
     G = shadowing_VCavity_Blinn1977(N @ L, N @ E, N @ H, E @ H)
     return _result(f"light 30 deg, eye 75 deg from N: with unit vectors G_b = {unit:.4f} (G = "
                    f"{G:.4f}); with N and E of length 2, 'N.H' = {long_N @ H:.4f} is not cos(alpha) "
